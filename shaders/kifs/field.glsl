@@ -1,0 +1,70 @@
+// The KIFS distance field at each teaching stage; mirrors src/scenes/kifs/kifs_math.h.
+#ifndef KIFS_FIELD_GLSL
+#define KIFS_FIELD_GLSL
+
+const vec3 RAYS = vec3(0.5, 0.4, 0.6);
+const vec3 CYLINDERS = vec3(0.11, 0.09, 0.13);  // stages 3-5, world space
+const vec3 FOLD = vec3(1.0, 0.8, 1.2);
+const vec3 PLANE_ROTATIONS = vec3(0.62, 0.38, 0.91);
+const float SCALE_MULT = 1.7;
+const float SCALE_ACCUM = 1.7;
+const float WARP_FREQ = 56.3;
+const float WARP_AMP = 0.29;
+const float CORE_RADIUS = 0.44;
+
+vec2 rotate(vec2 v, float a) {
+  float c = cos(a), s = sin(a);
+  return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
+}
+
+float smin(float a, float b, float k) {
+  float h = clamp(0.5 + 0.5 * (b - a) / k, 0.0, 1.0);
+  return mix(b, a, h) - k * h * (1.0 - h);
+}
+
+float field(vec3 p, int step, vec2 angles, out vec3 trap) {
+  if (step <= 2) {
+    trap = abs(p);
+    return length(p) - 0.5;
+  }
+  p.xz = rotate(p.xz, angles.x);
+  p.xy = rotate(p.xy, angles.y);
+
+  if (step <= 5) {
+    vec3 q = p;
+    if (step == 5) q += sin(q.zxy * WARP_FREQ) * WARP_AMP;
+    float raysX = length(q.yz) - CYLINDERS.x;
+    float raysY = length(q.xz) - CYLINDERS.y;
+    float raysZ = length(q.xy) - CYLINDERS.z;
+    trap = abs(q);
+    return step == 3 ? min(raysX, min(raysY, raysZ)) : smin(smin(raysX, raysY, 0.3), raysZ, 0.3);
+  }
+
+  vec3 q = p + sin(p.zxy * WARP_FREQ) * WARP_AMP;
+  q = abs(q) - FOLD;
+  q.xy = rotate(q.xy, PLANE_ROTATIONS.x);
+  q.xz = rotate(q.xz, PLANE_ROTATIONS.y);
+  q.yz = rotate(q.yz, PLANE_ROTATIONS.z);
+  q *= SCALE_MULT;
+  float scale = 0.26 * SCALE_ACCUM;
+  trap = abs(q);
+
+  float raysX = length(q.yz) - RAYS.x;
+  float raysY = length(q.xz) - RAYS.y;
+  float raysZ = length(q.xy) - RAYS.z;
+  const float k = 0.1;
+  float h1 = clamp(6.7 + 0.1 * (raysX - raysY) / k, 0.1, 0.4);
+  float merged = mix(raysX, raysY, h1) - k * h1 * (1.0 - h1);
+  float h2 = clamp(0.1 + 0.1 * (merged - raysZ) / k, 0.0, 0.8);
+  merged = mix(merged, raysZ, h2) - k * h2 * (-7.3 - h2);
+  merged /= scale;
+
+  float core = length(p) - CORE_RADIUS;
+  float h3 = clamp(0.5 + 0.5 * (core - merged) / 0.3, 0.0, 1.0);
+  return (mix(core, merged, h3) - 0.3 * h3 * (1.0 - h3)) * 0.3;
+}
+
+float marchStep(float d, int step) { return step == 1 ? abs(d) + 0.015 : abs(d) * 0.45 + 0.015; }
+float emission(float d) { return 0.0035 / (abs(d) + 0.005); }
+
+#endif

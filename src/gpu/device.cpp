@@ -1,0 +1,376 @@
+#include "gpu/device.h"
+
+#include "gpu/check.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fmt/format.h>
+
+namespace vitrine::gpu {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kNoDriver =
+    "No Vulkan device found: install a Vulkan driver (on Debian 12: apt-get install mesa-vulkan-drivers "
+    "for the lavapipe CPU renderer, or your GPU vendor's driver) and check with vulkaninfo --summary.";
+
+bool hasExtension(const std::vector<VkExtensionProperties>& list, const char* name) {
+  return std::any_of(list.begin(), list.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+std::vector<VkExtensionProperties> deviceExtensions(VkPhysicalDevice device) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> list(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, list.data());
+  return list;
+}
+
+// The first queue family that does graphics and compute, writes timestamps and (if asked) presents.
+int universalFamily(VkPhysicalDevice device, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i) {
+    const auto flags = families[i].queueFlags;
+    if (!(flags & VK_QUEUE_GRAPHICS_BIT) || !(flags & VK_QUEUE_COMPUTE_BIT)) continue;
+    if (families[i].timestampValidBits == 0) continue;
+    if (surface) {
+      VkBool32 present = VK_FALSE;
+      vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present);
+      if (!present) continue;
+    }
+    return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string whyUnsuitable(VkPhysicalDevice device, const VkPhysicalDeviceProperties& props, VkSurfaceKHR surface) {
+  if (props.apiVersion < VK_API_VERSION_1_3) return "needs Vulkan 1.3";
+  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13};
+  vkGetPhysicalDeviceFeatures2(device, &f2);
+  if (!f13.dynamicRendering || !f13.synchronization2) return "no dynamic rendering or synchronization2";
+  const auto extensions = deviceExtensions(device);
+  if (!hasExtension(extensions, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)) return "no VK_KHR_push_descriptor";
+  if (surface && !hasExtension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
+  if (universalFamily(device, surface) < 0) return "no graphics+compute queue with timestamps";
+  return {};
+}
+
+int typeRank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    default: return 3;
+  }
+}
+
+const char* typeName(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
+  }
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+// Index of the adapter to use: the selector's, else the best suitable one by type.
+size_t choose(const std::vector<Instance::Adapter>& adapters, const std::string& selector) {
+  if (adapters.empty()) throw Error(kNoDriver);
+  if (!selector.empty()) {
+    const bool numeric = std::all_of(selector.begin(), selector.end(), ::isdigit);
+    for (size_t i = 0; i < adapters.size(); ++i) {
+      const bool match = numeric ? std::to_string(i) == selector
+                                 : lower(adapters[i].properties.deviceName).find(lower(selector)) != std::string::npos;
+      if (!match) continue;
+      if (!adapters[i].suitable)
+        throw Error(fmt::format("Device {} ({}) cannot run Vitrine: {}.", i, adapters[i].properties.deviceName,
+                                adapters[i].reason));
+      return i;
+    }
+    throw Error(fmt::format("No Vulkan device matches --device '{}'; vitrine --list-devices shows them.", selector));
+  }
+  size_t best = adapters.size();
+  for (size_t i = 0; i < adapters.size(); ++i) {
+    if (!adapters[i].suitable) continue;
+    if (best == adapters.size() ||
+        typeRank(adapters[i].properties.deviceType) < typeRank(adapters[best].properties.deviceType))
+      best = i;
+  }
+  if (best == adapters.size())
+    throw Error(fmt::format("No Vulkan device can run Vitrine ({}: {}); Vitrine needs Vulkan 1.3 with dynamic "
+                            "rendering — update the driver (Debian 12: apt-get install mesa-vulkan-drivers).",
+                            adapters[0].properties.deviceName, adapters[0].reason));
+  return best;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------- Instance
+
+Instance::Instance(const InstanceOptions& options) {
+  uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> available(count);
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, available.data());
+
+  std::vector<const char*> extensions = options.extensions;
+  debugUtils_ = hasExtension(available, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  std::vector<const char*> layers;
+  validation_ = options.validation;
+  if (validation_) {
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> installed(count);
+    vkEnumerateInstanceLayerProperties(&count, installed.data());
+    const bool found = std::any_of(installed.begin(), installed.end(),
+                                   [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; });
+    if (!found)
+      throw Error("Validation was asked for but VK_LAYER_KHRONOS_validation is not installed: "
+                  "apt-get install vulkan-validationlayers.");
+    layers.push_back(kValidationLayer);
+  }
+
+  const VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO, nullptr, "Vitrine", VK_MAKE_VERSION(0, 1, 0),
+                              "Vitrine", VK_MAKE_VERSION(0, 1, 0), VK_API_VERSION_1_3};
+  // Synchronisation validation catches hazards that leave the picture unchanged (FIELD-NOTES §3).
+  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, nullptr, 1, enables, 0, nullptr};
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.pNext = validation_ ? &features : nullptr;
+  messengerInfo.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = &Instance::onMessage;
+  messengerInfo.pUserData = this;
+
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pNext = debugUtils_ ? &messengerInfo : (validation_ ? static_cast<const void*>(&features) : nullptr);
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER) throw Error(kNoDriver);
+  VK_CHECK(result);
+
+  if (debugUtils_) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    messengerInfo.pNext = nullptr;
+    VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
+  }
+}
+
+Instance::~Instance() {
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(instance_, messenger_, nullptr);
+  }
+  vkDestroyInstance(instance_, nullptr);
+}
+
+VkBool32 VKAPI_CALL Instance::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                        VkDebugUtilsMessageTypeFlagsEXT types,
+                                        const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
+  // Loader chatter (GENERAL) is printed but does not fail a run; validation and performance do.
+  const bool counts = types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT);
+  if (counts) static_cast<Instance*>(self)->messages_.fetch_add(1);
+  std::fprintf(stderr, "[vulkan %s] %s\n",
+               severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning", data->pMessage);
+  return VK_FALSE;
+}
+
+std::vector<Instance::Adapter> Instance::adapters() const {
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+  std::vector<Adapter> result;
+  for (VkPhysicalDevice device : devices) {
+    Adapter adapter{device, {}, false, {}};
+    vkGetPhysicalDeviceProperties(device, &adapter.properties);
+    adapter.reason = whyUnsuitable(device, adapter.properties, VK_NULL_HANDLE);
+    adapter.suitable = adapter.reason.empty();
+    result.push_back(adapter);
+  }
+  return result;
+}
+
+std::string listDevices(const Instance& instance) {
+  const auto adapters = instance.adapters();
+  if (adapters.empty()) throw Error(kNoDriver);
+  size_t chosen = adapters.size();
+  try { chosen = choose(adapters, {}); } catch (const Error&) {}
+  std::string out;
+  for (size_t i = 0; i < adapters.size(); ++i) {
+    const auto& p = adapters[i].properties;
+    out += fmt::format("{} {} [{}] Vulkan {}.{}.{}{}{}\n", i == chosen ? '*' : ' ', i, typeName(p.deviceType),
+                       VK_API_VERSION_MAJOR(p.apiVersion), VK_API_VERSION_MINOR(p.apiVersion),
+                       VK_API_VERSION_PATCH(p.apiVersion), std::string("  ") + p.deviceName,
+                       adapters[i].suitable ? "" : "  (unsuitable: " + adapters[i].reason + ")");
+  }
+  return out;
+}
+
+// ------------------------------------------------------------------------------------------------ Device
+
+Device::Device(const Instance& instance, const DeviceOptions& options) : instance_(instance) {
+  auto adapters = instance.adapters();
+  if (options.surface)  // presenting narrows what is suitable
+    for (auto& a : adapters) {
+      a.reason = whyUnsuitable(a.handle, a.properties, options.surface);
+      a.suitable = a.reason.empty();
+    }
+  const auto& adapter = adapters[choose(adapters, options.selector)];
+  physical_ = adapter.handle;
+  properties_ = adapter.properties;
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  queueFamily_ = static_cast<uint32_t>(universalFamily(physical_, options.surface));
+
+  // Required: dynamic rendering and synchronization2. Everything else is enabled when present.
+  VkPhysicalDeviceVulkan13Features has13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan12Features has12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &has13};
+  VkPhysicalDeviceVulkan11Features has11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &has12};
+  VkPhysicalDeviceFeatures2 has{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &has11};
+  vkGetPhysicalDeviceFeatures2(physical_, &has);
+
+  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  f13.dynamicRendering = VK_TRUE;
+  f13.synchronization2 = VK_TRUE;
+  f13.maintenance4 = has13.maintenance4;
+  VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+  f12.hostQueryReset = has12.hostQueryReset;
+  f12.shaderFloat16 = has12.shaderFloat16;
+  f12.scalarBlockLayout = has12.scalarBlockLayout;
+  f12.storageBuffer8BitAccess = has12.storageBuffer8BitAccess;
+  VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
+  f11.storageBuffer16BitAccess = has11.storageBuffer16BitAccess;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
+  features.features.samplerAnisotropy = has.features.samplerAnisotropy;
+  features.features.shaderInt16 = has.features.shaderInt16;
+  features.features.fillModeNonSolid = has.features.fillModeNonSolid;
+
+  std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+
+  const float priority = 1.0f;
+  const VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, nullptr, 0, queueFamily_, 1,
+                                          &priority};
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+  cmdPushDescriptorSet =
+      reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+  if (instance.debugUtils()) {
+    setName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance.handle(), "vkSetDebugUtilsObjectNameEXT"));
+    beginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance.handle(), "vkCmdBeginDebugUtilsLabelEXT"));
+    endLabel_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance.handle(), "vkCmdEndDebugUtilsLabelEXT"));
+  }
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  poolInfo.queueFamilyIndex = queueFamily_;
+  VkCommandPool pool;
+  VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &pool));
+  oneShotPool_ = Unique<VkCommandPool>(device_, pool);
+  name(VkCommandPool(pool), VK_OBJECT_TYPE_COMMAND_POOL, "one-shot pool");
+}
+
+Device::~Device() {
+  if (device_) vkDeviceWaitIdle(device_);
+  oneShotPool_.reset();
+  vkDestroyDevice(device_, nullptr);
+}
+
+std::string Device::describe() const {
+  const auto& p = properties_;
+  return fmt::format("{} (driver {:#x}, Vulkan {}.{}.{})", p.deviceName, p.driverVersion,
+                     VK_API_VERSION_MAJOR(p.apiVersion), VK_API_VERSION_MINOR(p.apiVersion),
+                     VK_API_VERSION_PATCH(p.apiVersion));
+}
+
+Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
+                                        VkMemoryPropertyFlags fallback) const {
+  for (VkMemoryPropertyFlags flags : {wanted, fallback}) {
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+      if (!(requirements.memoryTypeBits & (1u << i))) continue;
+      if ((memory_.memoryTypes[i].propertyFlags & flags) != flags) continue;
+      VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, nullptr, requirements.size, i};
+      VkDeviceMemory memory;
+      VK_CHECK(vkAllocateMemory(device_, &info, nullptr, &memory));
+      return Unique<VkDeviceMemory>(device_, memory);
+    }
+  }
+  throw Error(fmt::format("No Vulkan memory type fits a {} byte allocation with flags {:#x}", requirements.size,
+                          wanted));
+}
+
+void Device::submitNow(const std::function<void(VkCommandBuffer)>& record) const {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, oneShotPool_,
+                                    VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
+  VkCommandBuffer cmd;
+  VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
+                                       VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence rawFence;
+  VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &rawFence));
+  Unique<VkFence> fence(device_, rawFence);
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd, 0};
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  VK_CHECK(vkQueueSubmit2(queue_, 1, &submit, fence));
+  VK_CHECK(vkWaitForFences(device_, 1, &rawFence, VK_TRUE, UINT64_MAX));
+  vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
+}
+
+void Device::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+void Device::name(VkObjectType type, uint64_t handle, const std::string& label) const {
+  if (!setName_ || !handle) return;
+  const VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT, nullptr, type, handle,
+                                           label.c_str()};
+  setName_(device_, &info);
+}
+
+void Device::beginLabel(VkCommandBuffer cmd, const char* label) const {
+  if (!beginLabel_) return;
+  const VkDebugUtilsLabelEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT, nullptr, label, {0.9f, 0.6f, 0.1f, 1.0f}};
+  beginLabel_(cmd, &info);
+}
+
+void Device::endLabel(VkCommandBuffer cmd) const {
+  if (endLabel_) endLabel_(cmd);
+}
+
+}  // namespace vitrine::gpu

@@ -1,0 +1,107 @@
+#pragma once
+// The Vulkan instance, the chosen physical device, the logical device and its one universal queue.
+// Validation, when on, routes every warning or error through one counter, so a test can fail on it.
+#include "gpu/unique.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace vitrine::gpu {
+
+struct InstanceOptions {
+  bool validation = false;                     // VK_LAYER_KHRONOS_validation + synchronisation checks
+  std::vector<const char*> extensions;         // e.g. what GLFW needs for a surface
+};
+
+class Instance {
+ public:
+  explicit Instance(const InstanceOptions& options);
+  ~Instance();
+  Instance(const Instance&) = delete;
+  Instance& operator=(const Instance&) = delete;
+
+  VkInstance handle() const { return instance_; }
+  bool validation() const { return validation_; }
+  bool debugUtils() const { return debugUtils_; }
+  // Validation warnings and errors seen so far (also printed to stderr as they arrive).
+  int validationMessages() const { return messages_.load(); }
+
+  struct Adapter {
+    VkPhysicalDevice handle;
+    VkPhysicalDeviceProperties properties;
+    bool suitable;       // Vulkan 1.3 with dynamic rendering, synchronization2 and push descriptors
+    std::string reason;  // why not, when it is not
+  };
+  std::vector<Adapter> adapters() const;
+
+ private:
+  static VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                       VkDebugUtilsMessageTypeFlagsEXT types,
+                                       const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  bool validation_ = false;
+  bool debugUtils_ = false;
+  std::atomic<int> messages_{0};
+};
+
+struct DeviceOptions {
+  std::string selector;                  // "--device": an index or a name substring; empty: best
+  VkSurfaceKHR surface = VK_NULL_HANDLE; // when set, the queue must present to it and swapchains load
+};
+
+class Device {
+ public:
+  Device(const Instance& instance, const DeviceOptions& options);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  VkDevice handle() const { return device_; }
+  operator VkDevice() const { return device_; }  // NOLINT
+  VkPhysicalDevice physical() const { return physical_; }
+  VkInstance instance() const { return instance_.handle(); }
+  const Instance& owner() const { return instance_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
+  std::string describe() const;  // "NVIDIA H100 (driver 580.x, Vulkan 1.3.x)"
+
+  Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
+                                  VkMemoryPropertyFlags fallback = 0) const;
+
+  // Records and runs a one-off command buffer, waiting for it: set-up uploads and read-backs only.
+  void submitNow(const std::function<void(VkCommandBuffer)>& record) const;
+  void waitIdle() const;
+
+  // Debug-utils names and labels; no-ops when the extension is missing.
+  void name(VkObjectType type, uint64_t handle, const std::string& name) const;
+  template <typename T> void name(T handle, VkObjectType type, const std::string& label) const {
+    name(type, reinterpret_cast<uint64_t>(handle), label);
+  }
+  void beginLabel(VkCommandBuffer cmd, const char* label) const;
+  void endLabel(VkCommandBuffer cmd) const;
+
+  PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+ private:
+  const Instance& instance_;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  Unique<VkCommandPool> oneShotPool_;
+  PFN_vkSetDebugUtilsObjectNameEXT setName_ = nullptr;
+  PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel_ = nullptr;
+  PFN_vkCmdEndDebugUtilsLabelEXT endLabel_ = nullptr;
+};
+
+// "--list-devices": one line per adapter, marking the one that would be chosen.
+std::string listDevices(const Instance& instance);
+
+}  // namespace vitrine::gpu

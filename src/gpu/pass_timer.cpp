@@ -1,0 +1,71 @@
+#include "gpu/pass_timer.h"
+
+#include "gpu/check.h"
+#include "gpu/device.h"
+
+namespace vitrine::gpu {
+
+PassTimer::PassTimer(const Device& device, uint32_t slots, uint32_t maxPassesPerFrame)
+    : device_(device), maxPasses_(maxPassesPerFrame), names_(slots) {
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = slots * maxPasses_ * 2;
+  VkQueryPool pool;
+  VK_CHECK(vkCreateQueryPool(device, &info, nullptr, &pool));
+  pool_ = Unique<VkQueryPool>(device, pool);
+  device.name(pool, VK_OBJECT_TYPE_QUERY_POOL, "pass timestamps");
+  nsPerTick_ = device.limits().timestampPeriod;
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device.physical(), &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device.physical(), &count, families.data());
+  const uint32_t bits = families[device.queueFamily()].timestampValidBits;
+  validMask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
+}
+
+void PassTimer::beginFrame(VkCommandBuffer cmd, uint32_t slot) {
+  slot_ = slot;
+  names_[slot].clear();
+  vkCmdResetQueryPool(cmd, pool_, slot * maxPasses_ * 2, maxPasses_ * 2);
+}
+
+uint32_t PassTimer::begin(VkCommandBuffer cmd, const char* name) {
+  auto& names = names_[slot_];
+  if (names.size() >= maxPasses_) throw Error("More GPU passes in one frame than the pass timer holds");
+  const auto index = static_cast<uint32_t>(names.size());
+  names.emplace_back(name);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, (slot_ * maxPasses_ + index) * 2);
+  return index;
+}
+
+void PassTimer::end(VkCommandBuffer cmd, uint32_t pass) {
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, (slot_ * maxPasses_ + pass) * 2 + 1);
+}
+
+std::vector<PassTime> PassTimer::collect(uint32_t slot) const {
+  const auto& names = names_[slot];
+  std::vector<PassTime> result;
+  if (names.empty()) return result;
+  std::vector<uint64_t> ticks(names.size() * 2);
+  VK_CHECK(vkGetQueryPoolResults(device_, pool_, slot * maxPasses_ * 2, static_cast<uint32_t>(ticks.size()),
+                                 ticks.size() * sizeof(uint64_t), ticks.data(), sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  for (size_t i = 0; i < names.size(); ++i) {
+    const uint64_t elapsed = ((ticks[2 * i + 1] & validMask_) - (ticks[2 * i] & validMask_)) & validMask_;
+    result.push_back({names[i], static_cast<double>(elapsed) * nsPerTick_ * 1e-6});
+  }
+  return result;
+}
+
+Pass::Pass(const Device& device, PassTimer* timer, VkCommandBuffer cmd, const char* name)
+    : device_(device), timer_(timer), cmd_(cmd) {
+  device_.beginLabel(cmd_, name);
+  if (timer_) index_ = timer_->begin(cmd_, name);
+}
+
+Pass::~Pass() {
+  if (timer_) timer_->end(cmd_, index_);
+  device_.endLabel(cmd_);
+}
+
+}  // namespace vitrine::gpu

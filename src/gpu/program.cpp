@@ -1,0 +1,274 @@
+#include "gpu/program.h"
+
+#include "gpu/check.h"
+#include "gpu/shader_compiler.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <set>
+#include <utility>
+
+namespace vitrine::gpu {
+
+std::span<const std::pair<std::string_view, std::span<const uint32_t>>> embeddedShaders();  // generated
+
+// ------------------------------------------------------------------------------------------ library
+
+ProgramLibrary::ProgramLibrary(const Device& device, std::filesystem::path sourceRoot)
+    : device_(device), root_(std::move(sourceRoot)) {
+  if (hotReloadAvailable()) seen_ = newestSource();
+}
+
+bool ProgramLibrary::hotReloadAvailable() const {
+  std::error_code ec;
+  return std::filesystem::is_directory(root_, ec);
+}
+
+std::span<const uint32_t> ProgramLibrary::spirv(const std::string& name) const {
+  if (auto it = reloaded_.find(name); it != reloaded_.end()) return it->second;
+  for (const auto& [shader, code] : embeddedShaders())
+    if (shader == name) return code;
+  throw Error(fmt::format("No shader named '{}' was built into this binary", name));
+}
+
+std::filesystem::file_time_type ProgramLibrary::newestSource() const {
+  std::filesystem::file_time_type newest{};
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(root_, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+    if (it->is_regular_file(ec)) newest = std::max(newest, it->last_write_time(ec));
+  return newest;
+}
+
+int ProgramLibrary::reloadChanged() {
+  if (!hotReloadAvailable()) return 0;
+  const auto newest = newestSource();
+  if (newest <= seen_) return 0;
+  seen_ = newest;
+
+  std::set<std::string> names;
+  for (const Program* program : programs_) names.insert(program->shaders().begin(), program->shaders().end());
+  std::set<std::string> changed;
+  error_.clear();
+  for (const auto& name : names) {
+    CompiledShader compiled = compileGlsl(root_, name);
+    if (compiled.spirv.empty()) {
+      error_ += compiled.log;
+      continue;
+    }
+    const auto current = spirv(name);
+    if (std::equal(current.begin(), current.end(), compiled.spirv.begin(), compiled.spirv.end())) continue;
+    reloaded_[name] = std::move(compiled.spirv);
+    changed.insert(name);
+  }
+  if (changed.empty()) return 0;
+  device_.waitIdle();
+  int rebuilt = 0;
+  for (Program* program : programs_) {
+    const auto& used = program->shaders();
+    if (std::none_of(used.begin(), used.end(), [&](const std::string& s) { return changed.count(s) > 0; })) continue;
+    try {
+      program->rebuild();
+      ++rebuilt;
+    } catch (const Error& e) {  // e.g. an interface mismatch the compiler could not see
+      error_ += e.what();
+    }
+  }
+  return rebuilt;
+}
+
+void ProgramLibrary::remove(Program* program) { std::erase(programs_, program); }
+
+// ------------------------------------------------------------------------------------------ bindings
+
+VkWriteDescriptorSet& Bindings::next(VkDescriptorType type) {
+  if (count_ == kMax) throw Error("Too many descriptor bindings for one program");
+  auto& write = writes_[count_];
+  write = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstBinding = count_;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  ++count_;
+  return write;
+}
+
+Bindings& Bindings::storageImage(VkImageView view, VkImageLayout layout) {
+  auto& write = next(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+  images_[write.dstBinding] = {VK_NULL_HANDLE, view, layout};
+  write.pImageInfo = &images_[write.dstBinding];
+  return *this;
+}
+
+Bindings& Bindings::sampledImage(VkImageView view, VkSampler sampler, VkImageLayout layout) {
+  auto& write = next(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+  images_[write.dstBinding] = {sampler, view, layout};
+  write.pImageInfo = &images_[write.dstBinding];
+  return *this;
+}
+
+Bindings& Bindings::storageBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  auto& write = next(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  buffers_[write.dstBinding] = {buffer, offset, range};
+  write.pBufferInfo = &buffers_[write.dstBinding];
+  return *this;
+}
+
+Bindings& Bindings::uniformBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  auto& write = next(VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+  buffers_[write.dstBinding] = {buffer, offset, range};
+  write.pBufferInfo = &buffers_[write.dstBinding];
+  return *this;
+}
+
+// ------------------------------------------------------------------------------------------- program
+
+Program::Program(ProgramLibrary& library, std::string label, std::vector<std::string> shaders,
+                 const ProgramLayout& layout, VkPipelineBindPoint bindPoint)
+    : library_(library), label_(std::move(label)), shaders_(std::move(shaders)), bindPoint_(bindPoint) {
+  const Device& dev = library.device();
+  stages_ = bindPoint == VK_PIPELINE_BIND_POINT_COMPUTE ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_ALL_GRAPHICS;
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (uint32_t i = 0; i < layout.bindings.size(); ++i)
+    bindings.push_back({i, layout.bindings[i], 1, stages_, nullptr});
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
+  setInfo.pBindings = bindings.data();
+  VkDescriptorSetLayout setLayout;
+  VK_CHECK(vkCreateDescriptorSetLayout(dev, &setInfo, nullptr, &setLayout));
+  setLayout_ = Unique<VkDescriptorSetLayout>(dev, setLayout);
+
+  const VkPushConstantRange range{stages_, 0, layout.pushConstantBytes};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout;
+  layoutInfo.pushConstantRangeCount = layout.pushConstantBytes ? 1 : 0;
+  layoutInfo.pPushConstantRanges = &range;
+  VkPipelineLayout pipelineLayout;
+  VK_CHECK(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &pipelineLayout));
+  layout_ = Unique<VkPipelineLayout>(dev, pipelineLayout);
+  dev.name(pipelineLayout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, label_ + " layout");
+  library_.add(this);
+}
+
+Program::~Program() { library_.remove(this); }
+
+void Program::rebuild() {
+  pipeline_ = Unique<VkPipeline>(device(), build());
+  device().name(pipeline_.get(), VK_OBJECT_TYPE_PIPELINE, label_);
+}
+
+Unique<VkShaderModule> Program::module(const std::string& shader) const {
+  const auto code = library_.spirv(shader);
+  const VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, nullptr, 0,
+                                      code.size() * sizeof(uint32_t), code.data()};
+  VkShaderModule module;
+  VK_CHECK(vkCreateShaderModule(device(), &info, nullptr, &module));
+  device().name(module, VK_OBJECT_TYPE_SHADER_MODULE, shader);
+  return Unique<VkShaderModule>(device(), module);
+}
+
+void Program::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+
+void Program::push(VkCommandBuffer cmd, const Bindings& bindings) const {
+  device().cmdPushDescriptorSet(cmd, bindPoint_, layout_, 0, bindings.count_, bindings.writes_.data());
+}
+
+void Program::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const {
+  vkCmdPushConstants(cmd, layout_, stages_, 0, size, data);
+}
+
+ComputeProgram::ComputeProgram(ProgramLibrary& library, const std::string& shader, const ProgramLayout& layout)
+    : Program(library, shader, {shader}, layout, VK_PIPELINE_BIND_POINT_COMPUTE) {
+  rebuild();
+}
+
+VkPipeline ComputeProgram::build() const {
+  const auto shaderModule = module(shaders()[0]);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT,
+                shaderModule, "main", nullptr};
+  info.layout = layout();
+  VkPipeline pipeline;
+  VK_CHECK(vkCreateComputePipelines(device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+  return pipeline;
+}
+
+void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent2D extent, VkExtent2D local) const {
+  vkCmdDispatch(cmd, (extent.width + local.width - 1) / local.width, (extent.height + local.height - 1) / local.height,
+                1);
+}
+
+GraphicsProgram::GraphicsProgram(ProgramLibrary& library, const GraphicsState& state, const ProgramLayout& layout)
+    : Program(library, state.vertex + "+" + state.fragment, {state.vertex, state.fragment}, layout,
+              VK_PIPELINE_BIND_POINT_GRAPHICS),
+      state_(state) {
+  rebuild();
+}
+
+VkPipeline GraphicsProgram::build() const {
+  const auto vertex = module(state_.vertex);
+  const auto fragment = module(state_.fragment);
+  const VkPipelineShaderStageCreateInfo stages[] = {
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertex, "main"},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragment,
+       "main"}};
+  // Geometry comes from storage buffers indexed by gl_VertexIndex / gl_InstanceIndex: no vertex input.
+  const VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  const VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+                                                        nullptr, 0, state_.topology, VK_FALSE};
+  const VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, nullptr, 0,
+                                                   1, nullptr, 1, nullptr};
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = state_.cull;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = state_.samples;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = state_.depthFormat != VK_FORMAT_UNDEFINED;
+  depth.depthWriteEnable = depth.depthTestEnable && state_.depthWrite;
+  depth.depthCompareOp = state_.depthCompare;
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.colorWriteMask = 0xF;
+  if (state_.blend != GraphicsState::Blend::None) {
+    const bool additive = state_.blend == GraphicsState::Blend::Additive;
+    blend.blendEnable = VK_TRUE;
+    blend.srcColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA;
+    blend.dstColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend.colorBlendOp = VK_BLEND_OP_ADD;
+    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  }
+  const std::vector<VkPipelineColorBlendAttachmentState> blends(state_.colorFormats.size(), blend);
+  VkPipelineColorBlendStateCreateInfo colorBlend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  colorBlend.attachmentCount = static_cast<uint32_t>(blends.size());
+  colorBlend.pAttachments = blends.data();
+  const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  const VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO, nullptr, 0, 2,
+                                                 dynamics};
+  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+  rendering.colorAttachmentCount = static_cast<uint32_t>(state_.colorFormats.size());
+  rendering.pColorAttachmentFormats = state_.colorFormats.data();
+  rendering.depthAttachmentFormat = state_.depthFormat;
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+  info.stageCount = 2;
+  info.pStages = stages;
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &colorBlend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout();
+  VkPipeline pipeline;
+  VK_CHECK(vkCreateGraphicsPipelines(device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+  return pipeline;
+}
+
+}  // namespace vitrine::gpu

@@ -1,0 +1,137 @@
+#pragma once
+// Pipelines built from named shaders ("kifs/kifs.comp"), with push descriptors instead of descriptor
+// pools. The library hands out SPIR-V (embedded at build time, or recompiled by hot reload) and
+// rebuilds every program whose code changed; a compile error keeps the old pipeline and is reported.
+#include "gpu/device.h"
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vitrine::gpu {
+
+class Program;
+
+struct ProgramLayout {
+  std::vector<VkDescriptorType> bindings;  // binding i of set 0 has type bindings[i]
+  uint32_t pushConstantBytes = 0;
+};
+
+class ProgramLibrary {
+ public:
+  explicit ProgramLibrary(const Device& device, std::filesystem::path sourceRoot = VITRINE_SHADER_SOURCE_DIR);
+  const Device& device() const { return device_; }
+
+  std::span<const uint32_t> spirv(const std::string& name) const;
+
+  // Polls the shader sources; when any changed, recompiles the shaders in use and rebuilds the
+  // programs whose SPIR-V changed (after a device idle: reloads are rare and interactive).
+  // Returns how many programs were rebuilt.
+  int reloadChanged();
+  const std::string& error() const { return error_; }  // the last compile log; empty when all compile
+  bool hotReloadAvailable() const;
+
+  void add(Program* program) { programs_.push_back(program); }
+  void remove(Program* program);
+
+ private:
+  std::filesystem::file_time_type newestSource() const;
+  const Device& device_;
+  std::filesystem::path root_;
+  std::filesystem::file_time_type seen_;
+  std::map<std::string, std::vector<uint32_t>, std::less<>> reloaded_;
+  std::vector<Program*> programs_;
+  std::string error_;
+};
+
+// Descriptor writes for one dispatch or draw; binding i is the i-th call.
+class Bindings {
+ public:
+  Bindings& storageImage(VkImageView view, VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL);
+  Bindings& sampledImage(VkImageView view, VkSampler sampler, VkImageLayout layout);
+  Bindings& storageBuffer(VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
+  Bindings& uniformBuffer(VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
+
+ private:
+  friend class Program;
+  static constexpr size_t kMax = 8;
+  std::array<VkWriteDescriptorSet, kMax> writes_{};
+  std::array<VkDescriptorImageInfo, kMax> images_{};
+  std::array<VkDescriptorBufferInfo, kMax> buffers_{};
+  uint32_t count_ = 0;
+  VkWriteDescriptorSet& next(VkDescriptorType type);
+};
+
+class Program {
+ public:
+  virtual ~Program();
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+
+  VkPipeline pipeline() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+  const std::vector<std::string>& shaders() const { return shaders_; }
+
+  void bind(VkCommandBuffer cmd) const;
+  void push(VkCommandBuffer cmd, const Bindings& bindings) const;
+  template <typename T> void constants(VkCommandBuffer cmd, const T& value) const {
+    static_assert(sizeof(T) <= 128, "push constants are limited to 128 bytes on some devices");
+    pushConstants(cmd, &value, sizeof(T));
+  }
+  void rebuild();  // from the library's current SPIR-V
+
+ protected:
+  Program(ProgramLibrary& library, std::string label, std::vector<std::string> shaders, const ProgramLayout& layout,
+          VkPipelineBindPoint bindPoint);
+  virtual VkPipeline build() const = 0;
+  Unique<VkShaderModule> module(const std::string& shader) const;
+  const Device& device() const { return library_.device(); }
+  const std::string& label() const { return label_; }
+
+ private:
+  void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const;
+  ProgramLibrary& library_;
+  std::string label_;
+  std::vector<std::string> shaders_;
+  VkPipelineBindPoint bindPoint_;
+  VkShaderStageFlags stages_;
+  Unique<VkDescriptorSetLayout> setLayout_;
+  Unique<VkPipelineLayout> layout_;
+  Unique<VkPipeline> pipeline_;
+};
+
+class ComputeProgram final : public Program {
+ public:
+  ComputeProgram(ProgramLibrary& library, const std::string& shader, const ProgramLayout& layout);
+  // Enough workgroups of size (local.x, local.y) to cover width × height.
+  void dispatchOver(VkCommandBuffer cmd, VkExtent2D extent, VkExtent2D local) const;
+
+ private:
+  VkPipeline build() const override;
+};
+
+struct GraphicsState {
+  std::string vertex, fragment;
+  std::vector<VkFormat> colorFormats;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkCompareOp depthCompare = VK_COMPARE_OP_GREATER;  // reverse-Z by default
+  bool depthWrite = true;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkCullModeFlags cull = VK_CULL_MODE_NONE;
+  enum class Blend { None, Additive, Alpha } blend = Blend::None;
+};
+
+class GraphicsProgram final : public Program {
+ public:
+  GraphicsProgram(ProgramLibrary& library, const GraphicsState& state, const ProgramLayout& layout);
+
+ private:
+  VkPipeline build() const override;
+  GraphicsState state_;
+};
+
+}  // namespace vitrine::gpu

@@ -1,0 +1,47 @@
+#include "gpu/check.h"
+#include "host/image_io.h"
+#include "host/image_compare.h"
+#include "host/modes.h"
+#include "host/offscreen.h"
+#include "host/output_path.h"
+
+#include <cstdio>
+#include <fmt/format.h>
+
+namespace vitrine::host {
+
+int runHeadless(const Options& options) {
+  const std::filesystem::path out = options.out;
+  checkWritable(out);
+  if (out.extension() == ".png" && !canWritePng())
+    throw Error("This build writes EXR only (built without OpenImageIO); use --out FILE.exr.");
+  gpu::Instance instance({options.validation, {}});
+  gpu::Device device(instance, {options.device});
+  OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
+                         options.reducedMotion, options.parameters};
+  ImageRgba image;
+  {
+    Offscreen offscreen(device, config);
+    for (uint32_t k = 0; k < options.frames; ++k) offscreen.renderFrame();
+    image = offscreen.readback();
+  }
+  writeImage(out, image);
+  std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
+              image.height, options.scene.c_str(), options.frames, options.time, options.seed,
+              device.properties().deviceName);
+  if (instance.validationMessages() > 0) {
+    std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
+    return 3;
+  }
+  return 0;
+}
+
+int runCompare(const Options& options) {
+  const ImageRgba reference = readImage(options.compare[0]);
+  const ImageRgba candidate = readImage(options.compare[1]);
+  const CompareResult result = compareImages(reference, candidate);
+  std::printf("%s\n", result.summary().c_str());
+  return result.passed ? 0 : 2;
+}
+
+}  // namespace vitrine::host

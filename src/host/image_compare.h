@@ -1,0 +1,33 @@
+#pragma once
+// The golden-frame metric (docs/ARCHITECTURE.md, "Golden frames"). Gates on the worst pixels, not
+// the mean: a pixel fails when its largest channel difference exceeds both an absolute and a
+// relative tolerance; the image fails when too many pixels fail, when any pixel differs by more than
+// the hard limit, or when the candidate holds a NaN or an infinity.
+#include "host/image.h"
+
+#include <string>
+
+namespace vitrine {
+
+struct CompareThresholds {
+  float absolute = 0.02f;       // linear units: ~5/255 near mid-grey after sRGB encoding
+  float relative = 0.10f;       // of the reference channel value
+  double failFraction = 0.002;  // 0.2 % of pixels may fail (lavapipe on a CPU of another generation)
+  float hardLimit = 0.25f;      // no pixel may differ by more than this
+};
+
+struct CompareResult {
+  bool sizeMatches = false;
+  size_t nonFinite = 0;
+  size_t failing = 0;
+  double failingFraction = 0.0;
+  float maxDifference = 0.0f;
+  double meanDifference = 0.0;
+  bool passed = false;
+  std::string summary() const;
+};
+
+CompareResult compareImages(const ImageRgba& reference, const ImageRgba& candidate,
+                            const CompareThresholds& thresholds = {});
+
+}  // namespace vitrine

@@ -1,0 +1,17 @@
+#pragma once
+// The one module that touches image files. Built on OpenImageIO (EXR and PNG) or, with
+// VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR alone (EXR only).
+#include "host/image.h"
+
+#include <filesystem>
+
+namespace vitrine {
+
+// Writes linear half-float EXR, or 8-bit sRGB PNG when the name ends in .png, through a temporary
+// file renamed into place, so a reader never sees half a file. Throws vitrine::Error.
+void writeImage(const std::filesystem::path& path, const ImageRgba& image);
+// Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error.
+ImageRgba readImage(const std::filesystem::path& path);
+bool canWritePng();
+
+}  // namespace vitrine

@@ -1,0 +1,57 @@
+#include "host/image_io.h"
+
+#include "gpu/check.h"
+
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
+
+#include <fmt/format.h>
+
+namespace vitrine {
+
+bool canWritePng() { return false; }
+
+void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
+  if (path.extension() != ".exr")
+    throw Error(fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
+                            "(configure with -DVITRINE_WITH_OIIO=ON for PNG).", path.string()));
+  auto temp = path;
+  temp.replace_filename("." + path.filename().string() + ".tmp.exr");
+  try {
+    std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
+    for (size_t i = 0; i < half.size(); ++i)
+      half[i] = Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
+    Imf::RgbaOutputFile file(temp.c_str(), int(image.width), int(image.height), Imf::WRITE_RGBA);
+    file.setFrameBuffer(half.data(), 1, image.width);
+    file.writePixels(int(image.height));
+  } catch (const std::exception& e) {
+    throw Error(fmt::format("Cannot write {}: {}", path.string(), e.what()));
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) throw Error(fmt::format("Cannot write {}: {}", path.string(), ec.message()));
+}
+
+ImageRgba readImage(const std::filesystem::path& path) {
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    const auto window = file.dataWindow();
+    const int width = window.max.x - window.min.x + 1;
+    const int height = window.max.y - window.min.y + 1;
+    Imf::Array2D<Imf::Rgba> half(height, width);
+    file.setFrameBuffer(&half[0][0] - window.min.x - size_t(window.min.y) * width, 1, width);
+    file.readPixels(window.min.y, window.max.y);
+    ImageRgba image{uint32_t(width), uint32_t(height), std::vector<float>(size_t(width) * height * 4)};
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const Imf::Rgba& p = half[y][x];
+        float* out = image.at(x, y);
+        out[0] = p.r, out[1] = p.g, out[2] = p.b, out[3] = p.a;
+      }
+    return image;
+  } catch (const std::exception& e) {
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), e.what()));
+  }
+}
+
+}  // namespace vitrine

@@ -1,0 +1,12 @@
+#pragma once
+// The program's modes, each a function of the parsed options returning the process exit code.
+#include "app/options.h"
+
+namespace vitrine::host {
+
+int runGallery(const Options& options);   // window, swapchain, overlay (host/gallery.cpp)
+int runHeadless(const Options& options);  // --headless: N frames into an EXR/PNG
+int runBench(const Options& options);     // bench: GPU timestamps per pass into JSON
+int runCompare(const Options& options);   // compare: the golden metric on two files
+
+}  // namespace vitrine::host

@@ -1,0 +1,106 @@
+#include "host/offscreen.h"
+
+#include "gpu/barriers.h"
+#include "gpu/check.h"
+
+#include <Imath/half.h>
+
+#include <chrono>
+#include <fmt/format.h>
+
+namespace vitrine::host {
+
+Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
+    : device_(device), programs_(device), renderer_(device, programs_, 1), size_(config.size) {
+  gpu::checkImageSize(device, size_);
+  const SceneInfo* info = findScene(config.scene);
+  if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
+  renderer_.setScene(*info);
+  for (const auto& [key, value] : config.parameters) {
+    std::string why;
+    if (!renderer_.scene().setParameter(key, value, &why))
+      throw Error(fmt::format("Scene {} rejects {}={}: {}", config.scene, key, value, why));
+  }
+  input_.time = config.startTime;
+  input_.seed = config.seed;
+  input_.reducedMotion = config.reducedMotion;
+
+  gpu::ImageDesc desc;
+  desc.extent = {size_.width, size_.height, 1};
+  desc.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  output_ = gpu::Image(device, desc, "offscreen output");
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = device.queueFamily();
+  VkCommandPool pool;
+  VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+  pool_ = gpu::Unique<VkCommandPool>(device, pool);
+  const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool,
+                                          VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
+  VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &cmd_));
+  device.name(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "offscreen frame");
+  const VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence;
+  VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
+  fence_ = gpu::Unique<VkFence>(device, fence);
+}
+
+Offscreen::~Offscreen() { vkDeviceWaitIdle(device_); }
+
+FrameTimes Offscreen::renderFrame() {
+  const auto start = std::chrono::steady_clock::now();
+  renderer_.scene().update(input_);
+  VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+  const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
+                                       VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+  VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
+  const gpu::ImageUse before = rendered_ ? gpu::use::TransferSrc : gpu::use::Discard;
+  renderer_.record(cmd_, 0, input_, BlitDestination{output_.handle(), size_, before, gpu::use::TransferSrc});
+  VK_CHECK(vkEndCommandBuffer(cmd_));
+  const VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd_, 0};
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  VkFence fence = fence_;
+  VK_CHECK(vkResetFences(device_, 1, &fence));
+  VK_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, fence));
+  const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+  rendered_ = true;
+
+  FrameTimes times;
+  times.cpuMs = cpuMs;
+  times.passes = renderer_.timer().collect(0);
+  for (const auto& pass : times.passes) times.gpuMs += pass.ms;
+  input_.lastGpuMs = times.gpuMs;
+  input_.time += input_.dt;
+  ++input_.frame;
+  return times;
+}
+
+ImageRgba Offscreen::readback() const {
+  if (!rendered_) throw Error("No frame has been rendered to read back");
+  const size_t count = size_t(size_.width) * size_.height;
+  gpu::Buffer staging(device_, count * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      gpu::MemoryUse::Readback, "readback");
+  device_.submitNow([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {size_.width, size_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, output_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  });
+  staging.invalidate();
+  ImageRgba image{size_.width, size_.height, std::vector<float>(count * 4)};
+  const auto halves = staging.view<const uint16_t>();
+  for (size_t i = 0; i < count * 4; ++i) {
+    half h;
+    h.setBits(halves[i]);
+    image.pixels[i] = float(h);
+  }
+  return image;
+}
+
+}  // namespace vitrine::host

@@ -1,0 +1,51 @@
+#pragma once
+// A scene rendered with no window and no surface, one fixed step per frame: the headless CLI, the
+// benchmark and the golden tests all drive this. Frame k shows time startTime + k * dt.
+#include "host/image.h"
+#include "host/scene_renderer.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vitrine::host {
+
+struct OffscreenConfig {
+  std::string scene;
+  VkExtent2D size{320, 180};
+  double startTime = 0.0;
+  uint32_t seed = 0;
+  bool reducedMotion = false;
+  std::vector<std::pair<std::string, std::string>> parameters;  // applied in order after creation
+};
+
+struct FrameTimes {
+  std::vector<gpu::PassTime> passes;
+  double gpuMs = 0.0;  // sum of the passes: they run one after another on one queue
+  double cpuMs = 0.0;  // update + recording + submission on the CPU
+};
+
+class Offscreen {
+ public:
+  Offscreen(const gpu::Device& device, const OffscreenConfig& config);
+  ~Offscreen();
+
+  FrameTimes renderFrame();
+  ImageRgba readback() const;  // the output of the last frame
+  uint64_t frames() const { return input_.frame; }
+  const SceneInfo& scene() const { return renderer_.info(); }
+
+ private:
+  const gpu::Device& device_;
+  gpu::ProgramLibrary programs_;
+  SceneRenderer renderer_;
+  VkExtent2D size_;
+  gpu::Image output_;
+  gpu::Unique<VkCommandPool> pool_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  gpu::Unique<VkFence> fence_;
+  FrameInput input_;
+  bool rendered_ = false;
+};
+
+}  // namespace vitrine::host

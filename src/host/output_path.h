@@ -1,0 +1,7 @@
+#pragma once
+#include <filesystem>
+
+namespace vitrine::host {
+// Fails early, with the path in the message, when a file could not be written there.
+void checkWritable(const std::filesystem::path& path);
+}  // namespace vitrine::host

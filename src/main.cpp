@@ -1,0 +1,41 @@
+// Vitrine: parses the command line and hands over to one mode. Every failure a user can cause ends
+// here as one sentence on stderr and a non-zero exit.
+#include "app/options.h"
+#include "gpu/check.h"
+#include "gpu/device.h"
+#include "host/modes.h"
+#include "scenes/scene.h"
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  using namespace vitrine;
+  try {
+    const Options options = parseOptions(argc, argv);
+    switch (options.mode) {
+      case Mode::Help: std::fputs(usage(), stdout); return 0;
+      case Mode::Version: std::printf("vitrine 0.1.0\n"); return 0;
+      case Mode::ListScenes:
+        for (const auto& info : sceneRegistry())
+          std::printf("%d  %-8.*s %.*s\n", info.key, int(info.name.size()), info.name.data(), int(info.title.size()),
+                      info.title.data());
+        return 0;
+      case Mode::ListDevices: {
+        gpu::Instance instance({options.validation, {}});
+        std::fputs(gpu::listDevices(instance).c_str(), stdout);
+        return 0;
+      }
+      case Mode::Headless: return host::runHeadless(options);
+      case Mode::Bench: return host::runBench(options);
+      case Mode::Compare: return host::runCompare(options);
+      case Mode::Gallery: return host::runGallery(options);
+    }
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vitrine: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vitrine: unexpected error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

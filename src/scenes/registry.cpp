@@ -1,0 +1,19 @@
+#include "scenes/kifs/kifs_scene.h"
+#include "scenes/scene.h"
+
+namespace vitrine {
+
+std::span<const SceneInfo> sceneRegistry() {
+  static const SceneInfo scenes[] = {
+      kifs::kSceneInfo,
+  };
+  return scenes;
+}
+
+const SceneInfo* findScene(std::string_view name) {
+  for (const auto& info : sceneRegistry())
+    if (info.name == name) return &info;
+  return nullptr;
+}
+
+}  // namespace vitrine
