@@ -1,6 +1,8 @@
 #pragma once
 // Tone and colour curves shared by scenes; mirrored by shaders/common/color.glsl.
 #include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/vec3.hpp>
 
 namespace vitrine::maths {

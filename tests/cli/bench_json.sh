@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# bench_json.sh VITRINE OUTDIR: the benchmark runs headless and writes per-pass medians and p95s.
+set -eu
+vitrine=$1; out=$2/bench.json
+mkdir -p "$2"; rm -f "$out"
+"$vitrine" bench --scene kifs --size 64x36 --frames 5 --warmup 1 --validate --json "$out"
+python3 - "$out" <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+scene = data["scenes"][0]
+assert scene["scene"] == "kifs", scene
+assert scene["gpu"]["median_ms"] > 0 and scene["gpu"]["p95_ms"] >= scene["gpu"]["median_ms"], scene
+names = [p["name"] for p in scene["passes"]]
+assert "kifs march" in names and "present blit" in names, names
+assert data["size"] == [64, 36] and data["frames"] == 5, data
+print("bench json ok:", names)
+PY

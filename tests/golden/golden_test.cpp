@@ -1,0 +1,116 @@
+// Golden frames: every case in tests/golden/cases.txt renders headless and must match its EXR under
+// the metric of src/host/image_compare.h; every "!" line changes a parameter of a case and must NOT
+// match, proving the comparison can fail. VITRINE_UPDATE_GOLDENS=1 rewrites the goldens instead
+// (scripts/update-goldens), and only that.
+#include "host/image_compare.h"
+#include "host/image_io.h"
+#include "host/offscreen.h"
+#include "support/gpu_test.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace vitrine::test {
+namespace {
+
+const std::filesystem::path kGoldenDir = VITRINE_GOLDEN_DIR;
+const std::filesystem::path kOutputDir = VITRINE_GOLDEN_OUTPUT_DIR;
+
+struct GoldenCase {
+  std::string name;
+  host::OffscreenConfig config;
+  uint32_t frames = 1;
+  std::vector<std::pair<std::string, std::string>> mutation;  // non-empty: must differ from the golden
+};
+
+std::pair<std::string, std::string> splitParameter(const std::string& word) {
+  const auto eq = word.find('=');
+  return {word.substr(0, eq), eq == std::string::npos ? "" : word.substr(eq + 1)};
+}
+
+// "name scene WxH frames time seed [key=value ...]" or "! name key=value ...".
+std::vector<GoldenCase> loadCases(bool mutations) {
+  std::ifstream in(kGoldenDir / "cases.txt");
+  std::map<std::string, GoldenCase> byName;
+  std::vector<GoldenCase> cases;
+  std::string line;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    std::string first;
+    if (!(words >> first)) continue;
+    if (first == "!") {
+      std::string base, word;
+      words >> base;
+      GoldenCase mutant = byName.at(base);
+      while (words >> word) mutant.mutation.push_back(splitParameter(word));
+      mutant.name = base + "_mutated";
+      if (mutations) cases.push_back(mutant);
+      continue;
+    }
+    GoldenCase c;
+    c.name = first;
+    std::string size, word;
+    words >> c.config.scene >> size >> c.frames >> c.config.startTime >> c.config.seed;
+    const auto x = size.find('x');
+    c.config.size = {uint32_t(std::stoul(size.substr(0, x))), uint32_t(std::stoul(size.substr(x + 1)))};
+    while (words >> word) {
+      auto parameter = splitParameter(word);
+      if (parameter.first == "reduced_motion")  // a host flag, not a scene parameter
+        c.config.reducedMotion = parameter.second == "on";
+      else
+        c.config.parameters.push_back(std::move(parameter));
+    }
+    byName[c.name] = c;
+    if (!mutations) cases.push_back(c);
+  }
+  return cases;
+}
+
+ImageRgba render(const gpu::Device& device, host::OffscreenConfig config, uint32_t frames,
+                 const std::vector<std::pair<std::string, std::string>>& extra) {
+  config.parameters.insert(config.parameters.end(), extra.begin(), extra.end());
+  host::Offscreen offscreen(device, config);
+  for (uint32_t i = 0; i < frames; ++i) offscreen.renderFrame();
+  return offscreen.readback();
+}
+
+class Golden : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
+class GoldenMutation : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
+
+TEST_P(Golden, MatchesReference) {
+  const GoldenCase& c = GetParam();
+  const ImageRgba image = render(device(), c.config, c.frames, {});
+  const auto golden = kGoldenDir / (c.name + ".exr");
+  if (const char* update = std::getenv("VITRINE_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+    writeImage(golden, image);
+    GTEST_SKIP() << "rewrote " << golden;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run scripts/update-goldens";
+  const CompareResult result = compareImages(readImage(golden), image);
+  if (!result.passed) {  // leave the evidence where a person can look at it
+    std::filesystem::create_directories(kOutputDir);
+    writeImage(kOutputDir / (c.name + ".exr"), image);
+    if (canWritePng()) writeImage(kOutputDir / (c.name + ".png"), image);
+  }
+  EXPECT_TRUE(result.passed) << c.name << ": " << result.summary();
+}
+
+TEST_P(GoldenMutation, ComparisonCatchesTheChange) {
+  const GoldenCase& c = GetParam();
+  const auto golden = kGoldenDir / (c.name.substr(0, c.name.size() - 8) + ".exr");
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run scripts/update-goldens";
+  const CompareResult result = compareImages(readImage(golden), render(device(), c.config, c.frames, c.mutation));
+  EXPECT_FALSE(result.passed) << c.name << " still matches its golden: " << result.summary();
+}
+
+std::string caseName(const ::testing::TestParamInfo<GoldenCase>& info) { return info.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Frames, Golden, ::testing::ValuesIn(loadCases(false)), caseName);
+INSTANTIATE_TEST_SUITE_P(Frames, GoldenMutation, ::testing::ValuesIn(loadCases(true)), caseName);
+
+}  // namespace
+}  // namespace vitrine::test

@@ -1,0 +1,92 @@
+#include "app/options.h"
+#include "gpu/check.h"
+#include "host/image_compare.h"
+#include "host/stats.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace vitrine {
+namespace {
+
+ImageRgba flat(uint32_t w, uint32_t h, float v) { return {w, h, std::vector<float>(size_t(w) * h * 4, v)}; }
+
+TEST(Compare, IdenticalImagesPass) {
+  const auto a = flat(16, 16, 0.3f);
+  const auto r = compareImages(a, a);
+  EXPECT_TRUE(r.passed);
+  EXPECT_EQ(r.failing, 0u);
+}
+
+TEST(Compare, OneWrongPixelBeyondTheHardLimitFails) {
+  const auto a = flat(64, 64, 0.3f);
+  auto b = a;
+  b.at(10, 10)[1] = 0.9f;
+  EXPECT_FALSE(compareImages(a, b).passed);
+}
+
+TEST(Compare, SmallRoundingPasses) {
+  const auto a = flat(64, 64, 0.3f);
+  auto b = a;
+  for (float& v : b.pixels) v += 0.004f;
+  EXPECT_TRUE(compareImages(a, b).passed);
+}
+
+TEST(Compare, ColourShiftAcrossTheImageFails) {
+  const auto a = flat(64, 64, 0.5f);
+  auto b = a;
+  for (size_t i = 0; i < b.pixels.size(); i += 4) b.pixels[i] *= 1.2f;  // red +20 %
+  EXPECT_FALSE(compareImages(a, b).passed);
+}
+
+TEST(Compare, NonFiniteFails) {
+  const auto a = flat(8, 8, 0.5f);
+  auto b = a;
+  b.pixels[5] = std::numeric_limits<float>::quiet_NaN();
+  const auto r = compareImages(a, b);
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.nonFinite, 1u);
+}
+
+TEST(Compare, SizeMismatchFails) { EXPECT_FALSE(compareImages(flat(8, 8, 0), flat(8, 9, 0)).passed); }
+
+TEST(Stats, NearestRankPercentiles) {
+  std::vector<double> v;
+  for (int i = 1; i <= 100; ++i) v.push_back(i);
+  EXPECT_EQ(percentile(v, 50), 50);
+  EXPECT_EQ(percentile(v, 95), 95);
+  EXPECT_EQ(percentile({}, 50), 0);
+}
+
+Options parse(std::vector<const char*> args) {
+  args.insert(args.begin(), "vitrine");
+  return parseOptions(int(args.size()), args.data());
+}
+
+TEST(Options, HeadlessCommandLine) {
+  const auto o = parse({"--headless", "--scene", "kifs", "--size", "320x180", "--frames", "4", "--time", "2.5",
+                        "--seed", "9", "--set", "step=3", "--out", "x.exr"});
+  EXPECT_EQ(o.mode, Mode::Headless);
+  EXPECT_EQ(o.size->width, 320u);
+  EXPECT_EQ(o.size->height, 180u);
+  EXPECT_EQ(o.frames, 4u);
+  EXPECT_DOUBLE_EQ(o.time, 2.5);
+  EXPECT_EQ(o.seed, 9u);
+  ASSERT_EQ(o.parameters.size(), 1u);
+  EXPECT_EQ(o.parameters[0].second, "3");
+}
+
+TEST(Options, BadInputIsAnError) {
+  EXPECT_THROW(parse({"--bogus"}), Error);
+  EXPECT_THROW(parse({"--size", "12by4"}), Error);
+  EXPECT_THROW(parse({"--size", "0x10"}), Error);
+  EXPECT_THROW(parse({"--frames", "-1"}), Error);
+  EXPECT_THROW(parse({"--headless", "--scene", "kifs"}), Error);  // no --out
+  EXPECT_THROW(parse({"--set", "novalue"}), Error);
+  EXPECT_THROW(parse({"--seed"}), Error);
+}
+
+}  // namespace
+}  // namespace vitrine

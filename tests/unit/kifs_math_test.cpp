@@ -1,0 +1,131 @@
+#include "maths/color.h"
+#include "maths/hash.h"
+#include "scenes/kifs/kifs_math.h"
+#include "scenes/kifs/quality.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace vitrine {
+namespace {
+
+TEST(Aces, KnownValues) {
+  EXPECT_FLOAT_EQ(maths::acesNarkowicz(0.0f), 0.0f);
+  EXPECT_NEAR(maths::acesNarkowicz(1.0f), 2.34f / 4.01f, 1e-6f);
+  EXPECT_NEAR(maths::acesNarkowicz(0.18f), (0.18f * (2.38f * 0.18f - 0.04f)) / (0.18f * (2.35f * 0.18f + 1.52f) + 0.14f),
+              1e-7f);
+  EXPECT_NEAR(maths::acesNarkowicz(1e6f), 2.38f / 2.35f, 1e-4f);  // the shoulder's asymptote
+}
+
+TEST(Aces, ToeCrushesToBlackInsteadOfGoingNegative) {
+  for (float x = 0.0f; x < 0.0168f; x += 0.0005f) EXPECT_GE(maths::acesNarkowicz(x), 0.0f) << x;
+}
+
+TEST(Aces, MonotoneNonDecreasing) {
+  float previous = maths::acesNarkowicz(0.0f);
+  for (float x = 0.0f; x < 64.0f; x += 0.001f) {
+    const float y = maths::acesNarkowicz(x);
+    ASSERT_GE(y, previous - 1e-6f) << "at x = " << x;  // float rounding only
+    previous = y;
+  }
+}
+
+TEST(Hash, RangeIsHalfOpenUnitInterval) {
+  double sum = 0.0;
+  float lo = 1.0f, hi = 0.0f;
+  constexpr int n = 200000;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float h = maths::hash01({i % 641u, i / 641u, 17u});
+    ASSERT_GE(h, 0.0f);
+    ASSERT_LT(h, 1.0f);
+    lo = std::min(lo, h), hi = std::max(hi, h);
+    sum += h;
+  }
+  EXPECT_NEAR(sum / n, 0.5, 0.005);  // uniform
+  EXPECT_LT(lo, 1e-3f);
+  EXPECT_GT(hi, 1.0f - 1e-3f);
+}
+
+TEST(Hash, DifferentInputsDecorrelate) {
+  EXPECT_NE(maths::hash01({1, 2, 3}), maths::hash01({1, 2, 4}));
+  EXPECT_NE(maths::hash01({1, 2, 3}), maths::hash01({2, 1, 3}));
+  EXPECT_EQ(maths::hash01({9, 9, 9}), maths::hash01({9, 9, 9}));
+}
+
+TEST(SmoothMin, StaysWithinAQuarterBandBelowMin) {
+  for (float k : {0.1f, 0.3f})
+    for (float a = -1.0f; a <= 1.0f; a += 0.05f)
+      for (float b = -1.0f; b <= 1.0f; b += 0.05f) {
+        const float s = kifs::smin(a, b, k);
+        EXPECT_LE(s, std::min(a, b) + 1e-6f);
+        EXPECT_GE(s, std::min(a, b) - k / 4.0f - 1e-6f);
+      }
+}
+
+TEST(SmoothMin, EqualsMinOutsideTheBandAndDipsMostAtTheCrossover) {
+  EXPECT_FLOAT_EQ(kifs::smin(0.0f, 1.0f, 0.3f), 0.0f);
+  EXPECT_FLOAT_EQ(kifs::smin(1.0f, 0.0f, 0.3f), 0.0f);
+  EXPECT_NEAR(kifs::smin(0.5f, 0.5f, 0.3f), 0.5f - 0.3f / 4.0f, 1e-6f);
+}
+
+TEST(SmoothMin, IsContinuous) {
+  const float k = 0.3f, h = 1e-4f;
+  for (float a = -0.5f; a <= 0.5f; a += 0.01f)
+    EXPECT_LT(std::fabs(kifs::smin(a + h, 0.1f, k) - kifs::smin(a, 0.1f, k)), 2.0f * h);
+}
+
+TEST(Field, SphereStagesAreExactDistances) {
+  EXPECT_NEAR(kifs::field({0, 0, 1}, 1, {}).distance, 0.5f, 1e-6f);
+  EXPECT_NEAR(kifs::field({0, -2, 0}, 2, {0.7f, 0.3f}).distance, 1.5f, 1e-6f);  // no tumble before stage 3
+}
+
+TEST(Field, HardUnionIsTheNearestCylinder) {
+  EXPECT_NEAR(kifs::field({0, 0, 0}, 3, {}).distance, -kifs::kCylinders.z, 1e-6f);
+  EXPECT_NEAR(kifs::field({1, 1, 0}, 3, {}).distance, 1.0f - kifs::kCylinders.x, 1e-6f);
+  EXPECT_LT(kifs::field({1, 1, 0}, 4, {}).distance, kifs::field({1, 1, 0}, 3, {}).distance + 1e-6f);
+}
+
+TEST(Field, FoldedEstimateOnKnownPoints) {
+  // Inside the core sphere the estimate is negative; far away it grows with distance as a
+  // distance estimate scaled by the write-up's 0.3 should.
+  EXPECT_LT(kifs::field({0, 0, 0}, 9, {}).distance, 0.0f);
+  const float far = kifs::field({0, 0, 20}, 9, {}).distance;
+  const float farther = kifs::field({0, 0, 40}, 9, {}).distance;
+  EXPECT_GT(far, 0.0f);
+  EXPECT_GT(farther, far);
+  // The fold mirrors space: the estimate ignores the signs of the (warped) coordinates before the
+  // fold, so points whose warp is zero (sin of 0) and mirrored agree.
+  EXPECT_NEAR(kifs::field({0, 0, 0}, 6, {}).distance, kifs::field({0, 0, 0}, 9, {}).distance, 1e-6f);
+  // Stages 6..9 differ only in shading, not in the field.
+  EXPECT_EQ(kifs::field({0.3f, -0.2f, 0.1f}, 6, {0.1f, 0.2f}).distance,
+            kifs::field({0.3f, -0.2f, 0.1f}, 9, {0.1f, 0.2f}).distance);
+}
+
+TEST(Field, MarchAlwaysAdvances) {
+  for (int step = 1; step <= kifs::kStepCount; ++step) {
+    EXPECT_GE(kifs::marchStep(0.0f, step), 0.015f);
+    EXPECT_GE(kifs::marchStep(-0.3f, step), 0.015f);  // abs(d): never backwards inside a solid
+  }
+  EXPECT_NEAR(kifs::marchStep(1.0f, 2), 0.465f, 1e-6f);
+}
+
+TEST(Vignette, QuadraticFalloff) {
+  EXPECT_FLOAT_EQ(kifs::vignette({0, 0}), 1.0f);
+  EXPECT_NEAR(kifs::vignette({0.5f, 0.5f}), 1.0f - 0.55f * 0.5f, 1e-6f);
+}
+
+TEST(AutoTier, StepsDownWhenSlowAndBackUpWhenFast) {
+  kifs::AutoTier tier;
+  for (int i = 0; i < 8; ++i) tier.observe(20.0, 8.0);
+  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+  for (int i = 0; i < 8; ++i) tier.observe(20.0, 8.0);
+  EXPECT_EQ(tier.current(), kifs::Tier::Low);
+  for (int i = 0; i < 60; ++i) tier.observe(1.0, 8.0);
+  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+  for (int i = 0; i < 30; ++i) tier.observe(8.0, 8.0);  // on target: holds
+  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+}
+
+}  // namespace
+}  // namespace vitrine
