@@ -22,14 +22,20 @@ float smin(float a, float b, float k) {
   return mix(b, a, h) - k * h * (1.0 - h);
 }
 
-float field(vec3 p, int step, vec2 angles, out vec3 trap) {
+// The slow tumble plus drag. Linear, so the march applies it to the ray once, not to every sample.
+vec3 tumble(vec3 p, int step, vec2 angles) {
+  if (step <= 2) return p;  // the sphere stages sit still
+  p.xz = rotate(p.xz, angles.x);
+  p.xy = rotate(p.xy, angles.y);
+  return p;
+}
+
+// The field at a point already in the tumbled frame.
+float field(vec3 p, int step, out vec3 trap) {
   if (step <= 2) {
     trap = abs(p);
     return length(p) - 0.5;
   }
-  p.xz = rotate(p.xz, angles.x);
-  p.xy = rotate(p.xy, angles.y);
-
   if (step <= 5) {
     vec3 q = p;
     if (step == 5) q += sin(q.zxy * WARP_FREQ) * WARP_AMP;

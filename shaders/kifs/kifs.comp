@@ -32,8 +32,8 @@ void main() {
   // y up, the height spanning -0.5..0.5, as in the write-up.
   vec2 uv = (vec2(pixel) + 0.5 - 0.5 * vec2(size)) / float(size.y);
   uv.y = -uv.y;
-  vec3 ro = vec3(0.0, 0.0, -4.5);
-  vec3 rd = normalize(vec3(uv, 1.0));
+  vec3 ro = tumble(vec3(0.0, 0.0, -4.5), pc.step, pc.angles);
+  vec3 rd = tumble(normalize(vec3(uv, 1.0)), pc.step, pc.angles);
   uvec2 up = uvec2(pixel);
 
   // Stage 9: jitter the ray start so neighbouring pixels sample the volume out of step.
@@ -41,7 +41,7 @@ void main() {
   vec3 glow = vec3(0.0);
   for (int i = 0; i < pc.maxSteps; ++i) {
     vec3 trap;
-    float d = field(ro + rd * t, pc.step, pc.angles, trap);
+    float d = field(ro + rd * t, pc.step, trap);
     vec3 colour = COL_AMBER;
     if (pc.step >= 7) {  // orbit trap: gold at the core, amber, rust in the recesses
       colour = mix(COL_HOT, COL_AMBER, smoothstep(0.0, 1.0, trap.x));

@@ -23,6 +23,7 @@ struct GoldenCase {
   std::string name;
   host::OffscreenConfig config;
   uint32_t frames = 1;
+  CompareThresholds thresholds;
   std::vector<std::pair<std::string, std::string>> mutation;  // non-empty: must differ from the golden
 };
 
@@ -61,6 +62,10 @@ std::vector<GoldenCase> loadCases(bool mutations) {
       auto parameter = splitParameter(word);
       if (parameter.first == "reduced_motion")  // a host flag, not a scene parameter
         c.config.reducedMotion = parameter.second == "on";
+      else if (parameter.first == "fail_fraction")  // per-case metric overrides, see cases.txt
+        c.thresholds.failFraction = std::stod(parameter.second);
+      else if (parameter.first == "hard_limit")
+        c.thresholds.hardLimit = std::stof(parameter.second);
       else
         c.config.parameters.push_back(std::move(parameter));
     }
@@ -78,6 +83,8 @@ ImageRgba render(const gpu::Device& device, host::OffscreenConfig config, uint32
   return offscreen.readback();
 }
 
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
+
 class Golden : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
 class GoldenMutation : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
 
@@ -90,7 +97,7 @@ TEST_P(Golden, MatchesReference) {
     GTEST_SKIP() << "rewrote " << golden;
   }
   ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run scripts/update-goldens";
-  const CompareResult result = compareImages(readImage(golden), image);
+  const CompareResult result = compareImages(readImage(golden), image, c.thresholds);
   if (!result.passed) {  // leave the evidence where a person can look at it
     std::filesystem::create_directories(kOutputDir);
     writeImage(kOutputDir / (c.name + ".exr"), image);
@@ -103,7 +110,8 @@ TEST_P(GoldenMutation, ComparisonCatchesTheChange) {
   const GoldenCase& c = GetParam();
   const auto golden = kGoldenDir / (c.name.substr(0, c.name.size() - 8) + ".exr");
   ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run scripts/update-goldens";
-  const CompareResult result = compareImages(readImage(golden), render(device(), c.config, c.frames, c.mutation));
+  const CompareResult result =
+      compareImages(readImage(golden), render(device(), c.config, c.frames, c.mutation), c.thresholds);
   EXPECT_FALSE(result.passed) << c.name << " still matches its golden: " << result.summary();
 }
 

@@ -76,30 +76,43 @@ TEST(SmoothMin, IsContinuous) {
 }
 
 TEST(Field, SphereStagesAreExactDistances) {
-  EXPECT_NEAR(kifs::field({0, 0, 1}, 1, {}).distance, 0.5f, 1e-6f);
-  EXPECT_NEAR(kifs::field({0, -2, 0}, 2, {0.7f, 0.3f}).distance, 1.5f, 1e-6f);  // no tumble before stage 3
+  EXPECT_NEAR(kifs::field({0, 0, 1}, 1).distance, 0.5f, 1e-6f);
+  EXPECT_NEAR(kifs::field({0, -2, 0}, 2).distance, 1.5f, 1e-6f);
+  EXPECT_EQ(kifs::tumble({0.3f, 0.2f, 0.1f}, 2, {0.7f, 0.3f}), glm::vec3(0.3f, 0.2f, 0.1f));  // sphere sits still
+}
+
+TEST(Field, TumbleIsARotation) {
+  const glm::vec3 p{0.3f, -0.7f, 1.1f};
+  const glm::vec3 q = kifs::tumble(p, 9, {0.9f, -0.4f});
+  EXPECT_NEAR(glm::length(q), glm::length(p), 1e-6f);
+  EXPECT_GT(glm::length(q - p), 0.1f);
+  // Linear: tumbling the ray once equals tumbling every sample on it.
+  const glm::vec3 o{0.1f, 0.2f, -4.5f}, d{0.0f, 0.6f, 0.8f};
+  const glm::vec3 sample = kifs::tumble(o + 2.5f * d, 9, {0.9f, -0.4f});
+  const glm::vec3 fromRay = kifs::tumble(o, 9, {0.9f, -0.4f}) + 2.5f * kifs::tumble(d, 9, {0.9f, -0.4f});
+  EXPECT_NEAR(glm::length(sample - fromRay), 0.0f, 1e-5f);
 }
 
 TEST(Field, HardUnionIsTheNearestCylinder) {
-  EXPECT_NEAR(kifs::field({0, 0, 0}, 3, {}).distance, -kifs::kCylinders.z, 1e-6f);
-  EXPECT_NEAR(kifs::field({1, 1, 0}, 3, {}).distance, 1.0f - kifs::kCylinders.x, 1e-6f);
-  EXPECT_LT(kifs::field({1, 1, 0}, 4, {}).distance, kifs::field({1, 1, 0}, 3, {}).distance + 1e-6f);
+  EXPECT_NEAR(kifs::field({0, 0, 0}, 3).distance, -kifs::kCylinders.z, 1e-6f);
+  EXPECT_NEAR(kifs::field({1, 1, 0}, 3).distance, 1.0f - kifs::kCylinders.x, 1e-6f);
+  EXPECT_LT(kifs::field({1, 1, 0}, 4).distance, kifs::field({1, 1, 0}, 3).distance + 1e-6f);
 }
 
 TEST(Field, FoldedEstimateOnKnownPoints) {
   // Inside the core sphere the estimate is negative; far away it grows with distance as a
   // distance estimate scaled by the write-up's 0.3 should.
-  EXPECT_LT(kifs::field({0, 0, 0}, 9, {}).distance, 0.0f);
-  const float far = kifs::field({0, 0, 20}, 9, {}).distance;
-  const float farther = kifs::field({0, 0, 40}, 9, {}).distance;
+  EXPECT_LT(kifs::field({0, 0, 0}, 9).distance, 0.0f);
+  const float far = kifs::field({0, 0, 20}, 9).distance;
+  const float farther = kifs::field({0, 0, 40}, 9).distance;
   EXPECT_GT(far, 0.0f);
   EXPECT_GT(farther, far);
   // The fold mirrors space: the estimate ignores the signs of the (warped) coordinates before the
   // fold, so points whose warp is zero (sin of 0) and mirrored agree.
-  EXPECT_NEAR(kifs::field({0, 0, 0}, 6, {}).distance, kifs::field({0, 0, 0}, 9, {}).distance, 1e-6f);
+  EXPECT_NEAR(kifs::field({0, 0, 0}, 6).distance, kifs::field({0, 0, 0}, 9).distance, 1e-6f);
   // Stages 6..9 differ only in shading, not in the field.
-  EXPECT_EQ(kifs::field({0.3f, -0.2f, 0.1f}, 6, {0.1f, 0.2f}).distance,
-            kifs::field({0.3f, -0.2f, 0.1f}, 9, {0.1f, 0.2f}).distance);
+  EXPECT_EQ(kifs::field({0.3f, -0.2f, 0.1f}, 6).distance,
+            kifs::field({0.3f, -0.2f, 0.1f}, 9).distance);
 }
 
 TEST(Field, MarchAlwaysAdvances) {

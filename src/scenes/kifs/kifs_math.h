@@ -49,14 +49,19 @@ struct FieldSample {
   glm::vec3 trap;  // orbit trap: the folded point's closest approach to the three axes
 };
 
-// The distance estimate the march samples at stage `step`, with the tumble/drag angles applied.
-inline FieldSample field(glm::vec3 p, int step, glm::vec2 angles) {
-  if (step <= 2) return {glm::length(p) - 0.5f, glm::abs(p)};
-
-  glm::vec2 xz = rotate({p.x, p.z}, angles.x);
+// The slow tumble plus drag. Linear, so the march applies it to the ray once, not to every sample.
+inline glm::vec3 tumble(glm::vec3 p, int step, glm::vec2 angles) {
+  if (step <= 2) return p;  // the sphere stages sit still
+  const glm::vec2 xz = rotate({p.x, p.z}, angles.x);
   p.x = xz.x, p.z = xz.y;
-  glm::vec2 xy = rotate({p.x, p.y}, angles.y);
+  const glm::vec2 xy = rotate({p.x, p.y}, angles.y);
   p.x = xy.x, p.y = xy.y;
+  return p;
+}
+
+// The distance estimate the march samples at stage `step`, at a point already in the tumbled frame.
+inline FieldSample field(glm::vec3 p, int step) {
+  if (step <= 2) return {glm::length(p) - 0.5f, glm::abs(p)};
 
   if (step <= 5) {
     glm::vec3 q = p;
