@@ -1,12 +1,12 @@
-#include "host/image_io.h"
-
-#include "gpu/check.h"
-
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <fmt/format.h>
 
 #include <algorithm>
-#include <fmt/format.h>
+
+#include "gpu/check.h"
+#include "host/atomic_file.h"
+#include "host/image_io.h"
 
 namespace vitrine {
 
@@ -27,14 +27,10 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
     encoded.copy(buffer);
     encoded.set_write_format(OIIO::TypeDesc::HALF);
   }
-  // Same extension on the temporary so the writer picks the right format.
-  auto temp = path;
-  temp.replace_filename("." + path.filename().string() + ".tmp" + ext);
-  if (!encoded.write(temp.string()))
-    throw Error(fmt::format("Cannot write {}: {}", path.string(), encoded.geterror()));
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) throw Error(fmt::format("Cannot write {}: {}", path.string(), ec.message()));
+  host::replaceAtomically(path, [&](const std::filesystem::path& temporary) {
+    if (!encoded.write(temporary.string()))
+      throw Error(fmt::format("Cannot write {}: {}", path.string(), encoded.geterror()));
+  });
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {

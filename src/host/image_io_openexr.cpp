@@ -1,11 +1,10 @@
-#include "host/image_io.h"
-
-#include "gpu/check.h"
-
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
-
 #include <fmt/format.h>
+
+#include "gpu/check.h"
+#include "host/atomic_file.h"
+#include "host/image_io.h"
 
 namespace vitrine {
 
@@ -13,23 +12,23 @@ bool canWritePng() { return false; }
 
 void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
   if (path.extension() != ".exr")
-    throw Error(fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
-                            "(configure with -DVITRINE_WITH_OIIO=ON for PNG).", path.string()));
-  auto temp = path;
-  temp.replace_filename("." + path.filename().string() + ".tmp.exr");
-  try {
-    std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
-    for (size_t i = 0; i < half.size(); ++i)
-      half[i] = Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
-    Imf::RgbaOutputFile file(temp.c_str(), int(image.width), int(image.height), Imf::WRITE_RGBA);
-    file.setFrameBuffer(half.data(), 1, image.width);
-    file.writePixels(int(image.height));
-  } catch (const std::exception& e) {
-    throw Error(fmt::format("Cannot write {}: {}", path.string(), e.what()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) throw Error(fmt::format("Cannot write {}: {}", path.string(), ec.message()));
+    throw Error(
+        fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
+                    "(configure with -DVITRINE_WITH_OIIO=ON for PNG).",
+                    path.string()));
+  host::replaceAtomically(path, [&](const std::filesystem::path& temporary) {
+    try {
+      std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
+      for (size_t i = 0; i < half.size(); ++i)
+        half[i] =
+            Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
+      Imf::RgbaOutputFile file(temporary.c_str(), int(image.width), int(image.height), Imf::WRITE_RGBA);
+      file.setFrameBuffer(half.data(), 1, image.width);
+      file.writePixels(int(image.height));
+    } catch (const std::exception& e) {
+      throw Error(fmt::format("Cannot write {}: {}", path.string(), e.what()));
+    }
+  });
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {
