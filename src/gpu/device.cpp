@@ -267,6 +267,8 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   features.features.samplerAnisotropy = has.features.samplerAnisotropy;
   features.features.shaderInt16 = has.features.shaderInt16;
   features.features.fillModeNonSolid = has.features.fillModeNonSolid;
+  features.features.shaderStorageImageWriteWithoutFormat = has.features.shaderStorageImageWriteWithoutFormat;
+  storageWriteWithoutFormat_ = has.features.shaderStorageImageWriteWithoutFormat;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -68,7 +68,9 @@ class Device {
   uint32_t queueFamily() const { return queueFamily_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
-  std::string describe() const;  // "NVIDIA H100 (driver 580.x, Vulkan 1.3.x)"
+  std::string describe() const;
+  // Storage images without a format qualifier: lets one compute pass write any output format.
+  bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }  // "NVIDIA H100 (driver 580.x, Vulkan 1.3.x)"
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;
@@ -95,6 +97,7 @@ class Device {
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queueFamily_ = 0;
+  bool storageWriteWithoutFormat_ = false;
   Unique<VkCommandPool> oneShotPool_;
   PFN_vkSetDebugUtilsObjectNameEXT setName_ = nullptr;
   PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel_ = nullptr;

@@ -3,8 +3,6 @@
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 
-#include <Imath/half.h>
-
 #include <chrono>
 #include <fmt/format.h>
 
@@ -27,7 +25,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
 
   gpu::ImageDesc desc;
   desc.extent = {size_.width, size_.height, 1};
-  desc.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   output_ = gpu::Image(device, desc, "offscreen output");
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -56,7 +54,8 @@ FrameTimes Offscreen::renderFrame() {
                                        VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
   VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   const gpu::ImageUse before = rendered_ ? gpu::use::TransferSrc : gpu::use::Discard;
-  renderer_.record(cmd_, 0, input_, BlitDestination{output_.handle(), size_, before, gpu::use::TransferSrc});
+  renderer_.record(cmd_, 0, input_,
+                   BlitDestination{output_.handle(), size_, before, gpu::use::TransferSrc, output_.view()});
   VK_CHECK(vkEndCommandBuffer(cmd_));
   const VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd_, 0};
   VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
@@ -93,14 +92,7 @@ ImageRgba Offscreen::readback() const {
                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   });
   staging.invalidate();
-  ImageRgba image{size_.width, size_.height, std::vector<float>(count * 4)};
-  const auto halves = staging.view<const uint16_t>();
-  for (size_t i = 0; i < count * 4; ++i) {
-    half h;
-    h.setBits(halves[i]);
-    image.pixels[i] = float(h);
-  }
-  return image;
+  return imageFromHalves(size_.width, size_.height, staging.view<const uint16_t>());
 }
 
 }  // namespace vitrine::host

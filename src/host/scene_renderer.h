@@ -1,7 +1,8 @@
 #pragma once
 // The part of a frame that is the same in the gallery, headless and bench modes: keep the HDR target
-// at the scene's render scale, let the scene record its passes, then blit the target into the
-// caller's image (a swapchain image, or the offscreen output).
+// at the scene's render scale, let the scene record its passes, then scale the target onto the
+// caller's image (a swapchain image, or the offscreen output) in a compute pass when the image
+// allows storage writes, else with a blit. The target ends every frame in TRANSFER_SRC layout.
 #include "gpu/barriers.h"
 #include "gpu/resources.h"
 #include "scenes/scene.h"
@@ -11,8 +12,10 @@ namespace vitrine::host {
 struct BlitDestination {
   VkImage image;
   VkExtent2D extent;
-  gpu::ImageUse before;  // how the image was last used
-  gpu::ImageUse after;   // how the caller uses it next
+  gpu::ImageUse before;                  // how the image was last used
+  gpu::ImageUse after;                   // how the caller uses it next
+  VkImageView storageView = VK_NULL_HANDLE;  // set when the image has STORAGE usage: compute path
+  bool encodeSrgb = false;               // a UNORM image shown as sRGB (compute path only)
 };
 
 class SceneRenderer {
@@ -30,10 +33,14 @@ class SceneRenderer {
 
  private:
   void ensureTarget(VkExtent2D output);
+  void blit(VkCommandBuffer cmd, const BlitDestination& dst);
+  void present(VkCommandBuffer cmd, const BlitDestination& dst);
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
   uint32_t framesInFlight_;
   gpu::PassTimer timer_;
+  gpu::ComputeProgram present_;
+  gpu::Unique<VkSampler> sampler_;
   const SceneInfo* info_ = nullptr;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;
