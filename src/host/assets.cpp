@@ -1,0 +1,44 @@
+#include "host/assets.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace vitrine::host {
+
+Assets Assets::locate() {
+  if (const char* env = std::getenv("VITRINE_ASSETS"); env && *env) return Assets(env);
+  return Assets(std::filesystem::path(VITRINE_ASSET_DIR) / "cache");
+}
+
+Assets::Assets(std::filesystem::path root) : root_(std::move(root)) {}
+
+std::optional<std::filesystem::path> Assets::font(const std::string& family) const {
+  const auto path = root_ / "fonts" / (family + ".woff2");
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > 0) return path;
+  return std::nullopt;
+}
+
+std::vector<std::filesystem::path> Assets::panoramas() const {
+  std::vector<std::filesystem::path> found;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(root_ / "hdri", ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
+    if (it->path().extension() == ".exr") found.push_back(it->path());
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::vector<std::string> Assets::missing() const {
+  std::vector<std::string> lines;
+  for (const char* family : {"Fraunces", "CormorantSC"})
+    if (!font(family))
+      lines.push_back(std::string("font ") + family + " (" + (root_ / "fonts").string() +
+                      "): using Dear ImGui's built-in font; run scripts/setup to fetch it");
+  if (panoramas().empty())
+    lines.push_back("HDR panoramas (" + (root_ / "hdri").string() +
+                    "): scenes use a procedural sky; run scripts/setup to fetch blender-data's");
+  return lines;
+}
+
+}  // namespace vitrine::host
