@@ -32,7 +32,8 @@ std::span<const uint32_t> ProgramLibrary::spirv(const std::string& name) const {
 }
 
 std::filesystem::file_time_type ProgramLibrary::newestSource() const {
-  std::filesystem::file_time_type newest{};
+  // file_clock times can be negative (libstdc++ puts its epoch in 2174): start from min(), not zero.
+  auto newest = std::filesystem::file_time_type::min();
   std::error_code ec;
   for (auto it = std::filesystem::recursive_directory_iterator(root_, ec);
        !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))

@@ -41,7 +41,7 @@ class ProgramLibrary {
   std::filesystem::file_time_type newestSource() const;
   const Device& device_;
   std::filesystem::path root_;
-  std::filesystem::file_time_type seen_;
+  std::filesystem::file_time_type seen_ = std::filesystem::file_time_type::min();
   std::map<std::string, std::vector<uint32_t>, std::less<>> reloaded_;
   std::vector<Program*> programs_;
   std::string error_;
