@@ -1,4 +1,5 @@
 #include "scenes/kifs/kifs_scene.h"
+#include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
 
 namespace vitrine {
@@ -6,6 +7,7 @@ namespace vitrine {
 std::span<const SceneInfo> sceneRegistry() {
   static const SceneInfo scenes[] = {
       kifs::kSceneInfo,
+      noodles::kSceneInfo,
   };
   return scenes;
 }

@@ -13,7 +13,9 @@ class HotReload : public GpuTest {
  protected:
   void SetUp() override {
     GpuTest::SetUp();
-    root_ = std::filesystem::temp_directory_path() / "vitrine-hot-reload";
+    // One folder per test: ctest -j runs the tests of this fixture side by side.
+    root_ = std::filesystem::temp_directory_path() /
+            (std::string("vitrine-hot-reload-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(root_);
     std::filesystem::copy(VITRINE_SHADER_SOURCE_DIR, root_, std::filesystem::copy_options::recursive);
   }

@@ -1,0 +1,128 @@
+// The integrate pass on the device against the CPU reference (src/scenes/noodles/strand.h): a few
+// small grids of strands in each field, integrator, tangent and frame mode, read back node by node.
+#include "gpu/barriers.h"
+#include "gpu/resources.h"
+#include "scenes/noodles/integrate_pass.h"
+#include "scenes/noodles/strand.h"
+#include "scenes/noodles/strand_layout.h"
+#include "support/gpu_test.h"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+namespace vitrine::noodles {
+namespace {
+
+class NoodlesGpu : public test::GpuTest {
+ protected:
+  // Every strand's nodes, strand-major (strand s at s * (segments + 1)), as the GPU wrote them.
+  std::vector<PackedNode> integrateOnDevice(const StrandSettings& settings, const DeviceBudget& budget) {
+    gpu::ProgramLibrary programs(device());
+    const IntegratePass pass(programs);
+    const StrandLayout layout = planStrands(settings.grid, settings.segments, budget);
+    const gpu::Buffer nodes(device(), layout.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                            gpu::MemoryUse::Device, "test nodes");
+    const gpu::Buffer readback(device(), layout.bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                               "test node readback");
+    device().submitNow([&](VkCommandBuffer cmd) {
+      pass.record(cmd, layout, nodes.handle(), settings);
+      gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+      const VkBufferCopy copy{0, 0, layout.bytes};
+      vkCmdCopyBuffer(cmd, nodes.handle(), readback.handle(), 1, &copy);
+      gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    });
+    readback.invalidate();
+    const auto raw = readback.view<const PackedNode>();
+    const uint32_t perStrand = layout.segments + 1;
+    std::vector<PackedNode> strandMajor(size_t(layout.strands) * perStrand);
+    for (const StrandChunk& chunk : layout.chunks)
+      for (uint32_t local = 0; local < chunk.strandCount; ++local)
+        for (uint32_t k = 0; k < perStrand; ++k)
+          strandMajor[size_t(chunk.firstStrand + local) * perStrand + k] =
+              raw[chunk.offset / kNodeBytes + nodeSlot(chunk.strandCount, local, k)];
+    return strandMajor;
+  }
+
+  // Tolerances. The hash is integer arithmetic and the lattice gradients are exact, so both sides
+  // start from identical numbers; they part only through float rounding - the GPU may fuse
+  // multiply-adds and its sqrt and division are allowed a few ulp - which is ~1e-6 relative per
+  // field evaluation. A streamline amplifies a perturbation by at most exp(|grad v| * length);
+  // over these strands (|grad v| ~ 2 per noise unit, length under 3 units at noise scale 0.5) that
+  // is a factor of ~20, so positions agree to ~1e-4 of a unit; 2e-3 leaves room without hiding a
+  // real difference, which moves a strand by a whole step (0.05) within a segment or two.
+  // Frames go through a 10-bit quaternion (< 0.2 degrees); one quantum either way plus the position
+  // differences stays under 0.01 in each axis vector. (Lavapipe, which neither fuses nor
+  // approximates here, matches the CPU bit for bit; the margin is for GPUs that do.)
+  static constexpr float kPositionTolerance = 2e-3f;
+  static constexpr float kAxisTolerance = 1e-2f;
+
+  void expectMatchesReference(const StrandSettings& settings, const DeviceBudget& budget) {
+    const std::vector<PackedNode> gpu = integrateOnDevice(settings, budget);
+    const uint32_t strands = settings.grid.x * settings.grid.y * settings.grid.z;
+    const uint32_t perStrand = settings.segments + 1;
+    std::vector<PackedNode> cpu(perStrand);
+    float worstPosition = 0.0f, worstAxis = 0.0f;
+    for (uint32_t s = 0; s < strands; ++s) {
+      integrateStrand(settings, s, cpu);
+      for (uint32_t k = 0; k < perStrand; ++k) {
+        const PackedNode& g = gpu[size_t(s) * perStrand + k];
+        worstPosition = std::max(worstPosition, glm::length(nodePosition(g) - nodePosition(cpu[k])));
+        const Frame a = nodeFrame(g), b = nodeFrame(cpu[k]);
+        worstAxis = std::max({worstAxis, glm::length(a.normal - b.normal), glm::length(a.binormal - b.binormal),
+                              glm::length(a.tangent - b.tangent)});
+        ASSERT_LT(worstPosition, kPositionTolerance) << fmt::format("strand {} node {}", s, k);
+        ASSERT_LT(worstAxis, kAxisTolerance) << fmt::format("strand {} node {}", s, k);
+      }
+    }
+    // The strands went somewhere: a pass that wrote nothing (zeros) must not pass as "close".
+    EXPECT_GT(glm::length(nodePosition(gpu[perStrand - 1]) - nodePosition(gpu[0])), 0.1f);
+    RecordProperty("worst_position_difference", fmt::format("{:.3g}", worstPosition));
+    RecordProperty("worst_axis_difference", fmt::format("{:.3g}", worstAxis));
+  }
+};
+
+StrandSettings smallGrid() {
+  StrandSettings s;
+  s.grid = {4, 3, 2};
+  s.segments = 48;
+  s.field = fieldAtTime(FieldKind::Curl, 0.5f, 0.0f, 2.5);
+  return s;
+}
+
+TEST_F(NoodlesGpu, CurlEulerRawRotationMinimisingMatchesTheCpu) {
+  expectMatchesReference(smallGrid(), deviceBudget(device()));
+}
+
+TEST_F(NoodlesGpu, BitangentRk4NormalizedUpVectorMatchesTheCpu) {
+  StrandSettings s = smallGrid();
+  s.field = fieldAtTime(FieldKind::Bitangent, 0.7f, 0.0f, 11.0);
+  s.integrator = Integrator::Rk4;
+  s.tangent = TangentMode::Normalized;
+  s.frames = FrameMethod::Up;
+  expectMatchesReference(s, deviceBudget(device()));
+}
+
+TEST_F(NoodlesGpu, LiftedCurlRk4MatchesTheCpu) {
+  StrandSettings s = smallGrid();
+  s.field = fieldAtTime(FieldKind::Curl, 0.5f, 2.0f, 0.0);
+  s.integrator = Integrator::Rk4;
+  s.tangent = TangentMode::Normalized;
+  expectMatchesReference(s, deviceBudget(device()));
+}
+
+TEST_F(NoodlesGpu, ChunkedBindingsMatchTheCpu) {
+  // Shrink the binding range to five strands' worth (kept aligned) so the 24 strands take several
+  // dispatches with offsets, as ten million segments do on a 128 MiB-range device.
+  DeviceBudget budget = deviceBudget(device());
+  const StrandSettings s = smallGrid();
+  budget.maxStorageBufferRange = 5ull * (s.segments + 1) * kNodeBytes;
+  const StrandLayout layout = planStrands(s.grid, s.segments, budget);
+  ASSERT_GT(layout.chunks.size(), 2u);
+  expectMatchesReference(s, budget);
+}
+
+}  // namespace
+}  // namespace vitrine::noodles

@@ -1,0 +1,496 @@
+// The noodles maths the shaders mirror: noise and its analytic gradient, the divergence-free
+// fields, the integrators, the frames, the node packing, the buffer plan, the camera.
+#include "gpu/check.h"
+#include "scenes/noodles/camera.h"
+#include "scenes/noodles/field.h"
+#include "scenes/noodles/frames.h"
+#include "scenes/noodles/integrate.h"
+#include "scenes/noodles/packing.h"
+#include "scenes/noodles/palette.h"
+#include "scenes/noodles/settings.h"
+#include "scenes/noodles/strand.h"
+#include "scenes/noodles/strand_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace vitrine::noodles {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// Reproducible points in a box that straddles zero, so negative cells are exercised too.
+std::vector<glm::vec3> randomPoints(size_t count, float extent, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> coordinate(-extent, extent);
+  std::vector<glm::vec3> points(count);
+  for (auto& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  return points;
+}
+
+// Central differences of f's three components: column i is d f / d x_i.
+template <typename F>
+glm::mat3 jacobian(const F& f, glm::vec3 p, float h) {
+  glm::mat3 j;
+  for (int i = 0; i < 3; ++i) {
+    glm::vec3 step(0.0f);
+    step[i] = h;
+    j[i] = (f(p + step) - f(p - step)) / (2.0f * h);
+  }
+  return j;
+}
+
+float frobenius(const glm::mat3& m) {
+  float sum = 0.0f;
+  for (int c = 0; c < 3; ++c) sum += glm::dot(m[c], m[c]);
+  return std::sqrt(sum);
+}
+
+// ------------------------------------------------------------------------------------------- noise
+
+TEST(NoodlesNoise, AnalyticGradientMatchesFiniteDifferences) {
+  // h = 2e-3: truncation error h^2 f'''/6 ~ 1e-4 and float rounding ~1e-7 / h ~ 5e-5, against
+  // gradients of order 1; a wrong term in the derivative is off by O(1).
+  constexpr float h = 2e-3f;
+  for (const glm::vec3& p : randomPoints(2000, 40.0f, 1)) {
+    const glm::vec3 analytic = gradientNoise(p).gradient;
+    glm::vec3 numeric;
+    for (int i = 0; i < 3; ++i) {
+      glm::vec3 step(0.0f);
+      step[i] = h;
+      numeric[i] = (gradientNoise(p + step).value - gradientNoise(p - step).value) / (2.0f * h);
+    }
+    ASSERT_LT(glm::length(analytic - numeric), 2e-3f) << "at " << p.x << ", " << p.y << ", " << p.z;
+  }
+}
+
+TEST(NoodlesNoise, SmoothAcrossNegativeCellFaces) {
+  // Where the write-up's first version creased: the faces of cells with negative coordinates.
+  for (float face : {-3.0f, -1.0f, 0.0f, 2.0f}) {
+    const glm::vec3 below{face - 1e-4f, -2.3f, -0.7f}, above{face + 1e-4f, -2.3f, -0.7f};
+    EXPECT_NEAR(gradientNoise(below).value, gradientNoise(above).value, 1e-3f) << face;
+    EXPECT_LT(glm::length(gradientNoise(below).gradient - gradientNoise(above).gradient), 1e-2f) << face;
+  }
+}
+
+TEST(NoodlesNoise, VanishesAtLatticePointsAndVaries) {
+  EXPECT_EQ(gradientNoise({-4.0f, 7.0f, 0.0f}).value, 0.0f);  // gradient noise is zero on the lattice
+  float lo = 0.0f, hi = 0.0f;
+  for (const glm::vec3& p : randomPoints(2000, 50.0f, 2)) {
+    lo = std::min(lo, gradientNoise(p).value);
+    hi = std::max(hi, gradientNoise(p).value);
+  }
+  EXPECT_LT(lo, -0.3f);
+  EXPECT_GT(hi, 0.3f);
+}
+
+TEST(NoodlesNoise, LatticeGradientsAreCentredAndExact) {
+  glm::vec3 mean(0.0f);
+  constexpr int n = 20000;
+  for (uint32_t i = 0; i < n; ++i) {
+    const glm::vec3 g = latticeGradient({i, i * 7u, 3u});
+    ASSERT_TRUE(glm::all(glm::greaterThanEqual(g, glm::vec3(-1.0f))) && glm::all(glm::lessThan(g, glm::vec3(1.0f))));
+    mean += g / float(n);
+  }
+  EXPECT_LT(glm::length(mean), 0.02f);
+}
+
+// ------------------------------------------------------------------------------------------- field
+
+FieldSettings driftedField(FieldKind kind) { return fieldAtTime(kind, 0.5f, 0.0f, 3.7); }
+
+// |div v| against the size of v's derivatives, at random points.
+template <typename F>
+float worstDivergenceRatio(const F& field, uint32_t seed) {
+  float worst = 0.0f;
+  for (const glm::vec3& p : randomPoints(500, 12.0f, seed)) {
+    const glm::mat3 j = jacobian(field, p, 1e-3f);
+    const float divergence = j[0][0] + j[1][1] + j[2][2];
+    worst = std::max(worst, std::fabs(divergence) / (frobenius(j) + 1e-3f));
+  }
+  return worst;
+}
+
+TEST(NoodlesField, CurlNoiseIsDivergenceFree) {
+  const FieldSettings s = driftedField(FieldKind::Curl);
+  EXPECT_LT(worstDivergenceRatio([&](glm::vec3 p) { return flowVelocity(p, s); }, 3), 0.01f);
+}
+
+TEST(NoodlesField, BitangentNoiseIsDivergenceFree) {
+  const FieldSettings s = driftedField(FieldKind::Bitangent);
+  EXPECT_LT(worstDivergenceRatio([&](glm::vec3 p) { return flowVelocity(p, s); }, 4), 0.01f);
+}
+
+TEST(NoodlesField, DivergenceMeasureSeesAGradientField) {
+  // The control: the noise gradient itself has divergence = its Laplacian, which the same measure
+  // must flag, or the two tests above prove nothing.
+  EXPECT_GT(worstDivergenceRatio([](glm::vec3 p) { return gradientNoise(p * 0.5f).gradient; }, 5), 0.3f);
+}
+
+TEST(NoodlesField, LiftAddsAUniformUpwardFlow) {
+  FieldSettings s = driftedField(FieldKind::Curl);
+  const glm::vec3 p{0.3f, -1.2f, 2.0f};
+  const glm::vec3 still = flowVelocity(p, s);
+  s.lift = 2.0f;
+  EXPECT_EQ(flowVelocity(p, s), still + glm::vec3(0.0f, 0.0f, 2.0f));
+}
+
+TEST(NoodlesField, TimeMovesTheFieldAndTheDriftStaysBounded) {
+  const glm::vec3 p{1.0f, 2.0f, -0.5f};
+  EXPECT_GT(glm::length(flowVelocity(p, fieldAtTime(FieldKind::Curl, 0.5f, 0.0f, 0.0)) -
+                        flowVelocity(p, fieldAtTime(FieldKind::Curl, 0.5f, 0.0f, 0.5))),
+            1e-2f);
+  // Starts along +y like the write-up's drift, at one noise unit per unit of time...
+  const glm::vec3 early = driftOffset(1e-3);
+  EXPECT_NEAR(early.y, 1e-3f, 1e-6f);
+  EXPECT_NEAR(early.x, 0.0f, 1e-6f);
+  // ...and after a day of drifting is still within the circle.
+  for (double t : {1e3, 86400.0, 1e7}) EXPECT_LE(glm::length(driftOffset(t)), 2.0f * float(kDriftRadius) + 1e-3f);
+}
+
+// ------------------------------------------------------------------------------------- integration
+
+// Rigid rotation about z: every streamline is a circle, travelled at speed |p| in raw mode.
+glm::vec3 rotationField(glm::vec3 p) { return {-p.y, p.x, 0.0f}; }
+
+glm::vec3 follow(glm::vec3 p, int steps, float h, Integrator integrator, TangentMode mode) {
+  for (int i = 0; i < steps; ++i) p = advance(p, travel(rotationField(p), mode), h, integrator, mode, rotationField);
+  return p;
+}
+
+TEST(NoodlesIntegrate, Rk4FollowsCirclesFarBetterThanEuler) {
+  constexpr float h = 0.05f;
+  constexpr int steps = 200;  // t = 10: more than one and a half turns
+  const glm::vec3 exact{std::cos(10.0f), std::sin(10.0f), 0.0f};
+  const float euler = glm::length(follow({1, 0, 0}, steps, h, Integrator::Euler, TangentMode::Raw) - exact);
+  const float rk4 = glm::length(follow({1, 0, 0}, steps, h, Integrator::Rk4, TangentMode::Raw) - exact);
+  EXPECT_GT(euler, 0.1f);  // Euler spirals outwards by (1 + h^2)^(1/2) a step
+  EXPECT_LT(rk4, 1e-4f);
+  EXPECT_LT(rk4 * 1000.0f, euler);
+}
+
+TEST(NoodlesIntegrate, NormalizedTangentWalksAtUnitSpeed) {
+  // On the circle of radius 2 the raw field moves at speed 2; the normalised one at 1, so after
+  // arc length s the angle is s / 2.
+  constexpr float h = 0.01f;
+  const glm::vec3 end = follow({2, 0, 0}, 300, h, Integrator::Rk4, TangentMode::Normalized);
+  EXPECT_NEAR(std::atan2(end.y, end.x), 3.0f / 2.0f, 1e-4f);
+  EXPECT_NEAR(glm::length(end), 2.0f, 1e-4f);
+}
+
+TEST(NoodlesIntegrate, NormalizedStrandsHaveEqualSegmentsAndRawOnesDoNot) {
+  StrandSettings s;
+  s.grid = {3, 3, 1};
+  s.segments = 40;
+  s.field = driftedField(FieldKind::Curl);
+  std::vector<PackedNode> nodes(s.segments + 1);
+  for (TangentMode mode : {TangentMode::Normalized, TangentMode::Raw}) {
+    s.tangent = mode;
+    integrateStrand(s, 4, nodes);
+    EXPECT_EQ(nodePosition(nodes[0]), strandStart(s, 4));
+    float shortest = 1e9f, longest = 0.0f;
+    for (uint32_t k = 0; k < s.segments; ++k) {
+      const float length = glm::length(nodePosition(nodes[k + 1]) - nodePosition(nodes[k]));
+      shortest = std::min(shortest, length), longest = std::max(longest, length);
+    }
+    if (mode == TangentMode::Normalized) {
+      EXPECT_NEAR(shortest, s.step, 1e-5f);
+      EXPECT_NEAR(longest, s.step, 1e-5f);
+    } else {
+      EXPECT_GT(longest - shortest, 0.1f * s.step);
+    }
+  }
+}
+
+TEST(NoodlesIntegrate, StrandStartsFormACentredGrid) {
+  StrandSettings s;
+  s.grid = {4, 3, 2};
+  s.spacing = 0.5f;
+  EXPECT_EQ(strandStart(s, 0), glm::vec3(-0.75f, -0.5f, -0.25f));
+  EXPECT_EQ(strandStart(s, 4 * 3 * 2 - 1), glm::vec3(0.75f, 0.5f, 0.25f));
+  EXPECT_EQ(strandStart(s, 5), glm::vec3(-0.25f, 0.0f, -0.25f));  // x = 1, y = 1, z = 0
+}
+
+// ------------------------------------------------------------------------------------------ frames
+
+struct Helix {
+  float radius, turnRate, climb;  // r(s) = (R cos ws, R sin ws, c s)
+  glm::vec3 point(float s) const { return {radius * std::cos(turnRate * s), radius * std::sin(turnRate * s), climb * s}; }
+  glm::vec3 tangent(float s) const {
+    return glm::normalize(glm::vec3(-radius * turnRate * std::sin(turnRate * s), radius * turnRate * std::cos(turnRate * s), climb));
+  }
+};
+
+// Rotates v by the smallest rotation taking unit a onto unit b (Rodrigues).
+glm::vec3 rotateOnto(glm::vec3 v, glm::vec3 a, glm::vec3 b) {
+  const glm::vec3 axis = glm::cross(a, b);
+  const float c = glm::dot(a, b);
+  return v * c + glm::cross(axis, v) + axis * (glm::dot(axis, v) / (1.0f + c));
+}
+
+// How far the frame spins about the strand from one node to the next: the angle between the new
+// normal and the old one carried over by the smallest rotation of the tangent.
+float twist(const Frame& from, const Frame& to) {
+  const glm::vec3 carried = rotateOnto(from.normal, from.tangent, to.tangent);
+  return std::atan2(glm::dot(glm::cross(carried, to.normal), to.tangent), glm::dot(carried, to.normal));
+}
+
+std::vector<Frame> helixFrames(const Helix& helix, FrameMethod method, int steps, float ds) {
+  std::vector<Frame> frames{upVectorFrame(helix.tangent(0.0f))};
+  for (int i = 1; i <= steps; ++i) {
+    const float s = float(i) * ds;
+    frames.push_back(method == FrameMethod::Up
+                         ? upVectorFrame(helix.tangent(s))
+                         : transportFrame(frames.back(), helix.point(s - ds), helix.point(s), helix.tangent(s)));
+  }
+  return frames;
+}
+
+void expectOrthonormal(const Frame& f, float tolerance) {
+  EXPECT_NEAR(glm::length(f.normal), 1.0f, tolerance);
+  EXPECT_NEAR(glm::length(f.binormal), 1.0f, tolerance);
+  EXPECT_NEAR(glm::length(f.tangent), 1.0f, tolerance);
+  EXPECT_NEAR(glm::dot(f.normal, f.binormal), 0.0f, tolerance);
+  EXPECT_NEAR(glm::dot(f.normal, f.tangent), 0.0f, tolerance);
+  EXPECT_NEAR(glm::dot(f.binormal, f.tangent), 0.0f, tolerance);
+  EXPECT_GT(glm::dot(glm::cross(f.normal, f.binormal), f.tangent), 0.0f);  // right-handed
+}
+
+TEST(NoodlesFrames, RotationMinimisingFramesStayOrthonormalAndTwistFarLess) {
+  // A steep helix, like a strand with lift: near-vertical tangent circling the up axis, where the
+  // up-vector frame spins once per turn.
+  const Helix helix{0.15f, 2.0f * kPi, 1.0f};
+  constexpr int steps = 3000;
+  const float ds = 3.0f / steps;  // three turns
+  const auto rmf = helixFrames(helix, FrameMethod::RotationMinimizing, steps, ds);
+  const auto up = helixFrames(helix, FrameMethod::Up, steps, ds);
+  float rmfTwist = 0.0f, upTwist = 0.0f;
+  for (int i = 0; i < steps; ++i) {
+    rmfTwist += std::fabs(twist(rmf[i], rmf[i + 1]));
+    upTwist += std::fabs(twist(up[i], up[i + 1]));
+  }
+  for (const Frame& f : rmf) expectOrthonormal(f, 1e-5f);
+  // The up-vector frame turns with the helix: about 2 pi * turns * cos(slope) in all.
+  const float slope = std::atan2(helix.radius * helix.turnRate, helix.climb);
+  EXPECT_NEAR(upTwist, 3.0f * 2.0f * kPi * std::cos(slope), 0.05f);
+  EXPECT_LT(rmfTwist, 0.01f);
+  EXPECT_LT(rmfTwist * 100.0f, upTwist);
+}
+
+TEST(NoodlesFrames, UpVectorFrameSurvivesAVerticalTangent) {
+  expectOrthonormal(upVectorFrame({0.0f, 0.0f, 1.0f}), 1e-6f);
+  expectOrthonormal(upVectorFrame({0.0f, 0.0f, -1.0f}), 1e-6f);
+  expectOrthonormal(upVectorFrame(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f))), 1e-6f);
+}
+
+TEST(NoodlesFrames, TransportHandlesAZeroLengthStep) {
+  const Frame from = upVectorFrame(glm::normalize(glm::vec3(1.0f, 0.2f, 0.1f)));
+  const glm::vec3 p{1.0f, 2.0f, 3.0f};
+  const Frame same = transportFrame(from, p, p, from.tangent);
+  EXPECT_LT(glm::length(same.normal - from.normal), 1e-6f);
+  expectOrthonormal(transportFrame(from, p, p, glm::normalize(glm::vec3(0.0f, 1.0f, 0.3f))), 1e-5f);
+}
+
+TEST(NoodlesFrames, QuaternionRoundTripCoversEveryBranch) {
+  // Half turns about x, y and z make the trace negative and pick each of Shepperd's other branches.
+  const std::vector<glm::mat3> rotations = {
+      glm::mat3(1.0f),
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 3.0f, glm::vec3(1, 0, 0))),
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 3.0f, glm::vec3(0, 1, 0))),
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 3.0f, glm::vec3(0, 0, 1))),
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 1.1f, glm::normalize(glm::vec3(1, -2, 0.5f))))};
+  for (const glm::mat3& m : rotations) {
+    const Frame f{m[0], m[1], m[2]};
+    const glm::vec4 q = frameToQuaternion(f);
+    EXPECT_NEAR(glm::length(q), 1.0f, 1e-5f);
+    const Frame back = quaternionToFrame(q);
+    EXPECT_LT(glm::length(back.normal - f.normal), 1e-5f);
+    EXPECT_LT(glm::length(back.binormal - f.binormal), 1e-5f);
+    EXPECT_LT(glm::length(back.tangent - f.tangent), 1e-5f);
+  }
+}
+
+// ----------------------------------------------------------------------------------------- packing
+
+TEST(NoodlesPacking, NodesRoundTrip) {
+  std::mt19937 rng(7);
+  std::normal_distribution<float> gauss;
+  float worstAngle = 0.0f;
+  for (int i = 0; i < 5000; ++i) {
+    const glm::vec4 q = glm::normalize(glm::vec4(gauss(rng), gauss(rng), gauss(rng), gauss(rng)));
+    const Frame frame = quaternionToFrame(q);
+    const glm::vec3 position{gauss(rng) * 30.0f, gauss(rng) * 1e-3f, -gauss(rng) * 1e4f};
+    const PackedNode node = packNode(position, frame);
+    ASSERT_EQ(nodePosition(node), position);  // bit for bit
+    const Frame back = nodeFrame(node);
+    for (const auto& [a, b] : {std::pair{frame.normal, back.normal}, {frame.binormal, back.binormal},
+                               {frame.tangent, back.tangent}})
+      worstAngle = std::max(worstAngle, std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f)));
+    ASSERT_EQ(packQuaternion(q), packQuaternion(-q));  // one code per rotation
+  }
+  EXPECT_LT(worstAngle, 0.2f * kPi / 180.0f);  // the bound docs/NOODLES.md quotes
+  EXPECT_GT(worstAngle, 0.0f);                 // it is lossy: the test would notice a float store
+}
+
+TEST(NoodlesPacking, SegmentCostsAtMostThirtyTwoBytes) {
+  for (uint32_t segments : {1u, 2u, 8u, 64u, 4096u})
+    EXPECT_LE(double(kNodeBytes) * (segments + 1) / segments, 32.0) << segments;
+  EXPECT_EQ(nodeSlot(100, 7, 3), 307u);  // node-major inside a chunk
+}
+
+// --------------------------------------------------------------------------------------- the plan
+
+DeviceBudget lavapipeLikeBudget() {
+  DeviceBudget b;
+  b.deviceName = "test device";
+  b.maxStorageBufferRange = 128ull << 20;
+  b.storageOffsetAlignment = 64;
+  b.maxBufferSize = 2ull << 30;
+  b.deviceLocalHeap = 2ull << 30;
+  b.maxGroupCountX = b.maxGroupCountY = 65535;
+  return b;
+}
+
+TEST(NoodlesLayout, TenMillionSegmentsSplitIntoAlignedChunks) {
+  const DeviceBudget budget = lavapipeLikeBudget();
+  const StrandLayout layout = planStrands({50, 50, 50}, 80, budget);
+  EXPECT_EQ(layout.segmentCount, 10'000'000u);
+  EXPECT_EQ(layout.bytes, 125000ull * 81 * 16);
+  ASSERT_GT(layout.chunks.size(), 1u);
+  uint64_t strands = 0;
+  for (const StrandChunk& chunk : layout.chunks) {
+    EXPECT_EQ(chunk.firstStrand, strands);
+    EXPECT_EQ(chunk.offset, strands * layout.strandBytes);
+    EXPECT_EQ(chunk.offset % budget.storageOffsetAlignment, 0u);
+    EXPECT_LE(chunk.bytes, budget.maxStorageBufferRange);
+    EXPECT_GE(uint64_t(chunk.groupsX) * chunk.groupsY * kIntegrateGroupSize, chunk.strandCount);
+    strands += chunk.strandCount;
+  }
+  EXPECT_EQ(strands, layout.strands);
+}
+
+TEST(NoodlesLayout, OneChunkWhenTheRangeAllows) {
+  DeviceBudget budget = lavapipeLikeBudget();
+  budget.maxStorageBufferRange = 0xffffffffull;
+  EXPECT_EQ(planStrands({16, 16, 16}, 64, budget).chunks.size(), 1u);
+}
+
+TEST(NoodlesLayout, RefusesWhatTheDeviceCannotHoldWithAReason) {
+  const DeviceBudget budget = lavapipeLikeBudget();
+  const auto message = [&](glm::uvec3 grid, uint32_t segments) {
+    try {
+      planStrands(grid, segments, budget);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message({400, 400, 400}, 64).find("at most"), std::string::npos);           // > int32 instances
+  EXPECT_NE(message({300, 300, 10}, 200).find("allows one buffer"), std::string::npos);  // > maxBufferSize
+  EXPECT_NE(message({200, 200, 44}, 64).find("device memory"), std::string::npos);       // > 3/4 of the heap
+  DeviceBudget narrow = budget;
+  narrow.maxStorageBufferRange = 1024;
+  EXPECT_THROW(planStrands({2, 2, 2}, 100, narrow), Error);  // one strand exceeds a binding
+  EXPECT_EQ(message({16, 16, 16}, 64), "accepted");
+}
+
+// -------------------------------------------------------------------------------------- parameters
+
+TEST(NoodlesSettings, GridForms) {
+  glm::uvec3 grid;
+  std::string error;
+  ASSERT_TRUE(parseGrid("16", grid, &error));
+  EXPECT_EQ(grid, glm::uvec3(16));
+  ASSERT_TRUE(parseGrid("64x32", grid, &error));
+  EXPECT_EQ(grid, glm::uvec3(64, 32, 1));
+  ASSERT_TRUE(parseGrid("3x4x5", grid, &error));
+  EXPECT_EQ(grid, glm::uvec3(3, 4, 5));
+  for (const char* bad : {"", "0", "4x", "x4", "1x2x3x4", "-3", "5000", "4y4"}) EXPECT_FALSE(parseGrid(bad, grid, &error)) << bad;
+}
+
+TEST(NoodlesSettings, EveryNamedParameterParses) {
+  NoodleSettings s;
+  std::string error;
+  EXPECT_TRUE(applyParameter(s, "frames", "up", &error));
+  EXPECT_EQ(s.frames, FrameMethod::Up);
+  EXPECT_TRUE(applyParameter(s, "integrator", "rk4", &error));
+  EXPECT_EQ(s.integrator, Integrator::Rk4);
+  EXPECT_TRUE(applyParameter(s, "msaa", "off", &error));
+  EXPECT_FALSE(s.msaa);
+  EXPECT_FALSE(applyParameter(s, "field", "gradient", &error));
+  EXPECT_NE(error.find("curl"), std::string::npos);
+  EXPECT_FALSE(applyParameter(s, "step", "2", &error));
+  EXPECT_FALSE(applyParameter(s, "nonsense", "1", &error));
+  float orbit[3];
+  EXPECT_TRUE(parseOrbit("0.5,-0.2,3", orbit, &error));
+  EXPECT_FLOAT_EQ(orbit[2], 3.0f);
+  EXPECT_FALSE(parseOrbit("0.5,-0.2", orbit, &error));
+}
+
+// ------------------------------------------------------------------------------- camera and colour
+
+TEST(NoodlesCamera, InfiniteReverseZ) {
+  const glm::mat4 projection = reverseZPerspective(0.7f, 16.0f / 9.0f, 0.25f);
+  const auto depthAt = [&](float distance) {
+    const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
+    EXPECT_GT(clip.w, 0.0f);
+    return clip.z / clip.w;
+  };
+  EXPECT_NEAR(depthAt(0.25f), 1.0f, 1e-6f);  // the near plane is depth 1
+  EXPECT_GT(depthAt(1.0f), depthAt(2.0f));   // nearer is greater: compare op GREATER
+  EXPECT_GT(depthAt(1e7f), 0.0f);            // no far plane
+  EXPECT_LT(depthAt(1e7f), 1e-6f);
+  // World z up lands at the top of a Vulkan framebuffer (negative clip y).
+  const glm::vec4 above = projection * lookAtZUp({5, 0, 0}, {0, 0, 0}) * glm::vec4(0, 0, 1, 1);
+  EXPECT_LT(above.y, 0.0f);
+}
+
+TEST(NoodlesCamera, LookAtMatchesGlm) {
+  const glm::vec3 eye{3.0f, -2.0f, 1.5f}, target{0.2f, 0.1f, -0.3f};
+  const glm::mat4 ours = lookAtZUp(eye, target), theirs = glm::lookAtRH(eye, target, glm::vec3(0, 0, 1));
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(ours[c][r], theirs[c][r], 1e-5f);
+}
+
+TEST(NoodlesCamera, FlightGoesInAndOutButNeverOntoTheTarget) {
+  constexpr float nest = 4.0f;
+  float nearest = 1e9f, farthest = 0.0f;
+  for (double t = 0.0; t < 600.0; t += 0.25) {
+    const CameraPose pose = lissajousPose(t, nest);
+    const float distance = glm::length(pose.eye);
+    nearest = std::min(nearest, distance), farthest = std::max(farthest, distance);
+    ASSERT_GT(glm::length(pose.eye - pose.target), 0.2f * nest) << t;
+    const glm::vec3 view = glm::normalize(pose.target - pose.eye);
+    ASSERT_LT(std::fabs(view.z), 0.95f) << t;  // never looking straight up or down
+  }
+  EXPECT_LT(nearest, 0.5f * nest);  // inside the nest
+  EXPECT_GT(farthest, 2.4f * nest); // and well outside it
+}
+
+TEST(NoodlesCamera, OrbitStartsWhereTheFlightIs) {
+  const glm::vec3 centre{0.0f, 0.0f, 1.0f};
+  CameraPose flight = lissajousPose(12.0, 3.0f);
+  flight.eye += centre;
+  const CameraPose orbit = orbitPose(orbitThrough(flight, centre), centre);
+  EXPECT_LT(glm::length(orbit.eye - flight.eye), 1e-4f);
+}
+
+TEST(NoodlesPalette, HsvPrimariesAndGradientEnds) {
+  EXPECT_LT(glm::length(hsvToRgb({0.0f, 1.0f, 1.0f}) - glm::vec3(1, 0, 0)), 1e-6f);
+  EXPECT_LT(glm::length(hsvToRgb({1.0f / 3.0f, 1.0f, 1.0f}) - glm::vec3(0, 1, 0)), 1e-5f);
+  EXPECT_LT(glm::length(hsvToRgb({2.0f / 3.0f, 1.0f, 0.5f}) - glm::vec3(0, 0, 0.5f)), 1e-5f);
+  EXPECT_EQ(hsvToRgb({0.3f, 0.0f, 0.8f}), glm::vec3(0.8f));
+  EXPECT_EQ(strandColour(0, 100, Colouring::Gradient), kGradientFirst);
+  EXPECT_EQ(strandColour(99, 100, Colouring::Gradient), kGradientLast);
+  EXPECT_NE(strandColour(10, 100, Colouring::Hsv), strandColour(60, 100, Colouring::Hsv));
+}
+
+}  // namespace
+}  // namespace vitrine::noodles
