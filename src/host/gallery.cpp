@@ -1,6 +1,246 @@
+// The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
+// screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
 #include "gpu/check.h"
+#include "host/cursor_tracker.h"
+#include "host/fixed_step.h"
+#include "host/frame_slot.h"
+#include "host/menu.h"
 #include "host/modes.h"
+#include "host/overlay.h"
+#include "host/scene_renderer.h"
+#include "host/screenshot.h"
+#include "host/swapchain.h"
+#include "host/window.h"
+
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace vitrine::host {
-int runGallery(const Options&) { throw Error("The windowed gallery is not built yet."); }
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr uint32_t kFramesInFlight = 2;
+constexpr int kMaxCatchUpSteps = 4;
+constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
+// The scene renderer's present (compute) or blit (transfer) is the first use of an acquired image,
+// so that is where the acquire is waited for.
+constexpr VkPipelineStageFlags2 kAcquireStage =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+constexpr gpu::ImageUse kAcquired{kAcquireStage, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED};
+
+const SceneInfo& initialScene(const std::string& name) {
+  if (name.empty()) return sceneRegistry().front();
+  if (const SceneInfo* info = findScene(name)) return *info;
+  throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", name));
+}
+
+const SceneInfo* sceneForKey(int key) {
+  for (const auto& info : sceneRegistry())
+    if (key == GLFW_KEY_0 + info.key) return &info;
+  return nullptr;
+}
+
+double secondsBetween(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+class Gallery {
+ public:
+  Gallery(const Options& options, const SceneInfo& firstScene);
+  ~Gallery() { vkDeviceWaitIdle(device_); }  // also when leaving by an exception, with frames in flight
+  Gallery(const Gallery&) = delete;
+  Gallery& operator=(const Gallery&) = delete;
+  int run();
+
+ private:
+  void frame();
+  void handleKeys();
+  void switchScene(const SceneInfo& info);
+  void simulate();
+  void collect(uint32_t slot);
+  void showMenu();
+  void pollShaders();
+
+  Window window_;
+  gpu::Instance instance_;
+  Surface surface_;
+  gpu::Device device_;
+  gpu::ProgramLibrary programs_;
+  SceneRenderer renderer_;
+  Swapchain swapchain_;
+  Overlay overlay_;
+  Screenshots screenshots_;
+  std::vector<FrameSlot> slots_;
+  uint64_t frameCount_ = 0;
+
+  FrameInput input_;  // the next simulation step's
+  FrameInput shown_;  // the last step's: what the frame being recorded shows
+  FixedStep steps_;   // after input_, whose dt it is built from
+  CursorTracker cursor_;
+  std::vector<int> keys_;  // pressed since the last step
+
+  bool vsync_;
+  bool uiHidden_ = false;
+  const SceneInfo* nextScene_ = nullptr;
+  Clock::time_point lastFrame_ = Clock::now();
+  Clock::time_point lastShaderPoll_ = Clock::now();
+  double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
+  double cpuMs_ = 0.0;
+  std::vector<gpu::PassTime> passes_;
+  std::string screenshotNote_;
+};
+
+Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
+    : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen),
+      instance_({options.validation, window_.vulkanExtensions()}),
+      surface_(window_.createSurface(instance_.handle())),
+      device_(instance_, {options.device, surface_.handle()}),
+      programs_(device_),
+      renderer_(device_, programs_, kFramesInFlight),
+      swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
+      overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight),
+      screenshots_(device_, kFramesInFlight, "screenshots"),
+      steps_(input_.dt, kMaxCatchUpSteps),
+      vsync_(options.vsync) {
+  overlay_.attach(swapchain_);
+  for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
+  input_.seed = options.seed;
+  input_.reducedMotion = options.reducedMotion;
+  switchScene(firstScene);
+}
+
+int Gallery::run() {
+  while (!window_.shouldClose()) {
+    window_.pollEvents();
+    if (window_.hidden()) {
+      window_.waitWhileHidden();
+      lastFrame_ = Clock::now();  // time spent minimised is not simulated
+      continue;
+    }
+    handleKeys();
+    frame();
+  }
+  device_.waitIdle();
+  for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
+    if (auto note = screenshots_.collect(slot)) std::printf("%s\n", note->c_str());
+  if (instance_.validationMessages() > 0) {
+    std::fprintf(stderr, "%d validation messages: failing.\n", instance_.validationMessages());
+    return 3;
+  }
+  return 0;
+}
+
+void Gallery::handleKeys() {
+  const std::vector<int> keys = window_.takeKeys();
+  if (overlay_.wantsText()) return;  // typed into a text field, not commands
+  for (int key : keys) {
+    switch (key) {
+      case GLFW_KEY_ESCAPE: window_.close(); break;
+      case GLFW_KEY_TAB: uiHidden_ = !uiHidden_; break;
+      case GLFW_KEY_V: vsync_ = !vsync_; break;
+      case GLFW_KEY_F11: window_.toggleFullscreen(); break;
+      case GLFW_KEY_F12: screenshots_.request(); break;
+      default:
+        if (const SceneInfo* info = sceneForKey(key)) nextScene_ = info;
+    }
+  }
+  keys_.insert(keys_.end(), keys.begin(), keys.end());
+}
+
+void Gallery::switchScene(const SceneInfo& info) {
+  device_.waitIdle();  // the old scene's resources may still be in use by frames in flight
+  renderer_.setScene(info);
+  input_.frame = 0;
+  input_.time = 0.0;
+  steps_.restart();
+  window_.setTitle(fmt::format("Vitrine — {}", info.title));
+}
+
+void Gallery::frame() {
+  if (nextScene_) switchScene(*std::exchange(nextScene_, nullptr));
+  if (const VkExtent2D size = window_.framebufferSize(); !swapchain_.fits(size, vsync_)) {
+    swapchain_.recreate(size, vsync_);
+    overlay_.attach(swapchain_);
+  }
+  const uint32_t slot = uint32_t(frameCount_ % kFramesInFlight);
+  FrameSlot& current = slots_[slot];
+  current.wait();
+  collect(slot);
+  const auto image = swapchain_.acquire(current.imageAcquired());
+  if (!image) return;  // out of date: rebuilt at the start of the next frame
+
+  const auto start = Clock::now();
+  overlay_.beginFrame();  // first: its view of this frame's clicks decides which belong to the scene
+  simulate();
+  showMenu();
+  VkCommandBuffer cmd = current.begin();
+  const bool compute = swapchain_.computeWrites();
+  renderer_.record(cmd, slot, shown_,
+                   BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
+                                   compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute});
+  screenshots_.record(cmd, slot, renderer_.target(), renderer_.info().name, &renderer_.timer());
+  overlay_.record(cmd, *image, &renderer_.timer());
+  current.submit(kAcquireStage, swapchain_.renderFinished(*image));
+  cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
+  swapchain_.present(*image);
+  ++frameCount_;
+  pollShaders();
+}
+
+// What the GPU has finished for this slot: its pass timings, and a screenshot taken in it.
+void Gallery::collect(uint32_t slot) {
+  passes_ = renderer_.timer().collect(slot);
+  input_.lastGpuMs = 0.0;
+  for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
+  if (auto note = screenshots_.collect(slot)) screenshotNote_ = std::move(*note);
+}
+
+void Gallery::simulate() {
+  const auto now = Clock::now();
+  const double elapsed = secondsBetween(lastFrame_, now);
+  lastFrame_ = now;
+  frameSeconds_ += (elapsed - frameSeconds_) * 0.05;
+  cursor_.observe(window_.takePointer(), !uiHidden_ && overlay_.wantsMouse());
+  for (int due = steps_.advance(elapsed); due > 0; --due) {
+    input_.cursor = cursor_.take();
+    input_.keysPressed = std::exchange(keys_, {});
+    renderer_.scene().update(input_);
+    shown_ = input_;
+    input_.time += input_.dt;
+    ++input_.frame;
+  }
+}
+
+void Gallery::showMenu() {
+  if (uiHidden_) return;
+  const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
+  const MenuChoice choice = drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_,
+                                               programs_.error(), screenshotNote_});
+  vsync_ = choice.vsync;
+  if (choice.scene) nextScene_ = choice.scene;
+}
+
+// Shader sources are polled a couple of times a second: often enough to feel live, rarely enough
+// that the file-system checks cost nothing.
+void Gallery::pollShaders() {
+  const auto now = Clock::now();
+  if (now - lastShaderPoll_ < kShaderPollInterval) return;
+  lastShaderPoll_ = now;
+  programs_.reloadChanged();
+}
+
+}  // namespace
+
+int runGallery(const Options& options) {
+  const SceneInfo& firstScene = initialScene(options.scene);  // a typo fails before a window opens
+  return Gallery(options, firstScene).run();
+}
+
 }  // namespace vitrine::host

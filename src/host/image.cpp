@@ -1,8 +1,20 @@
 #include "host/image.h"
 
+#include <Imath/half.h>
+
 #include <cmath>
 
 namespace vitrine {
+
+ImageRgba imageFromHalves(uint32_t width, uint32_t height, std::span<const uint16_t> halves) {
+  ImageRgba image{width, height, std::vector<float>(size_t(width) * height * 4)};
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    half h;
+    h.setBits(halves[i]);
+    image.pixels[i] = float(h);
+  }
+  return image;
+}
 
 float linearToSrgb(float linear) {
   if (!(linear > 0.0f)) return 0.0f;

@@ -1,0 +1,27 @@
+#pragma once
+// What one frame in flight owns, so the CPU can record a frame while the GPU still runs the previous
+// one: a command pool and buffer, the fence that says the GPU is done with them, and the semaphore
+// its swapchain image is acquired with (free again once that fence has signalled).
+#include "gpu/device.h"
+
+namespace vitrine::host {
+
+class FrameSlot {
+ public:
+  FrameSlot(const gpu::Device& device, uint32_t index);
+
+  void wait() const;  // until the GPU has finished this slot's last frame
+  VkSemaphore imageAcquired() const { return imageAcquired_; }
+  VkCommandBuffer begin();  // recycles the slot's commands: only after wait()
+  // Runs the recorded frame once the image is acquired; signals renderFinished for presentation.
+  void submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished);
+
+ private:
+  const gpu::Device* device_;
+  gpu::Unique<VkCommandPool> pool_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;  // freed with the pool
+  gpu::Unique<VkFence> done_;
+  gpu::Unique<VkSemaphore> imageAcquired_;
+};
+
+}  // namespace vitrine::host

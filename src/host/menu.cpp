@@ -1,0 +1,68 @@
+#include "host/menu.h"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+namespace vitrine::host {
+namespace {
+
+const ImVec4 kErrorRed{1.0f, 0.35f, 0.3f, 1.0f};
+
+void drawTimings(const MenuState& state) {
+  double gpuMs = 0.0;
+  for (const auto& pass : state.passes) gpuMs += pass.ms;
+  ImGui::Text("%.1f fps   CPU %.2f ms   GPU %.2f ms", state.fps, state.cpuMs, gpuMs);
+  if (!ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  for (const auto& pass : state.passes) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(pass.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%7.3f ms", pass.ms);
+  }
+  ImGui::EndTable();
+}
+
+const SceneInfo* drawSceneList(const SceneInfo& current) {
+  const SceneInfo* chosen = nullptr;
+  for (const auto& info : sceneRegistry()) {
+    const std::string label = fmt::format("{}  {}", info.key, info.title);
+    if (ImGui::Selectable(label.c_str(), &info == &current)) chosen = &info;
+  }
+  return chosen;
+}
+
+void drawWrapped(std::string_view text) {
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+  ImGui::TextUnformatted(text.data(), text.data() + text.size());
+  ImGui::PopTextWrapPos();
+}
+
+}  // namespace
+
+MenuChoice drawMenu(const MenuState& state) {
+  MenuChoice choice{nullptr, state.vsync};
+  ImGui::SetNextWindowPos(ImVec2(12.0f, 12.0f), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Vitrine", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    drawTimings(state);
+    ImGui::Checkbox("vsync (V)", &choice.vsync);
+    ImGui::Separator();
+    choice.scene = drawSceneList(state.current);
+    const std::string header = fmt::format("{}###scene panel", state.current.title);
+    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) state.scene.drawPanel();
+    if (!state.shaderError.empty()) {
+      ImGui::Separator();
+      ImGui::PushStyleColor(ImGuiCol_Text, kErrorRed);
+      ImGui::TextUnformatted("Shader reload failed; the previous pipeline is kept:");
+      drawWrapped(state.shaderError);
+      ImGui::PopStyleColor();
+    }
+    if (!state.screenshot.empty()) drawWrapped(state.screenshot);
+    ImGui::Separator();
+    ImGui::TextDisabled("1-9 scene  Tab hide UI  F11 fullscreen  F12 screenshot  Esc quit");
+  }
+  ImGui::End();
+  return choice;
+}
+
+}  // namespace vitrine::host

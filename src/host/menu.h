@@ -1,0 +1,30 @@
+#pragma once
+// The gallery's menu: scenes, timings, vsync, the current scene's own panel, and what went wrong.
+// It only draws and reports what was chosen; the frame loop decides what a choice changes.
+#include "gpu/pass_timer.h"
+#include "scenes/scene.h"
+
+#include <span>
+#include <string_view>
+
+namespace vitrine::host {
+
+struct MenuState {
+  const SceneInfo& current;
+  Scene& scene;
+  double fps = 0.0;
+  double cpuMs = 0.0;
+  std::span<const gpu::PassTime> passes;  // the last finished frame's
+  bool vsync = true;
+  std::string_view shaderError;  // the hot-reload compile log; empty when all shaders compile
+  std::string_view screenshot;   // where the last screenshot went
+};
+
+struct MenuChoice {
+  const SceneInfo* scene = nullptr;  // a scene to start afresh (the current one restarts)
+  bool vsync = true;
+};
+
+MenuChoice drawMenu(const MenuState& state);
+
+}  // namespace vitrine::host

@@ -1,0 +1,48 @@
+#pragma once
+// Dear ImGui drawn over the presented image. Debian's ImGui 1.86 Vulkan backend predates dynamic
+// rendering, so the overlay has a small render pass of its own: it loads what the scene renderer wrote
+// into the swapchain image, draws the widgets and leaves the image ready to present.
+#include "gpu/device.h"
+#include "gpu/pass_timer.h"
+
+#include <vector>
+
+struct GLFWwindow;
+
+namespace vitrine::host {
+
+class Swapchain;
+
+class Overlay {
+ public:
+  // `format` is the swapchain's; it must stay the same for the overlay's lifetime.
+  Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight);
+
+  void attach(const Swapchain& swapchain);  // framebuffers over its current images
+  void beginFrame();                        // widgets may be drawn from here until record()
+  // Draws the widgets into swapchain image `image`, which the scene renderer left as a colour attachment.
+  void record(VkCommandBuffer cmd, uint32_t image, gpu::PassTimer* timer);
+
+  bool wantsMouse() const;  // the pointer is over, or dragging, a widget
+  bool wantsText() const;   // a text field has the keyboard
+
+ private:
+  struct Context {  // the ImGui context and its GLFW backend
+    explicit Context(GLFWwindow* window);
+    ~Context();
+  };
+  struct Renderer {  // the ImGui Vulkan backend, shut down before the render pass and pool it uses
+    Renderer(const gpu::Device& device, VkDescriptorPool pool, VkRenderPass renderPass, uint32_t framesInFlight);
+    ~Renderer();
+  };
+
+  const gpu::Device& device_;
+  gpu::Unique<VkDescriptorPool> pool_;
+  gpu::Unique<VkRenderPass> renderPass_;
+  std::vector<gpu::Unique<VkFramebuffer>> framebuffers_;
+  VkExtent2D extent_{};
+  Context context_;
+  Renderer renderer_;
+};
+
+}  // namespace vitrine::host

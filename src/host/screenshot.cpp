@@ -1,0 +1,72 @@
+#include "host/screenshot.h"
+
+#include "gpu/barriers.h"
+#include "host/image_io.h"
+
+#include <fmt/format.h>
+
+#include <ctime>
+#include <utility>
+
+namespace vitrine::host {
+namespace {
+
+std::string stemFor(std::string_view scene) {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  return fmt::format("vitrine-{}-{}", scene, stamp);
+}
+
+}  // namespace
+
+Screenshots::Screenshots(const gpu::Device& device, uint32_t framesInFlight, std::filesystem::path folder)
+    : device_(device), folder_(std::move(folder)), pending_(framesInFlight) {}
+
+void Screenshots::record(VkCommandBuffer cmd, uint32_t slot, const gpu::Image& target, std::string_view scene,
+                         gpu::PassTimer* timer) {
+  if (!requested_) return;
+  requested_ = false;
+  const VkExtent2D extent = target.extent2d();
+  gpu::Pass pass(device_, timer, cmd, "screenshot copy");
+  Pending shot{gpu::Buffer(device_, VkDeviceSize(extent.width) * extent.height * 4 * sizeof(uint16_t),
+                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "screenshot readback"),
+               extent, stemFor(scene)};
+  // Only reads follow the renderer's barrier to TRANSFER_SRC, so none is needed before this one.
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {extent.width, extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, target.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shot.pixels.handle(), 1, &region);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  pending_[slot] = std::move(shot);
+}
+
+std::optional<std::string> Screenshots::collect(uint32_t slot) {
+  if (!pending_[slot]) return std::nullopt;
+  const Pending shot = std::move(*pending_[slot]);
+  pending_[slot].reset();
+  try {
+    return write(shot);
+  } catch (const std::exception& e) {  // a full disk should not end the session
+    return fmt::format("screenshot failed: {}", e.what());
+  }
+}
+
+std::string Screenshots::write(const Pending& shot) const {
+  shot.pixels.invalidate();
+  const ImageRgba image = imageFromHalves(shot.extent.width, shot.extent.height, shot.pixels.view<const uint16_t>());
+  std::filesystem::create_directories(folder_);
+  // Two screenshots within a second would share a name; the later one gets a number instead.
+  std::filesystem::path base = folder_ / shot.stem;
+  for (int n = 2; std::filesystem::exists(base.string() + ".exr"); ++n)
+    base = folder_ / fmt::format("{}-{}", shot.stem, n);
+  writeImage(base.string() + ".exr", image);
+  if (!canWritePng()) return fmt::format("saved {}.exr", base.string());
+  writeImage(base.string() + ".png", image);
+  return fmt::format("saved {}.{{exr,png}}", base.string());
+}
+
+}  // namespace vitrine::host

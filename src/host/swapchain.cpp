@@ -1,0 +1,175 @@
+#include "host/swapchain.h"
+
+#include "gpu/check.h"
+#include "host/vk_objects.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <span>
+
+namespace vitrine::host {
+namespace {
+
+// Every swapchain image ends in the overlay's render pass.
+constexpr VkImageUsageFlags kBlitUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+constexpr VkImageUsageFlags kComputeUsage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+constexpr VkFormatFeatureFlags kBlitFeatures = VK_FORMAT_FEATURE_BLIT_DST_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+constexpr VkFormatFeatureFlags kComputeFeatures =
+    VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+constexpr VkFormat kUnormFormats[] = {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM};
+constexpr VkFormat kSrgbFormats[] = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB,
+                                     VK_FORMAT_A8B8G8R8_SRGB_PACK32};
+
+// The first of `wanted` the surface offers, in the sRGB colour space, with `features` on this device.
+std::optional<VkSurfaceFormatKHR> findFormat(const gpu::Device& device, const std::vector<VkSurfaceFormatKHR>& offered,
+                                             std::span<const VkFormat> wanted, VkFormatFeatureFlags features) {
+  for (VkFormat format : wanted) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device.physical(), format, &properties);
+    if ((properties.optimalTilingFeatures & features) != features) continue;
+    for (const auto& candidate : offered)
+      if (candidate.format == format && candidate.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return candidate;
+  }
+  return std::nullopt;
+}
+
+VkCompositeAlphaFlagBitsKHR compositeAlpha(VkCompositeAlphaFlagsKHR supported) {
+  for (auto mode : {VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR, VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR,
+                    VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR, VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR})
+    if (supported & mode) return mode;
+  return VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+}
+
+}  // namespace
+
+Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, VkExtent2D framebuffer, bool vsync)
+    : device_(device), surface_(surface), presentation_(choosePresentation(device, surface)) {
+  build(framebuffer, vsync);
+}
+
+// Compute first: on compute-first GPUs a 4K blit costs as much as a whole scene.
+Swapchain::Presentation Swapchain::choosePresentation(const gpu::Device& device, VkSurfaceKHR surface) {
+  VkSurfaceCapabilitiesKHR caps;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(device.physical(), surface, &caps));
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical(), surface, &count, nullptr));
+  std::vector<VkSurfaceFormatKHR> offered(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical(), surface, &count, offered.data()));
+  const auto supports = [&](VkImageUsageFlags usage) { return (caps.supportedUsageFlags & usage) == usage; };
+  if (device.storageWriteWithoutFormat() && supports(kComputeUsage))
+    if (auto format = findFormat(device, offered, kUnormFormats, kComputeFeatures))
+      return {*format, kComputeUsage, true};
+  if (supports(kBlitUsage))
+    if (auto format = findFormat(device, offered, kSrgbFormats, kBlitFeatures)) return {*format, kBlitUsage, false};
+  throw Error("The window surface offers neither a storage-capable UNORM format nor an 8-bit sRGB format that can "
+              "be blitted to; Vitrine cannot present to it.");
+}
+
+bool Swapchain::fits(VkExtent2D framebuffer, bool vsync) const {
+  return !stale_ && vsync == vsync_ && framebuffer.width == builtFor_.width && framebuffer.height == builtFor_.height;
+}
+
+void Swapchain::recreate(VkExtent2D framebuffer, bool vsync) {
+  device_.waitIdle();  // frames in flight still use the old images and semaphores
+  build(framebuffer, vsync);
+}
+
+VkPresentModeKHR Swapchain::presentMode(bool vsync) const {
+  if (vsync) return VK_PRESENT_MODE_FIFO_KHR;  // the one mode every driver has
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physical(), surface_, &count, nullptr));
+  std::vector<VkPresentModeKHR> modes(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physical(), surface_, &count, modes.data()));
+  // Mailbox shows the newest frame without tearing; immediate is the fallback that may tear.
+  for (auto wanted : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+    if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) return wanted;
+  return VK_PRESENT_MODE_FIFO_KHR;
+}
+
+void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
+  VkSurfaceCapabilitiesKHR caps;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(device_.physical(), surface_, &caps));
+  // 0xFFFFFFFF means the surface takes its size from the swapchain, i.e. from the framebuffer.
+  extent_ = caps.currentExtent.width != UINT32_MAX
+                ? caps.currentExtent
+                : VkExtent2D{std::clamp(framebuffer.width, caps.minImageExtent.width, caps.maxImageExtent.width),
+                             std::clamp(framebuffer.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+  // One image more than the minimum, so acquiring rarely waits on the presentation engine.
+  uint32_t imageCount = caps.minImageCount + 1;
+  if (caps.maxImageCount > 0) imageCount = std::min(imageCount, caps.maxImageCount);
+
+  VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+  info.surface = surface_;
+  info.minImageCount = imageCount;
+  info.imageFormat = presentation_.format.format;
+  info.imageColorSpace = presentation_.format.colorSpace;
+  info.imageExtent = extent_;
+  info.imageArrayLayers = 1;
+  info.imageUsage = presentation_.usage;
+  info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.preTransform = caps.currentTransform;
+  info.compositeAlpha = compositeAlpha(caps.supportedCompositeAlpha);
+  info.presentMode = presentMode(vsync);
+  info.clipped = VK_TRUE;
+  info.oldSwapchain = swapchain_;
+  VkSwapchainKHR swapchain;
+  VK_CHECK(vkCreateSwapchainKHR(device_, &info, nullptr, &swapchain));
+  swapchain_ = gpu::Unique<VkSwapchainKHR>(device_, swapchain);  // retires and destroys the old one
+  device_.name(swapchain, VK_OBJECT_TYPE_SWAPCHAIN_KHR, "swapchain");
+
+  uint32_t count = 0;
+  VK_CHECK(vkGetSwapchainImagesKHR(device_, swapchain, &count, nullptr));
+  images_.resize(count);
+  VK_CHECK(vkGetSwapchainImagesKHR(device_, swapchain, &count, images_.data()));
+  views_.clear();
+  renderFinished_.clear();
+  for (uint32_t i = 0; i < count; ++i) {
+    device_.name(images_[i], VK_OBJECT_TYPE_IMAGE, fmt::format("swapchain image {}", i));
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = images_[i];
+    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = presentation_.format.format;
+    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView view;
+    VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view));
+    device_.name(view, VK_OBJECT_TYPE_IMAGE_VIEW, fmt::format("swapchain view {}", i));
+    views_.emplace_back(device_, view);
+    renderFinished_.push_back(createSemaphore(device_, fmt::format("render finished {}", i)));
+  }
+  builtFor_ = framebuffer;
+  vsync_ = vsync;
+  stale_ = false;
+}
+
+std::optional<uint32_t> Swapchain::acquire(VkSemaphore acquired) {
+  uint32_t index = 0;
+  const VkResult result = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, acquired, VK_NULL_HANDLE, &index);
+  if (result == VK_ERROR_OUT_OF_DATE_KHR) {
+    stale_ = true;
+    return std::nullopt;
+  }
+  VK_CHECK(result);
+  // Suboptimal still signals the semaphore, so this frame is drawn and the swapchain rebuilt after it.
+  if (result == VK_SUBOPTIMAL_KHR) stale_ = true;
+  return index;
+}
+
+void Swapchain::present(uint32_t image) {
+  VkSwapchainKHR swapchain = swapchain_;
+  VkSemaphore wait = renderFinished_[image];
+  VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+  info.waitSemaphoreCount = 1;
+  info.pWaitSemaphores = &wait;
+  info.swapchainCount = 1;
+  info.pSwapchains = &swapchain;
+  info.pImageIndices = &image;
+  const VkResult result = vkQueuePresentKHR(device_.queue(), &info);
+  if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) {
+    stale_ = true;
+    return;
+  }
+  VK_CHECK(result);
+}
+
+}  // namespace vitrine::host

@@ -1,0 +1,131 @@
+#include "host/window.h"
+
+#include "gpu/check.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include <utility>
+
+namespace vitrine::host {
+namespace {
+
+std::string glfwReason() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "no reason given";
+}
+
+Window& owner(GLFWwindow* window) { return *static_cast<Window*>(glfwGetWindowUserPointer(window)); }
+
+}  // namespace
+
+Surface::Surface(Surface&& other) noexcept
+    : instance_(other.instance_), surface_(std::exchange(other.surface_, VK_NULL_HANDLE)) {}
+
+Surface::~Surface() {
+  if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+}
+
+Window::Glfw::Glfw() {
+  if (!glfwInit())
+    throw Error(fmt::format("Cannot open a window ({}); run vitrine --headless to render without a display.",
+                            glfwReason()));
+}
+
+Window::Glfw::~Glfw() { glfwTerminate(); }
+
+Window::Window(VkExtent2D size, bool fullscreen) {
+  if (!glfwVulkanSupported())
+    throw Error("GLFW found no Vulkan loader for windows; install libvulkan1, or use --headless.");
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  window_ = glfwCreateWindow(int(size.width), int(size.height), "Vitrine", nullptr, nullptr);
+  if (!window_) throw Error(fmt::format("Cannot create the gallery window: {}.", glfwReason()));
+  // Set before Dear ImGui installs its callbacks, which then forward every event here as well.
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, &Window::onKey);
+  glfwSetMouseButtonCallback(window_, &Window::onMouseButton);
+  glfwSetScrollCallback(window_, &Window::onScroll);
+  if (fullscreen) toggleFullscreen();
+}
+
+Window::~Window() { glfwDestroyWindow(window_); }
+
+std::vector<const char*> Window::vulkanExtensions() const {
+  uint32_t count = 0;
+  const char** names = glfwGetRequiredInstanceExtensions(&count);
+  if (!names) throw Error(fmt::format("This display cannot show Vulkan windows: {}.", glfwReason()));
+  return {names, names + count};
+}
+
+Surface Window::createSurface(VkInstance instance) const {
+  VkSurfaceKHR surface;
+  VK_CHECK(glfwCreateWindowSurface(instance, window_, nullptr, &surface));
+  return Surface(instance, surface);
+}
+
+void Window::pollEvents() { glfwPollEvents(); }
+
+bool Window::hidden() const {
+  const VkExtent2D size = framebufferSize();
+  return size.width == 0 || size.height == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
+}
+
+void Window::waitWhileHidden() const {
+  while (!shouldClose() && hidden()) glfwWaitEvents();
+}
+
+bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
+
+void Window::close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+VkExtent2D Window::framebufferSize() const {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  return {uint32_t(width), uint32_t(height)};
+}
+
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void Window::toggleFullscreen() {
+  if (glfwGetWindowMonitor(window_)) {
+    glfwSetWindowMonitor(window_, nullptr, windowedX_, windowedY_, windowedWidth_, windowedHeight_, GLFW_DONT_CARE);
+    return;
+  }
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!monitor) return;
+  glfwGetWindowPos(window_, &windowedX_, &windowedY_);
+  glfwGetWindowSize(window_, &windowedWidth_, &windowedHeight_);
+  const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+  glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
+std::vector<int> Window::takeKeys() { return std::exchange(keys_, {}); }
+
+Pointer Window::takePointer() {
+  double x = 0.0, y = 0.0;
+  int width = 0, height = 0;
+  glfwGetCursorPos(window_, &x, &y);
+  glfwGetWindowSize(window_, &width, &height);
+  const VkExtent2D framebuffer = framebufferSize();
+  // GLFW reports the cursor in screen coordinates; on HiDPI displays a framebuffer pixel is smaller.
+  glm::vec2 scale(1.0f);
+  if (width > 0 && height > 0) scale = glm::vec2(framebuffer.width, framebuffer.height) / glm::vec2(width, height);
+  return Pointer{glm::vec2(float(x), float(y)) * scale, framebuffer,
+                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, std::exchange(leftPressed_, false),
+                 std::exchange(wheel_, 0.0f)};
+}
+
+void Window::onKey(GLFWwindow* window, int key, int, int action, int) {
+  if (action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) owner(window).keys_.push_back(key);
+}
+
+void Window::onMouseButton(GLFWwindow* window, int button, int action, int) {
+  if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) owner(window).leftPressed_ = true;
+}
+
+void Window::onScroll(GLFWwindow* window, double, double y) { owner(window).wheel_ += float(y); }
+
+}  // namespace vitrine::host

@@ -1,0 +1,79 @@
+#pragma once
+// The gallery's OS window, through GLFW: its Vulkan surface, fullscreen, and the input that arrives
+// between frames (keys, clicks, scrolling), held until the frame loop takes it.
+#include <vulkan/vulkan.h>
+
+#include <glm/vec2.hpp>
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace vitrine::host {
+
+// Owns a VkSurfaceKHR. Not a gpu::Unique: a surface is destroyed through the instance, not a device.
+class Surface {
+ public:
+  Surface(VkInstance instance, VkSurfaceKHR surface) : instance_(instance), surface_(surface) {}
+  Surface(Surface&& other) noexcept;
+  Surface& operator=(Surface&&) = delete;
+  Surface(const Surface&) = delete;
+  ~Surface();
+  VkSurfaceKHR handle() const { return surface_; }
+
+ private:
+  VkInstance instance_;
+  VkSurfaceKHR surface_;
+};
+
+// The mouse as the frame loop sees it: positions in framebuffer pixels, events since the last take.
+struct Pointer {
+  glm::vec2 pixels{0.0f};
+  VkExtent2D framebuffer{};
+  bool leftHeld = false;
+  bool leftPressed = false;  // a press happened since the last take, even if already released
+  float wheel = 0.0f;        // scroll steps since the last take
+};
+
+class Window {
+ public:
+  // Throws vitrine::Error, naming the reason, when there is no display to open a window on.
+  Window(VkExtent2D size, bool fullscreen);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  std::vector<const char*> vulkanExtensions() const;  // what the instance needs for a surface
+  Surface createSurface(VkInstance instance) const;
+
+  void pollEvents();
+  bool hidden() const;           // minimised, or a framebuffer with no pixels
+  void waitWhileHidden() const;  // sleeps in the event queue, so a minimised gallery costs no CPU
+  bool shouldClose() const;
+  void close();
+  VkExtent2D framebufferSize() const;
+  void setTitle(const std::string& title);
+  void toggleFullscreen();  // on the primary monitor; back to the windowed position and size
+
+  std::vector<int> takeKeys();  // GLFW key codes pressed since the last take, in order
+  Pointer takePointer();
+
+ private:
+  struct Glfw {  // first member: glfwTerminate runs even when the constructor throws after glfwInit
+    Glfw();
+    ~Glfw();
+  } glfw_;
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+  static void onScroll(GLFWwindow* window, double x, double y);
+
+  GLFWwindow* window_ = nullptr;
+  int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
+  std::vector<int> keys_;
+  bool leftPressed_ = false;
+  float wheel_ = 0.0f;
+};
+
+}  // namespace vitrine::host
