@@ -8,5 +8,6 @@ endif()
 add_library(vitrine_imgui STATIC ${IMGUI_BACKENDS}/imgui_impl_glfw.cpp ${IMGUI_BACKENDS}/imgui_impl_vulkan.cpp)
 pkg_get_variable(IMGUI_INCLUDEDIR imgui includedir)
 target_include_directories(vitrine_imgui SYSTEM PUBLIC ${IMGUI_INCLUDEDIR} ${IMGUI_INCLUDEDIR}/backends)
-target_link_libraries(vitrine_imgui PUBLIC ${IMGUI_LINK_LIBRARIES} glfw Vulkan::Vulkan)
+find_package(Freetype REQUIRED)  # libimgui.a carries the FreeType font builder the overlay uses
+target_link_libraries(vitrine_imgui PUBLIC ${IMGUI_LINK_LIBRARIES} glfw Vulkan::Vulkan Freetype::Freetype)
 target_compile_options(vitrine_imgui PRIVATE -w)

@@ -68,9 +68,9 @@ class Device {
   uint32_t queueFamily() const { return queueFamily_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
-  std::string describe() const;
+  std::string describe() const;  // "NVIDIA H100 (driver 0x..., Vulkan 1.3.x)"
   // Storage images without a format qualifier: lets one compute pass write any output format.
-  bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }  // "NVIDIA H100 (driver 580.x, Vulkan 1.3.x)"
+  bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;

@@ -1,6 +1,16 @@
 // The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
 // screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "gpu/check.h"
+#include "host/assets.h"
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
@@ -11,15 +21,6 @@
 #include "host/screenshot.h"
 #include "host/swapchain.h"
 #include "host/window.h"
-
-#include <GLFW/glfw3.h>
-#include <fmt/format.h>
-
-#include <chrono>
-#include <cstdio>
-#include <string>
-#include <utility>
-#include <vector>
 
 namespace vitrine::host {
 namespace {
@@ -68,6 +69,8 @@ class Gallery {
   void showMenu();
   void pollShaders();
 
+  Assets assets_ = Assets::locate();
+  std::vector<std::string> missingAssets_ = assets_.missing();
   Window window_;
   gpu::Instance instance_;
   Surface surface_;
@@ -105,7 +108,8 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
       programs_(device_),
       renderer_(device_, programs_, kFramesInFlight),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
-      overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight),
+      overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
+               {assets_.font("Fraunces"), assets_.font("CormorantSC")}),
       screenshots_(device_, kFramesInFlight, "screenshots"),
       steps_(input_.dt, kMaxCatchUpSteps),
       vsync_(options.vsync) {
@@ -113,7 +117,9 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
+  for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   switchScene(firstScene);
+  renderer_.applyParameters(options.parameters);  // --set applies to the first scene
 }
 
 int Gallery::run() {
@@ -142,11 +148,21 @@ void Gallery::handleKeys() {
   if (overlay_.wantsText()) return;  // typed into a text field, not commands
   for (int key : keys) {
     switch (key) {
-      case GLFW_KEY_ESCAPE: window_.close(); break;
-      case GLFW_KEY_TAB: uiHidden_ = !uiHidden_; break;
-      case GLFW_KEY_V: vsync_ = !vsync_; break;
-      case GLFW_KEY_F11: window_.toggleFullscreen(); break;
-      case GLFW_KEY_F12: screenshots_.request(); break;
+      case GLFW_KEY_ESCAPE:
+        window_.close();
+        break;
+      case GLFW_KEY_TAB:
+        uiHidden_ = !uiHidden_;
+        break;
+      case GLFW_KEY_V:
+        vsync_ = !vsync_;
+        break;
+      case GLFW_KEY_F11:
+        window_.toggleFullscreen();
+        break;
+      case GLFW_KEY_F12:
+        screenshots_.request();
+        break;
       default:
         if (const SceneInfo* info = sceneForKey(key)) nextScene_ = info;
     }
@@ -221,8 +237,9 @@ void Gallery::simulate() {
 void Gallery::showMenu() {
   if (uiHidden_) return;
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
-  const MenuChoice choice = drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_,
-                                               programs_.error(), screenshotNote_});
+  const MenuChoice choice =
+      drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
+                         screenshotNote_, missingAssets_, overlay_.titleFont()});
   vsync_ = choice.vsync;
   if (choice.scene) nextScene_ = choice.scene;
 }

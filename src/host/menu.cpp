@@ -7,6 +7,7 @@ namespace vitrine::host {
 namespace {
 
 const ImVec4 kErrorRed{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kWarningAmber{0.96f, 0.62f, 0.04f, 1.0f};
 
 void drawTimings(const MenuState& state) {
   double gpuMs = 0.0;
@@ -23,12 +24,14 @@ void drawTimings(const MenuState& state) {
   ImGui::EndTable();
 }
 
-const SceneInfo* drawSceneList(const SceneInfo& current) {
+const SceneInfo* drawSceneList(const SceneInfo& current, ImFont* font) {
   const SceneInfo* chosen = nullptr;
+  if (font) ImGui::PushFont(font);
   for (const auto& info : sceneRegistry()) {
     const std::string label = fmt::format("{}  {}", info.key, info.title);
     if (ImGui::Selectable(label.c_str(), &info == &current)) chosen = &info;
   }
+  if (font) ImGui::PopFont();
   return chosen;
 }
 
@@ -47,7 +50,7 @@ MenuChoice drawMenu(const MenuState& state) {
     drawTimings(state);
     ImGui::Checkbox("vsync (V)", &choice.vsync);
     ImGui::Separator();
-    choice.scene = drawSceneList(state.current);
+    choice.scene = drawSceneList(state.current, state.titleFont);
     const std::string header = fmt::format("{}###scene panel", state.current.title);
     if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) state.scene.drawPanel();
     if (!state.shaderError.empty()) {
@@ -58,6 +61,11 @@ MenuChoice drawMenu(const MenuState& state) {
       ImGui::PopStyleColor();
     }
     if (!state.screenshot.empty()) drawWrapped(state.screenshot);
+    if (!state.missingAssets.empty() && ImGui::CollapsingHeader("Missing assets")) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kWarningAmber);
+      for (const auto& line : state.missingAssets) drawWrapped(line);
+      ImGui::PopStyleColor();
+    }
     ImGui::Separator();
     ImGui::TextDisabled("1-9 scene  Tab hide UI  F11 fullscreen  F12 screenshot  Esc quit");
   }

@@ -5,7 +5,10 @@
 #include "scenes/scene.h"
 
 #include <span>
+#include <string>
 #include <string_view>
+
+struct ImFont;
 
 namespace vitrine::host {
 
@@ -18,6 +21,8 @@ struct MenuState {
   bool vsync = true;
   std::string_view shaderError;  // the hot-reload compile log; empty when all shaders compile
   std::string_view screenshot;   // where the last screenshot went
+  std::span<const std::string> missingAssets;  // what set-up could not fetch, and what stands in
+  ImFont* titleFont = nullptr;                 // for scene names; null: the body font
 };
 
 struct MenuChoice {

@@ -1,10 +1,11 @@
 #include "host/offscreen.h"
 
-#include "gpu/barriers.h"
-#include "gpu/check.h"
+#include <fmt/format.h>
 
 #include <chrono>
-#include <fmt/format.h>
+
+#include "gpu/barriers.h"
+#include "gpu/check.h"
 
 namespace vitrine::host {
 
@@ -14,11 +15,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
   renderer_.setScene(*info);
-  for (const auto& [key, value] : config.parameters) {
-    std::string why;
-    if (!renderer_.scene().setParameter(key, value, &why))
-      throw Error(fmt::format("Scene {} rejects {}={}: {}", config.scene, key, value, why));
-  }
+  renderer_.applyParameters(config.parameters);
   input_.time = config.startTime;
   input_.seed = config.seed;
   input_.reducedMotion = config.reducedMotion;
@@ -81,8 +78,8 @@ FrameTimes Offscreen::renderFrame() {
 ImageRgba Offscreen::readback() const {
   if (!rendered_) throw Error("No frame has been rendered to read back");
   const size_t count = size_t(size_.width) * size_.height;
-  gpu::Buffer staging(device_, count * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      gpu::MemoryUse::Readback, "readback");
+  gpu::Buffer staging(device_, count * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                      "readback");
   device_.submitNow([&](VkCommandBuffer cmd) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

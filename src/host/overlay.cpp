@@ -1,10 +1,13 @@
 #include "host/overlay.h"
 
+#include <fmt/format.h>
+#include <ft2build.h>
+
 #include "gpu/check.h"
 #include "host/swapchain.h"
-
-#include <fmt/format.h>
+#include FT_FREETYPE_H
 #include <imgui.h>
+#include <imgui_freetype.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
 
@@ -65,12 +68,33 @@ gpu::Unique<VkRenderPass> createRenderPass(const gpu::Device& device, VkFormat f
   return gpu::Unique<VkRenderPass>(device, renderPass);
 }
 
+// Dear ImGui asserts when its font builder fails, so a file FreeType cannot open (truncated, or a
+// FreeType built without woff2 support) is found out here and left out.
+bool freetypeReads(const std::filesystem::path& path) {
+  FT_Library library;
+  if (FT_Init_FreeType(&library) != 0) return false;
+  FT_Face face;
+  const bool ok = FT_New_Face(library, path.c_str(), 0, &face) == 0;
+  if (ok) FT_Done_Face(face);
+  FT_Done_FreeType(library);
+  return ok;
+}
+
+ImFont* addFont(const std::optional<std::filesystem::path>& path, float pixels) {
+  if (!path || !freetypeReads(*path)) return nullptr;
+  return ImGui::GetIO().Fonts->AddFontFromFileTTF(path->c_str(), pixels);
+}
+
 }  // namespace
 
-Overlay::Context::Context(GLFWwindow* window) {
+Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini dropped into the user's working folder
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini dropped into the user's working folder
+  io.Fonts->FontBuilderIO = ImGuiFreeType::GetBuilderForFreeType();  // reads the woff2 files
+  if (!addFont(fonts.body, 17.0f)) io.Fonts->AddFontDefault();       // the first font is the default
+  titles = addFont(fonts.titles, 21.0f);
   ImGui::StyleColorsDark();
   // Installs its callbacks on top of the window's own, forwarding every event to them.
   if (!ImGui_ImplGlfw_InitForVulkan(window, true)) {
@@ -104,11 +128,12 @@ Overlay::Renderer::Renderer(const gpu::Device& device, VkDescriptorPool pool, Vk
 
 Overlay::Renderer::~Renderer() { ImGui_ImplVulkan_Shutdown(); }
 
-Overlay::Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight)
+Overlay::Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight,
+                 const Fonts& fonts)
     : device_(device),
       pool_(createPool(device)),
       renderPass_(createRenderPass(device, format)),
-      context_(window),
+      context_(window, fonts),
       renderer_(device, pool_, renderPass_, framesInFlight) {
   device.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();

@@ -5,9 +5,12 @@
 #include "gpu/device.h"
 #include "gpu/pass_timer.h"
 
+#include <filesystem>
+#include <optional>
 #include <vector>
 
 struct GLFWwindow;
+struct ImFont;
 
 namespace vitrine::host {
 
@@ -15,8 +18,12 @@ class Swapchain;
 
 class Overlay {
  public:
+  struct Fonts {  // woff2 files rendered through FreeType; Dear ImGui's built-in font where absent
+    std::optional<std::filesystem::path> body, titles;
+  };
   // `format` is the swapchain's; it must stay the same for the overlay's lifetime.
-  Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight);
+  Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight,
+          const Fonts& fonts);
 
   void attach(const Swapchain& swapchain);  // framebuffers over its current images
   void beginFrame();                        // widgets may be drawn from here until record()
@@ -25,11 +32,13 @@ class Overlay {
 
   bool wantsMouse() const;  // the pointer is over, or dragging, a widget
   bool wantsText() const;   // a text field has the keyboard
+  ImFont* titleFont() const { return context_.titles; }  // null: use the current font
 
  private:
-  struct Context {  // the ImGui context and its GLFW backend
-    explicit Context(GLFWwindow* window);
+  struct Context {  // the ImGui context, its fonts and its GLFW backend
+    Context(GLFWwindow* window, const Fonts& fonts);
     ~Context();
+    ImFont* titles = nullptr;
   };
   struct Renderer {  // the ImGui Vulkan backend, shut down before the render pass and pool it uses
     Renderer(const gpu::Device& device, VkDescriptorPool pool, VkRenderPass renderPass, uint32_t framesInFlight);

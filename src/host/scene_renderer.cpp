@@ -1,10 +1,12 @@
 #include "host/scene_renderer.h"
 
-#include "gpu/barriers.h"
-#include "gpu/check.h"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "gpu/barriers.h"
+#include "gpu/check.h"
 
 namespace vitrine::host {
 namespace {
@@ -37,6 +39,14 @@ void SceneRenderer::setScene(const SceneInfo& info) {
   target_ = {};
   scene_ = info.create(SceneContext{device_, programs_, framesInFlight_});
   info_ = &info;
+}
+
+void SceneRenderer::applyParameters(const std::vector<std::pair<std::string, std::string>>& parameters) {
+  for (const auto& [key, value] : parameters) {
+    std::string why;
+    if (!scene_->setParameter(key, value, &why))
+      throw Error(fmt::format("Scene {} rejects {}={}: {}", info_->name, key, value, why));
+  }
 }
 
 void SceneRenderer::ensureTarget(VkExtent2D output) {
@@ -77,9 +87,9 @@ void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst) {
   gpu::transition(cmd, target_.handle(), kDrawing, sampling);
   gpu::transition(cmd, dst.image, dst.before, gpu::use::ComputeWrite);
   present_.bind(cmd);
-  present_.push(cmd, gpu::Bindings()
-                         .sampledImage(target_.view(), sampler_, VK_IMAGE_LAYOUT_GENERAL)
-                         .storageImage(dst.storageView));
+  present_.push(
+      cmd,
+      gpu::Bindings().sampledImage(target_.view(), sampler_, VK_IMAGE_LAYOUT_GENERAL).storageImage(dst.storageView));
   present_.constants(cmd, uint32_t(dst.encodeSrgb ? 1 : 0));
   present_.dispatchOver(cmd, dst.extent, {8, 8});
   gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);

@@ -7,6 +7,10 @@
 #include "gpu/resources.h"
 #include "scenes/scene.h"
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace vitrine::host {
 
 struct BlitDestination {
@@ -25,6 +29,8 @@ class SceneRenderer {
   // Creates the scene; throws vitrine::Error if its set-up fails.
   void setScene(const SceneInfo& info);
   Scene& scene() { return *scene_; }
+  // "--set key=value" for the current scene; throws vitrine::Error naming a rejected one.
+  void applyParameters(const std::vector<std::pair<std::string, std::string>>& parameters);
   const SceneInfo& info() const { return *info_; }
   gpu::PassTimer& timer() { return timer_; }
 
