@@ -1,11 +1,13 @@
 #include "gpu/device.h"
 
-#include "gpu/check.h"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <fmt/format.h>
+
+#include "gpu/check.h"
+#include "gpu/sync_objects.h"
 
 namespace vitrine::gpu {
 namespace {
@@ -63,20 +65,29 @@ std::string whyUnsuitable(VkPhysicalDevice device, const VkPhysicalDevicePropert
 
 int typeRank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    default: return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    default:
+      return 3;
   }
 }
 
 const char* typeName(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";
+    default:
+      return "other";
   }
 }
 
@@ -109,9 +120,10 @@ size_t choose(const std::vector<Instance::Adapter>& adapters, const std::string&
       best = i;
   }
   if (best == adapters.size())
-    throw Error(fmt::format("No Vulkan device can run Vitrine ({}: {}); Vitrine needs Vulkan 1.3 with dynamic "
-                            "rendering — update the driver (Debian 12: apt-get install mesa-vulkan-drivers).",
-                            adapters[0].properties.deviceName, adapters[0].reason));
+    throw Error(
+        fmt::format("No Vulkan device can run Vitrine ({}: {}); Vitrine needs Vulkan 1.3 with dynamic "
+                    "rendering — update the driver (Debian 12: apt-get install mesa-vulkan-drivers).",
+                    adapters[0].properties.deviceName, adapters[0].reason));
   return best;
 }
 
@@ -135,16 +147,19 @@ Instance::Instance(const InstanceOptions& options) {
     vkEnumerateInstanceLayerProperties(&count, nullptr);
     std::vector<VkLayerProperties> installed(count);
     vkEnumerateInstanceLayerProperties(&count, installed.data());
-    const bool found = std::any_of(installed.begin(), installed.end(),
-                                   [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; });
+    const bool found = std::any_of(installed.begin(), installed.end(), [](const VkLayerProperties& l) {
+      return std::strcmp(l.layerName, kValidationLayer) == 0;
+    });
     if (!found)
-      throw Error("Validation was asked for but VK_LAYER_KHRONOS_validation is not installed: "
-                  "apt-get install vulkan-validationlayers.");
+      throw Error(
+          "Validation was asked for but VK_LAYER_KHRONOS_validation is not installed: "
+          "apt-get install vulkan-validationlayers.");
     layers.push_back(kValidationLayer);
   }
 
-  const VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO, nullptr, "Vitrine", VK_MAKE_VERSION(0, 1, 0),
-                              "Vitrine", VK_MAKE_VERSION(0, 1, 0), VK_API_VERSION_1_3};
+  const VkApplicationInfo app{
+      VK_STRUCTURE_TYPE_APPLICATION_INFO, nullptr,           "Vitrine", VK_MAKE_VERSION(0, 1, 0), "Vitrine",
+      VK_MAKE_VERSION(0, 1, 0),           VK_API_VERSION_1_3};
   // Synchronisation validation catches hazards that leave the picture unchanged (FIELD-NOTES §3).
   const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   const VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, nullptr, 1, enables, 0, nullptr};
@@ -190,8 +205,8 @@ VkBool32 VKAPI_CALL Instance::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT s
                                         VkDebugUtilsMessageTypeFlagsEXT types,
                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
   // Loader chatter (GENERAL) is printed but does not fail a run; validation and performance do.
-  const bool counts = types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT);
+  const bool counts =
+      types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT);
   if (counts) static_cast<Instance*>(self)->messages_.fetch_add(1);
   std::fprintf(stderr, "[vulkan %s] %s\n",
                severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning", data->pMessage);
@@ -218,7 +233,10 @@ std::string listDevices(const Instance& instance) {
   const auto adapters = instance.adapters();
   if (adapters.empty()) throw Error(kNoDriver);
   size_t chosen = adapters.size();
-  try { chosen = choose(adapters, {}); } catch (const Error&) {}
+  try {
+    chosen = choose(adapters, {});
+  } catch (const Error&) {
+  }
   std::string out;
   for (size_t i = 0; i < adapters.size(); ++i) {
     const auto& p = adapters[i].properties;
@@ -274,8 +292,8 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
   const float priority = 1.0f;
-  const VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, nullptr, 0, queueFamily_, 1,
-                                          &priority};
+  const VkDeviceQueueCreateInfo queueInfo{
+      VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, nullptr, 0, queueFamily_, 1, &priority};
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
@@ -295,13 +313,7 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
         vkGetInstanceProcAddr(instance.handle(), "vkCmdEndDebugUtilsLabelEXT"));
   }
 
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = queueFamily_;
-  VkCommandPool pool;
-  VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &pool));
-  oneShotPool_ = Unique<VkCommandPool>(device_, pool);
-  name(VkCommandPool(pool), VK_OBJECT_TYPE_COMMAND_POOL, "one-shot pool");
+  oneShotPool_ = createCommandPool(*this, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, "one-shot pool");
 }
 
 Device::~Device() {
@@ -329,8 +341,8 @@ Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements
       return Unique<VkDeviceMemory>(device_, memory);
     }
   }
-  throw Error(fmt::format("No Vulkan memory type fits a {} byte allocation with flags {:#x}", requirements.size,
-                          wanted));
+  throw Error(
+      fmt::format("No Vulkan memory type fits a {} byte allocation with flags {:#x}", requirements.size, wanted));
 }
 
 void Device::submitNow(const std::function<void(VkCommandBuffer)>& record) const {
@@ -343,10 +355,8 @@ void Device::submitNow(const std::function<void(VkCommandBuffer)>& record) const
   VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
   record(cmd);
   VK_CHECK(vkEndCommandBuffer(cmd));
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence rawFence;
-  VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &rawFence));
-  Unique<VkFence> fence(device_, rawFence);
+  const Unique<VkFence> fence = createFence(*this, false, "one-shot");
+  const VkFence rawFence = fence;
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd, 0};
   VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
   submit.commandBufferInfoCount = 1;

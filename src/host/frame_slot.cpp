@@ -1,17 +1,17 @@
 #include "host/frame_slot.h"
 
-#include "gpu/check.h"
-#include "host/vk_objects.h"
-
 #include <fmt/format.h>
+
+#include "gpu/check.h"
+#include "gpu/sync_objects.h"
 
 namespace vitrine::host {
 
 FrameSlot::FrameSlot(const gpu::Device& device, uint32_t index)
     : device_(&device),
-      pool_(createCommandPool(device, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, fmt::format("frame {} pool", index))),
-      done_(createFence(device, true, fmt::format("frame {} done", index))),  // signalled: nothing to wait for yet
-      imageAcquired_(createSemaphore(device, fmt::format("frame {} image acquired", index))) {
+      pool_(gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, fmt::format("frame {} pool", index))),
+      done_(gpu::createFence(device, true, fmt::format("frame {} done", index))),  // signalled: nothing to wait for yet
+      imageAcquired_(gpu::createSemaphore(device, fmt::format("frame {} image acquired", index))) {
   const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
                                           VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
   VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &cmd_));
@@ -35,9 +35,10 @@ VkCommandBuffer FrameSlot::begin() {
 
 void FrameSlot::submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished) {
   VK_CHECK(vkEndCommandBuffer(cmd_));
-  const VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0};
+  const VkSemaphoreSubmitInfo wait{
+      VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0};
   const VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0,
-                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0};
+                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,    0};
   const VkCommandBufferSubmitInfo commands{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd_, 0};
   VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
   submit.waitSemaphoreInfoCount = 1;

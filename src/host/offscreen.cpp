@@ -6,6 +6,7 @@
 
 #include "gpu/barriers.h"
 #include "gpu/check.h"
+#include "gpu/sync_objects.h"
 
 namespace vitrine::host {
 
@@ -25,20 +26,12 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   output_ = gpu::Image(device, desc, "offscreen output");
 
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = device.queueFamily();
-  VkCommandPool pool;
-  VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-  pool_ = gpu::Unique<VkCommandPool>(device, pool);
-  const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool,
+  pool_ = gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, "offscreen pool");
+  const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
                                           VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
   VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &cmd_));
   device.name(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "offscreen frame");
-  const VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence;
-  VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-  fence_ = gpu::Unique<VkFence>(device, fence);
+  fence_ = gpu::createFence(device, false, "offscreen frame done");
 }
 
 Offscreen::~Offscreen() { vkDeviceWaitIdle(device_); }

@@ -1,12 +1,12 @@
 #include "host/swapchain.h"
 
-#include "gpu/check.h"
-#include "host/vk_objects.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <span>
+
+#include "gpu/check.h"
+#include "gpu/sync_objects.h"
 
 namespace vitrine::host {
 namespace {
@@ -18,8 +18,7 @@ constexpr VkFormatFeatureFlags kBlitFeatures = VK_FORMAT_FEATURE_BLIT_DST_BIT | 
 constexpr VkFormatFeatureFlags kComputeFeatures =
     VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
 constexpr VkFormat kUnormFormats[] = {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM};
-constexpr VkFormat kSrgbFormats[] = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB,
-                                     VK_FORMAT_A8B8G8R8_SRGB_PACK32};
+constexpr VkFormat kSrgbFormats[] = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_A8B8G8R8_SRGB_PACK32};
 
 // The first of `wanted` the surface offers, in the sRGB colour space, with `features` on this device.
 std::optional<VkSurfaceFormatKHR> findFormat(const gpu::Device& device, const std::vector<VkSurfaceFormatKHR>& offered,
@@ -62,8 +61,9 @@ Swapchain::Presentation Swapchain::choosePresentation(const gpu::Device& device,
       return {*format, kComputeUsage, true};
   if (supports(kBlitUsage))
     if (auto format = findFormat(device, offered, kSrgbFormats, kBlitFeatures)) return {*format, kBlitUsage, false};
-  throw Error("The window surface offers neither a storage-capable UNORM format nor an 8-bit sRGB format that can "
-              "be blitted to; Vitrine cannot present to it.");
+  throw Error(
+      "The window surface offers neither a storage-capable UNORM format nor an 8-bit sRGB format that can "
+      "be blitted to; Vitrine cannot present to it.");
 }
 
 bool Swapchain::fits(VkExtent2D framebuffer, bool vsync) const {
@@ -135,7 +135,7 @@ void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
     VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view));
     device_.name(view, VK_OBJECT_TYPE_IMAGE_VIEW, fmt::format("swapchain view {}", i));
     views_.emplace_back(device_, view);
-    renderFinished_.push_back(createSemaphore(device_, fmt::format("render finished {}", i)));
+    renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
   }
   builtFor_ = framebuffer;
   vsync_ = vsync;
