@@ -1,8 +1,9 @@
 #include "gpu/resources.h"
 
-#include "gpu/check.h"
-
 #include <fmt/format.h>
+
+#include "gpu/barriers.h"
+#include "gpu/check.h"
 
 namespace vitrine::gpu {
 
@@ -25,8 +26,8 @@ Buffer::Buffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage
       memory_ = device.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
       break;
     case MemoryUse::Upload:  // prefer memory the GPU reads fast (resizable BAR), else any coherent
-      memory_ = device.allocate(requirements, host | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT |
-                                                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+      memory_ = device.allocate(requirements,
+                                host | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
                                 host | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
       break;
     case MemoryUse::Readback:
@@ -82,6 +83,15 @@ Image::Image(const Device& device, const ImageDesc& desc, const std::string& nam
   VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
   view_ = Unique<VkImageView>(device, view);
   device.name(view, VK_OBJECT_TYPE_IMAGE_VIEW, name + " view");
+}
+
+void recordReadback(VkCommandBuffer cmd, const Image& image, const Buffer& buffer) {
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {image.desc().extent.width, image.desc().extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void checkImageSize(const Device& device, VkExtent2D extent) {

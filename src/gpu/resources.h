@@ -64,6 +64,10 @@ class Image {
   Unique<VkImageView> view_;
 };
 
+// Records a copy of a 2D colour image in TRANSFER_SRC layout into a host-readable buffer, and the
+// barrier that makes it visible to the CPU once the submission's fence has signalled.
+void recordReadback(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);
+
 // Checks a requested 2D size against the device's limit, with a message naming both.
 void checkImageSize(const Device& device, VkExtent2D extent);
 

@@ -73,14 +73,7 @@ ImageRgba Offscreen::readback() const {
   const size_t count = size_t(size_.width) * size_.height;
   gpu::Buffer staging(device_, count * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
                       "readback");
-  device_.submitNow([&](VkCommandBuffer cmd) {
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {size_.width, size_.height, 1};
-    vkCmdCopyImageToBuffer(cmd, output_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-  });
+  device_.submitNow([&](VkCommandBuffer cmd) { gpu::recordReadback(cmd, output_, staging); });
   staging.invalidate();
   return imageFromHalves(size_.width, size_.height, staging.view<const uint16_t>());
 }

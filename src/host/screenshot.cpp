@@ -1,12 +1,11 @@
 #include "host/screenshot.h"
 
-#include "gpu/barriers.h"
-#include "host/image_io.h"
-
 #include <fmt/format.h>
 
 #include <ctime>
 #include <utility>
+
+#include "host/image_io.h"
 
 namespace vitrine::host {
 namespace {
@@ -35,12 +34,7 @@ void Screenshots::record(VkCommandBuffer cmd, uint32_t slot, const gpu::Image& t
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "screenshot readback"),
                extent, stemFor(scene)};
   // Only reads follow the renderer's barrier to TRANSFER_SRC, so none is needed before this one.
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {extent.width, extent.height, 1};
-  vkCmdCopyImageToBuffer(cmd, target.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shot.pixels.handle(), 1, &region);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  gpu::recordReadback(cmd, target, shot.pixels);
   pending_[slot] = std::move(shot);
 }
 
