@@ -1,6 +1,6 @@
 #include "app/options.h"
 
-#include "gpu/check.h"
+#include "core/error.h"
 
 #include <charconv>
 #include <cstdlib>

@@ -3,15 +3,9 @@
 // name and the source line. Stays on in Release: a silent failure on a user's GPU costs more than a branch.
 #include <vulkan/vulkan.h>
 
-#include <stdexcept>
-#include <string>
+#include "core/error.h"
 
 namespace vitrine {
-
-struct Error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 namespace gpu {
 const char* resultName(VkResult result);
 [[noreturn]] void throwVkError(VkResult result, const char* call, const char* file, int line);

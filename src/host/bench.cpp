@@ -1,8 +1,8 @@
 #include "gpu/check.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
-#include "host/output_path.h"
-#include "host/stats.h"
+#include "core/output_path.h"
+#include "core/stats.h"
 
 #include <cstdio>
 #include <fmt/format.h>

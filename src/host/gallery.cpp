@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gpu/check.h"
-#include "host/assets.h"
+#include "core/assets.h"
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"

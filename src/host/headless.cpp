@@ -1,9 +1,9 @@
 #include "gpu/check.h"
-#include "host/image_io.h"
-#include "host/image_compare.h"
+#include "image/image_io.h"
+#include "image/image_compare.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
-#include "host/output_path.h"
+#include "core/output_path.h"
 
 #include <cstdio>
 #include <fmt/format.h>

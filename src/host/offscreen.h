@@ -1,7 +1,7 @@
 #pragma once
 // A scene rendered with no window and no surface, one fixed step per frame: the headless CLI, the
 // benchmark and the golden tests all drive this. Frame k shows time startTime + k * dt.
-#include "host/image.h"
+#include "image/image.h"
 #include "host/scene_renderer.h"
 
 #include <string>

@@ -5,7 +5,7 @@
 #include <ctime>
 #include <utility>
 
-#include "host/image_io.h"
+#include "image/image_io.h"
 
 namespace vitrine::host {
 namespace {

@@ -1,9 +1,9 @@
 // Golden frames: every case in tests/golden/cases.txt renders headless and must match its EXR under
-// the metric of src/host/image_compare.h; every "!" line changes a parameter of a case and must NOT
+// the metric of src/image/image_compare.h; every "!" line changes a parameter of a case and must NOT
 // match, proving the comparison can fail. VITRINE_UPDATE_GOLDENS=1 rewrites the goldens instead
 // (scripts/update-goldens), and only that.
-#include "host/image_compare.h"
-#include "host/image_io.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
 #include "host/offscreen.h"
 #include "support/gpu_test.h"
 

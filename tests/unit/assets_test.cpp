@@ -1,4 +1,4 @@
-#include "host/assets.h"
+#include "core/assets.h"
 
 #include <gtest/gtest.h>
 

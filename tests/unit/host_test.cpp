@@ -1,7 +1,7 @@
 #include "app/options.h"
 #include "gpu/check.h"
-#include "host/image_compare.h"
-#include "host/stats.h"
+#include "image/image_compare.h"
+#include "core/stats.h"
 
 #include <gtest/gtest.h>
 

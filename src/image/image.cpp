@@ -1,4 +1,4 @@
-#include "host/image.h"
+#include "image/image.h"
 
 #include <Imath/half.h>
 

@@ -1,4 +1,4 @@
-#include "host/image_compare.h"
+#include "image/image_compare.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "gpu/check.h"
-#include "host/atomic_file.h"
-#include "host/image_io.h"
+#include "core/error.h"
+#include "core/atomic_file.h"
+#include "image/image_io.h"
 
 namespace vitrine {
 
@@ -27,7 +27,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
     encoded.copy(buffer);
     encoded.set_write_format(OIIO::TypeDesc::HALF);
   }
-  host::replaceAtomically(path, [&](const std::filesystem::path& temporary) {
+  replaceAtomically(path, [&](const std::filesystem::path& temporary) {
     if (!encoded.write(temporary.string()))
       throw Error(fmt::format("Cannot write {}: {}", path.string(), encoded.geterror()));
   });

@@ -2,9 +2,9 @@
 #include <ImfRgbaFile.h>
 #include <fmt/format.h>
 
-#include "gpu/check.h"
-#include "host/atomic_file.h"
-#include "host/image_io.h"
+#include "core/error.h"
+#include "core/atomic_file.h"
+#include "image/image_io.h"
 
 namespace vitrine {
 
@@ -16,7 +16,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
         fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
                     "(configure with -DVITRINE_WITH_OIIO=ON for PNG).",
                     path.string()));
-  host::replaceAtomically(path, [&](const std::filesystem::path& temporary) {
+  replaceAtomically(path, [&](const std::filesystem::path& temporary) {
     try {
       std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
       for (size_t i = 0; i < half.size(); ++i)

@@ -3,7 +3,7 @@
 // the mean: a pixel fails when its largest channel difference exceeds both an absolute and a
 // relative tolerance; the image fails when too many pixels fail, when any pixel differs by more than
 // the hard limit, or when the candidate holds a NaN or an infinity.
-#include "host/image.h"
+#include "image/image.h"
 
 #include <string>
 

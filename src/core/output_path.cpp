@@ -1,11 +1,11 @@
-#include "host/output_path.h"
+#include "core/output_path.h"
 
-#include "gpu/check.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
-namespace vitrine::host {
+namespace vitrine {
 
 void checkWritable(const std::filesystem::path& path) {
   const auto parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -18,4 +18,4 @@ void checkWritable(const std::filesystem::path& path) {
     throw Error(fmt::format("Cannot write {}: it is a folder.", path.string()));
 }
 
-}  // namespace vitrine::host
+}  // namespace vitrine

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace vitrine::host {
+namespace vitrine {
 
 class Assets {
  public:
@@ -24,4 +24,4 @@ class Assets {
   std::filesystem::path root_;
 };
 
-}  // namespace vitrine::host
+}  // namespace vitrine

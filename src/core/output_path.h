@@ -1,7 +1,7 @@
 #pragma once
 #include <filesystem>
 
-namespace vitrine::host {
+namespace vitrine {
 // Fails early, with the path in the message, when a file could not be written there.
 void checkWritable(const std::filesystem::path& path);
-}  // namespace vitrine::host
+}  // namespace vitrine

@@ -1,9 +1,9 @@
-#include "host/assets.h"
+#include "core/assets.h"
 
 #include <algorithm>
 #include <cstdlib>
 
-namespace vitrine::host {
+namespace vitrine {
 
 Assets Assets::locate() {
   if (const char* env = std::getenv("VITRINE_ASSETS"); env && *env) return Assets(env);
@@ -41,4 +41,4 @@ std::vector<std::string> Assets::missing() const {
   return lines;
 }
 
-}  // namespace vitrine::host
+}  // namespace vitrine

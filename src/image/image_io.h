@@ -1,7 +1,7 @@
 #pragma once
 // The one module that touches image files. Built on OpenImageIO (EXR and PNG) or, with
 // VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR alone (EXR only).
-#include "host/image.h"
+#include "image/image.h"
 
 #include <filesystem>
 

@@ -1,10 +1,10 @@
-#include "host/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include <fmt/format.h>
 
-#include "gpu/check.h"
+#include "core/error.h"
 
-namespace vitrine::host {
+namespace vitrine {
 
 void replaceAtomically(const std::filesystem::path& target,
                        const std::function<void(const std::filesystem::path&)>& write) {
@@ -24,4 +24,4 @@ void replaceAtomically(const std::filesystem::path& target,
   }
 }
 
-}  // namespace vitrine::host
+}  // namespace vitrine

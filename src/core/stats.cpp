@@ -1,4 +1,4 @@
-#include "host/stats.h"
+#include "core/stats.h"
 
 #include <algorithm>
 #include <cmath>
