@@ -26,6 +26,7 @@ struct Options {
   uint32_t warmup = 30;              // bench
   bool fullscreen = false;
   bool vsync = true;
+  bool resetSettings = false;        // --reset-settings (gallery)
   std::vector<std::pair<std::string, std::string>> parameters;  // --set key=value
   std::vector<std::string> compare;  // compare REF CANDIDATE
 };

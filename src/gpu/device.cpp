@@ -250,6 +250,12 @@ std::string listDevices(const Instance& instance) {
 
 // ------------------------------------------------------------------------------------------------ Device
 
+namespace {
+size_t samplerIndex(Device::Filter filter, Device::Address address, bool mipmaps) {
+  return size_t(filter) * 4 + size_t(address) * 2 + (mipmaps ? 1 : 0);
+}
+}  // namespace
+
 Device::Device(const Instance& instance, const DeviceOptions& options) : instance_(instance) {
   auto adapters = instance.adapters();
   if (options.surface)  // presenting narrows what is suitable
@@ -275,6 +281,7 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   f13.synchronization2 = VK_TRUE;
   f13.maintenance4 = has13.maintenance4;
   VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+  f12.timelineSemaphore = VK_TRUE;  // core in 1.2 and required by 1.3: the queue's serials
   f12.hostQueryReset = has12.hostQueryReset;
   f12.shaderFloat16 = has12.shaderFloat16;
   f12.scalarBlockLayout = has12.scalarBlockLayout;
@@ -314,12 +321,70 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   }
 
   oneShotPool_ = createCommandPool(*this, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, "one-shot pool");
+  timeline_ = createTimelineSemaphore(*this, "queue timeline");
+  for (const Filter filter : {Filter::Nearest, Filter::Linear})
+    for (const Address address : {Address::Clamp, Address::Repeat})
+      for (const bool mipmaps : {false, true}) {
+        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        info.magFilter = info.minFilter = filter == Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+        info.mipmapMode = filter == Filter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        info.addressModeU = info.addressModeV = info.addressModeW =
+            address == Address::Clamp ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
+        info.maxLod = mipmaps ? VK_LOD_CLAMP_NONE : 0.0f;
+        VkSampler sampler;
+        VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler));
+        name(sampler, VK_OBJECT_TYPE_SAMPLER,
+             fmt::format("{} {}{}", filter == Filter::Linear ? "linear" : "nearest",
+                         address == Address::Clamp ? "clamp" : "repeat", mipmaps ? " mipmapped" : ""));
+        samplers_[samplerIndex(filter, address, mipmaps)] = Unique<VkSampler>(device_, sampler);
+      }
 }
 
 Device::~Device() {
-  if (device_) vkDeviceWaitIdle(device_);
+  if (!device_) return;
+  vkDeviceWaitIdle(device_);
+  graveyard_.clear();
+  for (auto& sampler : samplers_) sampler.reset();
+  timeline_.reset();
   oneShotPool_.reset();
   vkDestroyDevice(device_, nullptr);
+}
+
+VkSampler Device::sampler(Filter filter, Address address, bool mipmaps) const {
+  return samplers_[samplerIndex(filter, address, mipmaps)];
+}
+
+uint64_t Device::submit(const Submit& work) const {
+  std::vector<VkSemaphoreSubmitInfo> signal = work.signal;
+  signal.push_back({VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, timeline_, submitted_ + 1,
+                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0});
+  const VkCommandBufferSubmitInfo commands{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, work.cmd, 0};
+  VkSubmitInfo2 info{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  info.waitSemaphoreInfoCount = static_cast<uint32_t>(work.wait.size());
+  info.pWaitSemaphoreInfos = work.wait.data();
+  info.commandBufferInfoCount = work.cmd ? 1 : 0;
+  info.pCommandBufferInfos = &commands;
+  info.signalSemaphoreInfoCount = static_cast<uint32_t>(signal.size());
+  info.pSignalSemaphoreInfos = signal.data();
+  VK_CHECK(vkQueueSubmit2(queue_, 1, &info, VK_NULL_HANDLE));
+  return ++submitted_;
+}
+
+uint64_t Device::completed() const {
+  uint64_t value = 0;
+  VK_CHECK(vkGetSemaphoreCounterValue(device_, timeline_, &value));
+  return value;
+}
+
+void Device::wait(uint64_t serial) const {
+  const VkSemaphore semaphore = timeline_;
+  const VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO, nullptr, 0, 1, &semaphore, &serial};
+  VK_CHECK(vkWaitSemaphores(device_, &info, UINT64_MAX));
+}
+
+void Device::drainRetired() const {
+  waitIdle();
+  graveyard_.clear();
 }
 
 std::string Device::describe() const {
@@ -350,20 +415,19 @@ void Device::submitNow(const std::function<void(VkCommandBuffer)>& record) const
                                     VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
   VkCommandBuffer cmd;
   VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  // Freed on every way out: a recording callback that throws must not leak its command buffer.
+  struct Free {
+    VkDevice device;
+    VkCommandPool pool;
+    VkCommandBuffer cmd;
+    ~Free() { vkFreeCommandBuffers(device, pool, 1, &cmd); }
+  } freeOnExit{device_, oneShotPool_, cmd};
   const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
                                        VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
   VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
   record(cmd);
   VK_CHECK(vkEndCommandBuffer(cmd));
-  const Unique<VkFence> fence = createFence(*this, false, "one-shot");
-  const VkFence rawFence = fence;
-  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd, 0};
-  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit.commandBufferInfoCount = 1;
-  submit.pCommandBufferInfos = &cmdInfo;
-  VK_CHECK(vkQueueSubmit2(queue_, 1, &submit, fence));
-  VK_CHECK(vkWaitForFences(device_, 1, &rawFence, VK_TRUE, UINT64_MAX));
-  vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
+  wait(submit({cmd, {}, {}}));
 }
 
 void Device::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }

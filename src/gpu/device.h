@@ -1,8 +1,10 @@
 #pragma once
 // The Vulkan instance, the chosen physical device, the logical device and its one universal queue.
 // Validation, when on, routes every warning or error through one counter, so a test can fail on it.
+#include "gpu/graveyard.h"
 #include "gpu/unique.h"
 
+#include <array>
 #include <atomic>
 #include <functional>
 #include <string>
@@ -75,9 +77,34 @@ class Device {
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;
 
+  // The one place work reaches the queue. Every submission signals the next value of the device's
+  // timeline semaphore and returns it: its serial. Binary semaphores (swapchain) and a fence are optional.
+  struct Submit {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    std::vector<VkSemaphoreSubmitInfo> wait;
+    std::vector<VkSemaphoreSubmitInfo> signal;
+  };
+  uint64_t submit(const Submit& work) const;
+  uint64_t lastSubmitted() const { return submitted_; }
+  uint64_t completed() const;            // the newest serial the GPU has finished
+  void wait(uint64_t serial) const;      // blocks until that submission has finished
+  void waitIdle() const;                 // every submission so far; exit and tests only
+
   // Records and runs a one-off command buffer, waiting for it: set-up uploads and read-backs only.
+  // The command buffer is freed also when `record` throws.
   void submitNow(const std::function<void(VkCommandBuffer)>& record) const;
-  void waitIdle() const;
+
+  // Deferred destruction: `object` is destroyed once every submission made so far, and the one being
+  // recorded now, has finished. Host and scenes hand over what frames in flight may still use.
+  template <typename T> void retire(T&& object) const { graveyard_.bury(std::forward<T>(object), submitted_ + 1); }
+  void collectRetired() const { graveyard_.collect(completed()); }  // once a frame
+  void drainRetired() const;  // waits for the queue, then destroys everything retired (shutdown)
+  size_t retiredCount() const { return graveyard_.size(); }
+
+  // Stock samplers, made once: what the host offers instead of scenes creating their own.
+  enum class Filter { Nearest, Linear };
+  enum class Address { Clamp, Repeat };
+  VkSampler sampler(Filter filter, Address address, bool mipmaps = false) const;
 
   // Debug-utils names and labels; no-ops when the extension is missing.
   void name(VkObjectType type, uint64_t handle, const std::string& name) const;
@@ -99,6 +126,10 @@ class Device {
   uint32_t queueFamily_ = 0;
   bool storageWriteWithoutFormat_ = false;
   Unique<VkCommandPool> oneShotPool_;
+  Unique<VkSemaphore> timeline_;
+  mutable uint64_t submitted_ = 0;
+  mutable Graveyard graveyard_;
+  std::array<Unique<VkSampler>, 8> samplers_;
   PFN_vkSetDebugUtilsObjectNameEXT setName_ = nullptr;
   PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel_ = nullptr;
   PFN_vkCmdEndDebugUtilsLabelEXT endLabel_ = nullptr;

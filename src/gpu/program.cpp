@@ -63,7 +63,6 @@ int ProgramLibrary::reloadChanged() {
     changed.insert(name);
   }
   if (changed.empty()) return 0;
-  device_.waitIdle();
   int rebuilt = 0;
   for (Program* program : programs_) {
     const auto& used = program->shaders();
@@ -82,42 +81,30 @@ void ProgramLibrary::remove(Program* program) { std::erase(programs_, program); 
 
 // ------------------------------------------------------------------------------------------ bindings
 
-VkWriteDescriptorSet& Bindings::next(VkDescriptorType type) {
+Bindings::Slot& Bindings::next(VkDescriptorType type) {
   if (count_ == kMax) throw Error("Too many descriptor bindings for one program");
-  auto& write = writes_[count_];
-  write = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstBinding = count_;
-  write.descriptorCount = 1;
-  write.descriptorType = type;
-  ++count_;
-  return write;
+  Slot& slot = slots_[count_++];
+  slot = {type, {}, {}};
+  return slot;
 }
 
 Bindings& Bindings::storageImage(VkImageView view, VkImageLayout layout) {
-  auto& write = next(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
-  images_[write.dstBinding] = {VK_NULL_HANDLE, view, layout};
-  write.pImageInfo = &images_[write.dstBinding];
+  next(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).image = {VK_NULL_HANDLE, view, layout};
   return *this;
 }
 
 Bindings& Bindings::sampledImage(VkImageView view, VkSampler sampler, VkImageLayout layout) {
-  auto& write = next(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  images_[write.dstBinding] = {sampler, view, layout};
-  write.pImageInfo = &images_[write.dstBinding];
+  next(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).image = {sampler, view, layout};
   return *this;
 }
 
 Bindings& Bindings::storageBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  auto& write = next(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  buffers_[write.dstBinding] = {buffer, offset, range};
-  write.pBufferInfo = &buffers_[write.dstBinding];
+  next(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).buffer = {buffer, offset, range};
   return *this;
 }
 
 Bindings& Bindings::uniformBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  auto& write = next(VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-  buffers_[write.dstBinding] = {buffer, offset, range};
-  write.pBufferInfo = &buffers_[write.dstBinding];
+  next(VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).buffer = {buffer, offset, range};
   return *this;
 }
 
@@ -155,7 +142,9 @@ Program::Program(ProgramLibrary& library, std::string label, std::vector<std::st
 Program::~Program() { library_.remove(this); }
 
 void Program::rebuild() {
-  pipeline_ = Unique<VkPipeline>(device(), build());
+  Unique<VkPipeline> fresh(device(), build());
+  if (pipeline_) device().retire(std::move(pipeline_));  // frames in flight may still run the old one
+  pipeline_ = std::move(fresh);
   device().name(pipeline_.get(), VK_OBJECT_TYPE_PIPELINE, label_);
 }
 
@@ -172,7 +161,19 @@ Unique<VkShaderModule> Program::module(const std::string& shader) const {
 void Program::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
 
 void Program::push(VkCommandBuffer cmd, const Bindings& bindings) const {
-  device().cmdPushDescriptorSet(cmd, bindPoint_, layout_, 0, bindings.count_, bindings.writes_.data());
+  std::array<VkWriteDescriptorSet, Bindings::kMax> writes{};
+  for (uint32_t i = 0; i < bindings.count_; ++i) {
+    const Bindings::Slot& slot = bindings.slots_[i];
+    const bool image = slot.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE ||
+                       slot.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = slot.type;
+    writes[i].pImageInfo = image ? &slot.image : nullptr;
+    writes[i].pBufferInfo = image ? nullptr : &slot.buffer;
+  }
+  device().cmdPushDescriptorSet(cmd, bindPoint_, layout_, 0, bindings.count_, writes.data());
 }
 
 void Program::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const {
@@ -193,6 +194,11 @@ VkPipeline ComputeProgram::build() const {
   VkPipeline pipeline;
   VK_CHECK(vkCreateComputePipelines(device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   return pipeline;
+}
+
+void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent3D extent, VkExtent3D local) const {
+  vkCmdDispatch(cmd, (extent.width + local.width - 1) / local.width, (extent.height + local.height - 1) / local.height,
+                (extent.depth + local.depth - 1) / local.depth);
 }
 
 void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent2D extent, VkExtent2D local) const {

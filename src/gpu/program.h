@@ -28,7 +28,7 @@ class ProgramLibrary {
   std::span<const uint32_t> spirv(const std::string& name) const;
 
   // Polls the shader sources; when any changed, recompiles the shaders in use and rebuilds the
-  // programs whose SPIR-V changed (after a device idle: reloads are rare and interactive).
+  // programs whose SPIR-V changed (old pipelines are retired: frames in flight may still use them).
   // Returns how many programs were rebuilt.
   int reloadChanged();
   const std::string& error() const { return error_; }  // the last compile log; empty when all compile
@@ -47,22 +47,27 @@ class ProgramLibrary {
   std::string error_;
 };
 
-// Descriptor writes for one dispatch or draw; binding i is the i-th call.
+// Descriptors for one dispatch or draw; binding i is the i-th call. Holds only values (no pointers
+// into itself), so a copy is as good as the original; the Vulkan write structures are built at push.
 class Bindings {
  public:
   Bindings& storageImage(VkImageView view, VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL);
   Bindings& sampledImage(VkImageView view, VkSampler sampler, VkImageLayout layout);
   Bindings& storageBuffer(VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
   Bindings& uniformBuffer(VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
+  uint32_t count() const { return count_; }
 
  private:
   friend class Program;
   static constexpr size_t kMax = 8;
-  std::array<VkWriteDescriptorSet, kMax> writes_{};
-  std::array<VkDescriptorImageInfo, kMax> images_{};
-  std::array<VkDescriptorBufferInfo, kMax> buffers_{};
+  struct Slot {
+    VkDescriptorType type;
+    VkDescriptorImageInfo image;
+    VkDescriptorBufferInfo buffer;
+  };
+  std::array<Slot, kMax> slots_{};
   uint32_t count_ = 0;
-  VkWriteDescriptorSet& next(VkDescriptorType type);
+  Slot& next(VkDescriptorType type);
 };
 
 class Program {
@@ -108,6 +113,8 @@ class ComputeProgram final : public Program {
   ComputeProgram(ProgramLibrary& library, const std::string& shader, const ProgramLayout& layout);
   // Enough workgroups of size (local.x, local.y) to cover width × height.
   void dispatchOver(VkCommandBuffer cmd, VkExtent2D extent, VkExtent2D local) const;
+  // Enough workgroups of size local to cover a 3D extent (a lattice).
+  void dispatchOver(VkCommandBuffer cmd, VkExtent3D extent, VkExtent3D local) const;
 
  private:
   VkPipeline build() const override;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 
@@ -46,12 +48,29 @@ void Buffer::invalidate() const {
   VK_CHECK(vkInvalidateMappedMemoryRanges(*device_, 1, &range));
 }
 
-Image::Image(const Device& device, const ImageDesc& desc, const std::string& name) : desc_(desc) {
+uint32_t fullMipCount(VkExtent3D extent) {
+  uint32_t side = std::max({extent.width, extent.height, extent.depth}), levels = 1;
+  while (side > 1) side /= 2, ++levels;
+  return levels;
+}
+
+void Buffer::use(VkCommandBuffer cmd, const BufferUse& next) {
+  if (readOnly(last_.access) && readOnly(next.access)) {  // reads after reads: widen, no barrier
+    last_.stage |= next.stage;
+    last_.access |= next.access;
+    return;
+  }
+  memoryBarrier(cmd, last_, next);
+  last_ = next;
+}
+
+Image::Image(const Device& device, const ImageDesc& desc, const std::string& name) : desc_(desc), name_(name) {
+  if (desc_.mips == 0) desc_.mips = fullMipCount(desc.extent);
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = desc.type;
   info.format = desc.format;
   info.extent = desc.extent;
-  info.mipLevels = 1;
+  info.mipLevels = desc_.mips;
   info.arrayLayers = 1;
   info.samples = desc.samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -74,24 +93,81 @@ Image::Image(const Device& device, const ImageDesc& desc, const std::string& nam
   device.name(VkDeviceMemory(memory_), VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
   if (!(desc.usage & viewable)) return;  // copy-only images have no view
 
-  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image;
-  viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = desc.format;
-  viewInfo.subresourceRange = {desc.aspect, 0, 1, 0, 1};
-  VkImageView view;
-  VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
-  view_ = Unique<VkImageView>(device, view);
-  device.name(view, VK_OBJECT_TYPE_IMAGE_VIEW, name + " view");
+  auto makeView = [&](uint32_t base, uint32_t count, const std::string& label) {
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = image;
+    viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = desc.format;
+    viewInfo.subresourceRange = {desc.aspect, base, count, 0, 1};
+    VkImageView view;
+    VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
+    device.name(view, VK_OBJECT_TYPE_IMAGE_VIEW, label);
+    return Unique<VkImageView>(device, view);
+  };
+  view_ = makeView(0, desc_.mips, name + " view");
+  if (desc_.mips > 1 && (desc.usage & VK_IMAGE_USAGE_STORAGE_BIT))
+    for (uint32_t level = 0; level < desc_.mips; ++level)
+      mipViews_.push_back(makeView(level, 1, fmt::format("{} mip {}", name, level)));
 }
 
-void recordReadback(VkCommandBuffer cmd, const Image& image, const Buffer& buffer) {
+VkImageView Image::mipView(uint32_t level) const {
+  if (mipViews_.empty()) {
+    if (level != 0) throw Error(fmt::format("{} has no storage view of mip {}", name_, level));
+    return view_;
+  }
+  return mipViews_.at(level);
+}
+
+void Image::use(VkCommandBuffer cmd, const ImageUse& next) {
+  if (last_.layout == next.layout && readOnly(last_.access) && readOnly(next.access) &&
+      last_.layout != VK_IMAGE_LAYOUT_UNDEFINED) {
+    last_.stage |= next.stage;
+    last_.access |= next.access;
+    return;
+  }
+  transition(cmd, image_, last_, next, desc_.aspect);
+  last_ = next;
+}
+
+void recordReadback(VkCommandBuffer cmd, Image& image, Buffer& buffer) {
+  image.use(cmd, use::TransferSrc);
+  buffer.use(cmd, use::TransferDstBuffer);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {image.desc().extent.width, image.desc().extent.height, 1};
   vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                VK_ACCESS_2_HOST_READ_BIT);
+  buffer.use(cmd, use::HostReadBuffer);
+}
+
+void generateMips(VkCommandBuffer cmd, Image& image, const ImageUse& after) {
+  const uint32_t levels = image.desc().mips;
+  image.use(cmd, use::TransferDst);
+  auto size = [&](uint32_t level) {
+    const VkExtent3D e = image.extent();
+    return VkOffset3D{int32_t(std::max(1u, e.width >> level)), int32_t(std::max(1u, e.height >> level)),
+                      int32_t(std::max(1u, e.depth >> level))};
+  };
+  for (uint32_t level = 1; level < levels; ++level) {
+    // Level - 1 was just written (by the upload or the previous blit): read it from here on.
+    transition(cmd, image.handle(), use::TransferDst, use::TransferSrc, image.desc().aspect, level - 1, 1);
+    VkImageBlit2 region{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
+    region.srcSubresource = {image.desc().aspect, level - 1, 0, 1};
+    region.srcOffsets[1] = size(level - 1);
+    region.dstSubresource = {image.desc().aspect, level, 0, 1};
+    region.dstOffsets[1] = size(level);
+    VkBlitImageInfo2 info{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
+    info.srcImage = info.dstImage = image.handle();
+    info.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    info.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    info.regionCount = 1;
+    info.pRegions = &region;
+    info.filter = VK_FILTER_LINEAR;
+    vkCmdBlitImage2(cmd, &info);
+  }
+  // All but the last level are now sources; bring every level to one state, then to `after`.
+  transition(cmd, image.handle(), use::TransferDst, use::TransferSrc, image.desc().aspect, levels - 1, 1);
+  image.assumeUse(use::TransferSrc);
+  image.use(cmd, after);
 }
 
 void checkImageSize(const Device& device, VkExtent2D extent) {

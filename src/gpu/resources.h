@@ -1,17 +1,22 @@
 #pragma once
 // Buffers and images, one dedicated allocation each. Vitrine's resources are few and large, so a
 // general-purpose sub-allocator would add code without saving anything measurable.
+//
+// Each buffer and image remembers how it was last used. `use(cmd, next)` records the barrier from
+// that use to `next` (none between two reads) and remembers `next`: barriers are derived, not written.
+#include "gpu/barriers.h"
 #include "gpu/device.h"
 
 #include <span>
 #include <string>
+#include <vector>
 
 namespace vitrine::gpu {
 
 enum class MemoryUse {
   Device,    // GPU-only
   Upload,    // host-visible, written by the CPU each frame (mapped for the buffer's lifetime)
-  Readback,  // host-visible and cached, read by the CPU after a fence
+  Readback,  // host-visible and cached, read by the CPU after the submission finished
 };
 
 class Buffer {
@@ -29,12 +34,16 @@ class Buffer {
   void invalidate() const;
   explicit operator bool() const { return static_cast<bool>(buffer_); }
 
+  void use(VkCommandBuffer cmd, const BufferUse& next);
+  const BufferUse& lastUse() const { return last_; }
+
  private:
   const Device* device_ = nullptr;
   Unique<VkBuffer> buffer_;
   Unique<VkDeviceMemory> memory_;
   VkDeviceSize size_ = 0;
   void* mapped_ = nullptr;
+  BufferUse last_ = use::BufferNone;
 };
 
 struct ImageDesc {
@@ -44,7 +53,10 @@ struct ImageDesc {
   VkImageType type = VK_IMAGE_TYPE_2D;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  uint32_t mips = 1;  // 0: the full chain down to 1x1
 };
+
+uint32_t fullMipCount(VkExtent3D extent);
 
 class Image {
  public:
@@ -52,21 +64,39 @@ class Image {
   Image(const Device& device, const ImageDesc& desc, const std::string& name);
 
   VkImage handle() const { return image_; }
-  VkImageView view() const { return view_; }
-  const ImageDesc& desc() const { return desc_; }
+  VkImageView view() const { return view_; }  // every mip level
+  VkImageView mipView(uint32_t level) const;  // one level, for storage writes into a chain
+  const ImageDesc& desc() const { return desc_; }  // desc().mips is the actual count
   VkExtent2D extent2d() const { return {desc_.extent.width, desc_.extent.height}; }
+  VkExtent3D extent() const { return desc_.extent; }
+  VkFormat format() const { return desc_.format; }
+  const std::string& name() const { return name_; }
   explicit operator bool() const { return static_cast<bool>(image_); }
+
+  // The barrier from the last use to `next` (skipped between reads in one layout), then remembers `next`.
+  void use(VkCommandBuffer cmd, const ImageUse& next);
+  // The contents are not needed any more: the next use transitions from UNDEFINED.
+  void discard() { last_.layout = VK_IMAGE_LAYOUT_UNDEFINED; }  // stages and accesses still order the next write
+  const ImageUse& lastUse() const { return last_; }
+  // For passes that change layouts level by level (mip generation): what all levels are in now.
+  void assumeUse(const ImageUse& use) { last_ = use; }
 
  private:
   ImageDesc desc_;
+  std::string name_;
   Unique<VkImage> image_;
   Unique<VkDeviceMemory> memory_;
   Unique<VkImageView> view_;
+  std::vector<Unique<VkImageView>> mipViews_;
+  ImageUse last_ = use::Discard;
 };
 
-// Records a copy of a 2D colour image in TRANSFER_SRC layout into a host-readable buffer, and the
-// barrier that makes it visible to the CPU once the submission's fence has signalled.
-void recordReadback(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);
+// Records a copy of a 2D colour image into a host-readable buffer, with the barriers that make it
+// visible to the CPU once the submission has finished.
+void recordReadback(VkCommandBuffer cmd, Image& image, Buffer& buffer);
+
+// Fills levels 1.. of an image from level 0 by successive linear blits; leaves every level in `after`.
+void generateMips(VkCommandBuffer cmd, Image& image, const ImageUse& after);
 
 // Checks a requested 2D size against the device's limit, with a message naming both.
 void checkImageSize(const Device& device, VkExtent2D extent);

@@ -12,6 +12,16 @@ Unique<VkSemaphore> createSemaphore(const Device& device, const std::string& nam
   return Unique<VkSemaphore>(device, semaphore);
 }
 
+Unique<VkSemaphore> createTimelineSemaphore(const Device& device, const std::string& name) {
+  const VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO, nullptr,
+                                       VK_SEMAPHORE_TYPE_TIMELINE, 0};
+  const VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type};
+  VkSemaphore semaphore;
+  VK_CHECK(vkCreateSemaphore(device, &info, nullptr, &semaphore));
+  device.name(semaphore, VK_OBJECT_TYPE_SEMAPHORE, name);
+  return Unique<VkSemaphore>(device, semaphore);
+}
+
 Unique<VkFence> createFence(const Device& device, bool signalled, const std::string& name) {
   VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   if (signalled) info.flags = VK_FENCE_CREATE_SIGNALED_BIT;

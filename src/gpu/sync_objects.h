@@ -8,6 +8,7 @@
 namespace vitrine::gpu {
 
 Unique<VkSemaphore> createSemaphore(const Device& device, const std::string& name);
+Unique<VkSemaphore> createTimelineSemaphore(const Device& device, const std::string& name);  // starts at 0
 Unique<VkFence> createFence(const Device& device, bool signalled, const std::string& name);
 Unique<VkCommandPool> createCommandPool(const Device& device, VkCommandPoolCreateFlags flags, const std::string& name);
 

@@ -29,7 +29,7 @@ struct SceneResult {
 
 SceneResult benchScene(const gpu::Device& device, const Options& options, const std::string& scene) {
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
-                         options.reducedMotion, options.parameters};
+                         options.reducedMotion, {}, options.parameters};
   Offscreen offscreen(device, config);
   // Warm-up: pipeline compilation, clocks ramping, caches; not counted.
   for (uint32_t i = 0; i < options.warmup; ++i) offscreen.renderFrame();

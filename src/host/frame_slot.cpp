@@ -10,7 +10,6 @@ namespace vitrine::host {
 FrameSlot::FrameSlot(const gpu::Device& device, uint32_t index)
     : device_(&device),
       pool_(gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, fmt::format("frame {} pool", index))),
-      done_(gpu::createFence(device, true, fmt::format("frame {} done", index))),  // signalled: nothing to wait for yet
       imageAcquired_(gpu::createSemaphore(device, fmt::format("frame {} image acquired", index))) {
   const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
                                           VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
@@ -19,13 +18,10 @@ FrameSlot::FrameSlot(const gpu::Device& device, uint32_t index)
 }
 
 void FrameSlot::wait() const {
-  VkFence fence = done_;
-  VK_CHECK(vkWaitForFences(*device_, 1, &fence, VK_TRUE, UINT64_MAX));
+  if (serial_) device_->wait(serial_);
 }
 
 VkCommandBuffer FrameSlot::begin() {
-  VkFence fence = done_;
-  VK_CHECK(vkResetFences(*device_, 1, &fence));
   VK_CHECK(vkResetCommandPool(*device_, pool_, 0));
   const VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
                                       VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
@@ -35,19 +31,10 @@ VkCommandBuffer FrameSlot::begin() {
 
 void FrameSlot::submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished) {
   VK_CHECK(vkEndCommandBuffer(cmd_));
-  const VkSemaphoreSubmitInfo wait{
-      VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0};
-  const VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0,
-                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,    0};
-  const VkCommandBufferSubmitInfo commands{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd_, 0};
-  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit.waitSemaphoreInfoCount = 1;
-  submit.pWaitSemaphoreInfos = &wait;
-  submit.commandBufferInfoCount = 1;
-  submit.pCommandBufferInfos = &commands;
-  submit.signalSemaphoreInfoCount = 1;
-  submit.pSignalSemaphoreInfos = &signal;
-  VK_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, done_));
+  serial_ = device_->submit(
+      {cmd_,
+       {{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0}},
+       {{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0}}});
 }
 
 }  // namespace vitrine::host

@@ -1,7 +1,7 @@
 #pragma once
 // What one frame in flight owns, so the CPU can record a frame while the GPU still runs the previous
-// one: a command pool and buffer, the fence that says the GPU is done with them, and the semaphore
-// its swapchain image is acquired with (free again once that fence has signalled).
+// one: a command pool and buffer, the serial of its last submission (the device's timeline says when
+// the GPU is done with them), and the semaphore its swapchain image is acquired with.
 #include "gpu/device.h"
 
 namespace vitrine::host {
@@ -20,7 +20,7 @@ class FrameSlot {
   const gpu::Device* device_;
   gpu::Unique<VkCommandPool> pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;  // freed with the pool
-  gpu::Unique<VkFence> done_;
+  uint64_t serial_ = 0;                   // 0: nothing submitted yet
   gpu::Unique<VkSemaphore> imageAcquired_;
 };
 

@@ -14,6 +14,8 @@
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
+#include "host/gallery_settings.h"
+#include "host/param_panel.h"
 #include "host/menu.h"
 #include "host/modes.h"
 #include "host/overlay.h"
@@ -48,6 +50,23 @@ const SceneInfo* sceneForKey(int key) {
   return nullptr;
 }
 
+// Each value checked by the scene's schema on a default settings struct, before the scene exists.
+std::string checkValues(const SceneInfo& info, const params::KeyValues& values) {
+  const auto scratch = info.schema().makeDefaults();
+  return params::apply({&info.schema(), scratch.get()}, values);
+}
+
+// --set/--preset entries for `scene`: those naming it, and the unqualified ones when it is the
+// scene the gallery starts with.
+params::KeyValues parametersFor(const Options& options, std::string_view scene, std::string_view first) {
+  params::KeyValues values;
+  for (const auto& [key, value] : options.parameters)
+    if (scene == first) values.emplace_back(key, value);
+  return values;
+}
+
+std::vector<std::string> presetsFor(const Options&, std::string_view, std::string_view) { return {}; }
+
 double secondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
@@ -68,6 +87,8 @@ class Gallery {
   void collect(uint32_t slot);
   void showMenu();
   void pollShaders();
+  void applyEdit(const PanelEdit& edit);
+  void rememberValues();
 
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
@@ -76,6 +97,7 @@ class Gallery {
   Surface surface_;
   gpu::Device device_;
   gpu::ProgramLibrary programs_;
+  GallerySettings settings_;
   SceneRenderer renderer_;
   Swapchain swapchain_;
   Overlay overlay_;
@@ -91,6 +113,7 @@ class Gallery {
 
   bool vsync_;
   bool uiHidden_ = false;
+  bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;
   Clock::time_point lastFrame_ = Clock::now();
   Clock::time_point lastShaderPoll_ = Clock::now();
@@ -98,6 +121,8 @@ class Gallery {
   double cpuMs_ = 0.0;
   std::vector<gpu::PassTime> passes_;
   std::string screenshotNote_;
+  ParamPanel panel_;
+  std::string panelError_;  // why the last edit was refused
 };
 
 Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
@@ -106,7 +131,8 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
       programs_(device_),
-      renderer_(device_, programs_, kFramesInFlight),
+      settings_(params::defaultSettingsPath(), options.resetSettings),
+      renderer_(device_, programs_, assets_, kFramesInFlight),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
                {assets_.font("Fraunces"), assets_.font("CormorantSC")}),
@@ -118,8 +144,27 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
+  for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
+  // --preset and --set apply over the saved values of the scenes they name, checked before a window
+  // shows anything; like edits in the panel, they are remembered.
+  for (const SceneInfo& info : sceneRegistry()) {
+    const std::string_view first = firstScene.name;
+    params::KeyValues values = settings_.valuesFor(info.name);
+    bool named = false;
+    for (const auto& preset : presetsFor(options, info.name, first)) {
+      const params::Preset* found = info.schema().findPreset(preset);
+      if (!found) throw Error(fmt::format("Scene {} has no preset '{}'; vitrine --list-params {} lists them.",
+                                          info.name, preset, info.name));
+      values.insert(values.end(), found->values.begin(), found->values.end());
+      named = true;
+    }
+    for (auto& kv : parametersFor(options, info.name, first)) values.push_back(std::move(kv)), named = true;
+    if (!named) continue;
+    if (auto why = checkValues(info, values); !why.empty())
+      throw Error(fmt::format("Scene {} rejects {}", info.name, why));
+    settings_.remember(info.name, std::move(values), Clock::now());
+  }
   switchScene(firstScene);
-  renderer_.applyParameters(options.parameters);  // --set applies to the first scene
 }
 
 int Gallery::run() {
@@ -171,8 +216,18 @@ void Gallery::handleKeys() {
 }
 
 void Gallery::switchScene(const SceneInfo& info) {
-  device_.waitIdle();  // the old scene's resources may still be in use by frames in flight
-  renderer_.setScene(info);
+  if (hasScene_) rememberValues();  // switching back restores them
+  renderer_.setScene(info);  // the old scene is retired behind the frames still using it
+  hasScene_ = true;
+  panel_.forget();
+  panelError_.clear();
+  if (auto why = renderer_.applyParameters(settings_.valuesFor(info.name)); !why.empty()) {
+    // Saved values that do not fit together on this device (each one was valid on its own).
+    std::fprintf(stderr, "vitrine: settings for %.*s not used (%s); starting from the defaults\n",
+                 int(info.name.size()), info.name.data(), why.c_str());
+    params::resetToDefaults(renderer_.parameters());
+  }
+  settings_.showing(info.name, Clock::now());
   input_.frame = 0;
   input_.time = 0.0;
   steps_.restart();
@@ -193,6 +248,7 @@ void Gallery::frame() {
   if (!image) return;  // out of date: rebuilt at the start of the next frame
 
   const auto start = Clock::now();
+  settings_.tick(start);
   overlay_.beginFrame();  // first: its view of this frame's clicks decides which belong to the scene
   simulate();
   showMenu();
@@ -239,9 +295,27 @@ void Gallery::showMenu() {
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
   const MenuChoice choice =
       drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
-                         screenshotNote_, missingAssets_, overlay_.titleFont()});
+                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_});
   vsync_ = choice.vsync;
   if (choice.scene) nextScene_ = choice.scene;
+  if (choice.edit) applyEdit(*choice.edit);
+}
+
+// Every panel edit goes through the same validation as --set; a refused one leaves every value as it was.
+void Gallery::applyEdit(const PanelEdit& edit) {
+  switch (edit.what) {
+    case PanelEdit::What::Values: panelError_ = renderer_.applyParameters(edit.values); break;
+    case PanelEdit::What::Preset: panelError_ = renderer_.applyPreset(edit.preset); break;
+    case PanelEdit::What::ResetAll:
+      params::resetToDefaults(renderer_.parameters());
+      panelError_.clear();
+      break;
+  }
+  rememberValues();
+}
+
+void Gallery::rememberValues() {
+  settings_.remember(renderer_.info().name, params::snapshot(renderer_.parameters()), Clock::now());
 }
 
 // Shader sources are polled a couple of times a second: often enough to feel live, rarely enough

@@ -52,7 +52,10 @@ MenuChoice drawMenu(const MenuState& state) {
     ImGui::Separator();
     choice.scene = drawSceneList(state.current, state.titleFont);
     const std::string header = fmt::format("{}###scene panel", state.current.title);
-    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) state.scene.drawPanel();
+    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), std::string(state.panelError));
+      state.scene.drawPanel();
+    }
     if (!state.shaderError.empty()) {
       ImGui::Separator();
       ImGui::PushStyleColor(ImGuiCol_Text, kErrorRed);

@@ -2,8 +2,10 @@
 // The gallery's menu: scenes, timings, vsync, the current scene's own panel, and what went wrong.
 // It only draws and reports what was chosen; the frame loop decides what a choice changes.
 #include "gpu/pass_timer.h"
+#include "host/param_panel.h"
 #include "scenes/scene.h"
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,11 +25,14 @@ struct MenuState {
   std::string_view screenshot;   // where the last screenshot went
   std::span<const std::string> missingAssets;  // what set-up could not fetch, and what stands in
   ImFont* titleFont = nullptr;                 // for scene names; null: the body font
+  ParamPanel* panel = nullptr;                 // the scene's parameters, from its schema
+  std::string_view panelError;                 // why the last edit was refused
 };
 
 struct MenuChoice {
   const SceneInfo* scene = nullptr;  // a scene to start afresh (the current one restarts)
   bool vsync = true;
+  std::optional<PanelEdit> edit;     // what the user changed in the parameter panel
 };
 
 MenuChoice drawMenu(const MenuState& state);

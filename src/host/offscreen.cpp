@@ -11,12 +11,16 @@
 namespace vitrine::host {
 
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
-    : device_(device), programs_(device), renderer_(device, programs_, 1), size_(config.size) {
+    : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size) {
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
   renderer_.setScene(*info);
-  renderer_.applyParameters(config.parameters);
+  for (const std::string& preset : config.presets)
+    if (auto why = renderer_.applyPreset(preset); !why.empty())
+      throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, preset, why));
+  if (auto why = renderer_.applyParameters(config.parameters); !why.empty())
+    throw Error(fmt::format("Scene {} rejects {}", config.scene, why));
   input_.time = config.startTime;
   input_.seed = config.seed;
   input_.reducedMotion = config.reducedMotion;
@@ -31,10 +35,8 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
                                           VK_COMMAND_BUFFER_LEVEL_PRIMARY, 1};
   VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &cmd_));
   device.name(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "offscreen frame");
-  fence_ = gpu::createFence(device, false, "offscreen frame done");
 }
 
-Offscreen::~Offscreen() { vkDeviceWaitIdle(device_); }
 
 FrameTimes Offscreen::renderFrame() {
   const auto start = std::chrono::steady_clock::now();
@@ -43,19 +45,14 @@ FrameTimes Offscreen::renderFrame() {
   const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
                                        VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
   VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
-  const gpu::ImageUse before = rendered_ ? gpu::use::TransferSrc : gpu::use::Discard;
+  output_.discard();  // every texel is written
   renderer_.record(cmd_, 0, input_,
-                   BlitDestination{output_.handle(), size_, before, gpu::use::TransferSrc, output_.view()});
+                   BlitDestination{output_.handle(), size_, output_.lastUse(), gpu::use::TransferSrc, output_.view()});
+  output_.assumeUse(gpu::use::TransferSrc);
   VK_CHECK(vkEndCommandBuffer(cmd_));
-  const VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, cmd_, 0};
-  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit.commandBufferInfoCount = 1;
-  submit.pCommandBufferInfos = &cmdInfo;
-  VkFence fence = fence_;
-  VK_CHECK(vkResetFences(device_, 1, &fence));
-  VK_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, fence));
+  const uint64_t serial = device_.submit({cmd_, {}, {}});
   const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+  device_.wait(serial);
   rendered_ = true;
 
   FrameTimes times;
@@ -68,7 +65,7 @@ FrameTimes Offscreen::renderFrame() {
   return times;
 }
 
-ImageRgba Offscreen::readback() const {
+ImageRgba Offscreen::readback() {
   if (!rendered_) throw Error("No frame has been rendered to read back");
   const size_t count = size_t(size_.width) * size_.height;
   gpu::Buffer staging(device_, count * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,

@@ -16,7 +16,8 @@ struct OffscreenConfig {
   double startTime = 0.0;
   uint32_t seed = 0;
   bool reducedMotion = false;
-  std::vector<std::pair<std::string, std::string>> parameters;  // applied in order after creation
+  std::vector<std::string> presets;  // applied in order after creation, before the parameters
+  params::KeyValues parameters;      // applied together after the presets
 };
 
 struct FrameTimes {
@@ -28,22 +29,21 @@ struct FrameTimes {
 class Offscreen {
  public:
   Offscreen(const gpu::Device& device, const OffscreenConfig& config);
-  ~Offscreen();
 
   FrameTimes renderFrame();
-  ImageRgba readback() const;  // the output of the last frame
+  ImageRgba readback();  // the output of the last frame
   uint64_t frames() const { return input_.frame; }
   const SceneInfo& scene() const { return renderer_.info(); }
 
  private:
   const gpu::Device& device_;
+  Assets assets_ = Assets::locate();
   gpu::ProgramLibrary programs_;
   SceneRenderer renderer_;
   VkExtent2D size_;
   gpu::Image output_;
   gpu::Unique<VkCommandPool> pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-  gpu::Unique<VkFence> fence_;
   FrameInput input_;
   bool rendered_ = false;
 };

@@ -140,6 +140,7 @@ Overlay::Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format,
 }
 
 void Overlay::attach(const Swapchain& swapchain) {
+  if (!framebuffers_.empty()) device_.retire(std::move(framebuffers_));  // frames in flight still use them
   framebuffers_.clear();
   extent_ = swapchain.extent();
   for (uint32_t i = 0; i < swapchain.imageCount(); ++i) {

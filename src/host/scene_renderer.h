@@ -1,15 +1,17 @@
 #pragma once
 // The part of a frame that is the same in the gallery, headless and bench modes: keep the HDR target
-// at the scene's render scale, let the scene record its passes, then scale the target onto the
-// caller's image (a swapchain image, or the offscreen output) in a compute pass when the image
-// allows storage writes, else with a blit. The target ends every frame in TRANSFER_SRC layout.
+// and the scene's declared images at the scene's render scale, let the scene record its passes, then
+// scale the target onto the caller's image (a swapchain image, or the offscreen output) in a compute
+// pass when the image allows storage writes, else with a blit. Nothing here waits for the device:
+// replaced targets and whole scenes are retired until the frames that used them have finished.
 #include "gpu/barriers.h"
+#include "gpu/frame_resources.h"
 #include "gpu/resources.h"
+#include "gpu/stream.h"
 #include "scenes/scene.h"
 
+#include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace vitrine::host {
 
@@ -24,18 +26,24 @@ struct BlitDestination {
 
 class SceneRenderer {
  public:
-  SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& programs, uint32_t framesInFlight);
+  SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& programs, const Assets& assets,
+                uint32_t framesInFlight);
+  ~SceneRenderer();
 
-  // Creates the scene; throws vitrine::Error if its set-up fails.
+  // Creates the scene (the previous one is retired, not waited for); throws vitrine::Error if its
+  // set-up fails.
   void setScene(const SceneInfo& info);
   Scene& scene() { return *scene_; }
-  // "--set key=value" for the current scene; throws vitrine::Error naming a rejected one.
-  void applyParameters(const std::vector<std::pair<std::string, std::string>>& parameters);
+  params::Bound parameters() { return scene_->parameters(); }
+  // key=value pairs for the current scene, judged together (the scene's cross-parameter check runs
+  // once on the final values); on failure nothing changes and the reason is returned.
+  std::string applyParameters(const params::KeyValues& values);
+  std::string applyPreset(std::string_view name);
   const SceneInfo& info() const { return *info_; }
   gpu::PassTimer& timer() { return timer_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst);
-  const gpu::Image& target() const { return target_; }
+  gpu::Image& target() { return target_; }
 
  private:
   void ensureTarget(VkExtent2D output);
@@ -43,13 +51,16 @@ class SceneRenderer {
   void present(VkCommandBuffer cmd, const BlitDestination& dst);
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
+  const Assets& assets_;
   uint32_t framesInFlight_;
   gpu::PassTimer timer_;
+  gpu::StreamArena stream_;
   gpu::ComputeProgram present_;
-  gpu::Unique<VkSampler> sampler_;
   const SceneInfo* info_ = nullptr;
+  std::unique_ptr<gpu::FrameResources> resources_;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;
+  VkExtent2D sceneExtent_{0, 0};  // what the scene and its images were last sized for
 };
 
 }  // namespace vitrine::host

@@ -24,7 +24,7 @@ std::string stemFor(std::string_view scene) {
 Screenshots::Screenshots(const gpu::Device& device, uint32_t framesInFlight, std::filesystem::path folder)
     : device_(device), folder_(std::move(folder)), pending_(framesInFlight) {}
 
-void Screenshots::record(VkCommandBuffer cmd, uint32_t slot, const gpu::Image& target, std::string_view scene,
+void Screenshots::record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target, std::string_view scene,
                          gpu::PassTimer* timer) {
   if (!requested_) return;
   requested_ = false;
@@ -33,7 +33,6 @@ void Screenshots::record(VkCommandBuffer cmd, uint32_t slot, const gpu::Image& t
   Pending shot{gpu::Buffer(device_, VkDeviceSize(extent.width) * extent.height * 4 * sizeof(uint16_t),
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "screenshot readback"),
                extent, stemFor(scene)};
-  // Only reads follow the renderer's barrier to TRANSFER_SRC, so none is needed before this one.
   gpu::recordReadback(cmd, target, shot.pixels);
   pending_[slot] = std::move(shot);
 }

@@ -19,7 +19,7 @@ class Screenshots {
 
   void request() { requested_ = true; }
   // After the scene renderer, which leaves `target` a transfer source: copies it if one was requested.
-  void record(VkCommandBuffer cmd, uint32_t slot, const gpu::Image& target, std::string_view scene,
+  void record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target, std::string_view scene,
               gpu::PassTimer* timer);
   // Once `slot`'s fence has signalled: writes the screenshot taken in it, if any, and says how that went.
   std::optional<std::string> collect(uint32_t slot);

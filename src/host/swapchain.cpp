@@ -70,10 +70,7 @@ bool Swapchain::fits(VkExtent2D framebuffer, bool vsync) const {
   return !stale_ && vsync == vsync_ && framebuffer.width == builtFor_.width && framebuffer.height == builtFor_.height;
 }
 
-void Swapchain::recreate(VkExtent2D framebuffer, bool vsync) {
-  device_.waitIdle();  // frames in flight still use the old images and semaphores
-  build(framebuffer, vsync);
-}
+void Swapchain::recreate(VkExtent2D framebuffer, bool vsync) { build(framebuffer, vsync); }
 
 VkPresentModeKHR Swapchain::presentMode(bool vsync) const {
   if (vsync) return VK_PRESENT_MODE_FIFO_KHR;  // the one mode every driver has
@@ -115,7 +112,14 @@ void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
   info.oldSwapchain = swapchain_;
   VkSwapchainKHR swapchain;
   VK_CHECK(vkCreateSwapchainKHR(device_, &info, nullptr, &swapchain));
-  swapchain_ = gpu::Unique<VkSwapchainKHR>(device_, swapchain);  // retires and destroys the old one
+  // Frames in flight still use the old swapchain's images, views and semaphores: retire them
+  // behind those frames instead of waiting for the device.
+  if (swapchain_) {
+    device_.retire(std::move(renderFinished_));
+    device_.retire(std::move(views_));
+    device_.retire(std::move(swapchain_));
+  }
+  swapchain_ = gpu::Unique<VkSwapchainKHR>(device_, swapchain);
   device_.name(swapchain, VK_OBJECT_TYPE_SWAPCHAIN_KHR, "swapchain");
 
   uint32_t count = 0;

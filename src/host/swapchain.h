@@ -17,7 +17,7 @@ class Swapchain {
 
   // False when the surface has moved on: resized, suboptimal, or a different vsync asked for.
   bool fits(VkExtent2D framebuffer, bool vsync) const;
-  void recreate(VkExtent2D framebuffer, bool vsync);  // waits for the device to go idle first
+  void recreate(VkExtent2D framebuffer, bool vsync);  // the old one is retired, not waited for
 
   // The next image to draw, signalling `acquired` when it may be written; empty when out of date.
   std::optional<uint32_t> acquire(VkSemaphore acquired);

@@ -1,8 +1,14 @@
 #pragma once
-// What a scene is to the host: a name, a title, a number key and a lifecycle. Scenes see the device,
-// the program library and the frame they are asked to draw; nothing else of the host.
+// What a scene is to the host: a name, a title, a number key, its parameter schema and a lifecycle.
+// Scenes see the device, the program library, their declared images, the assets and the frame they
+// are asked to draw; nothing else of the host.
+#include "core/assets.h"
+#include "gpu/frame_resources.h"
 #include "gpu/pass_timer.h"
 #include "gpu/program.h"
+#include "gpu/rendering.h"
+#include "gpu/stream.h"
+#include "params/schema.h"
 
 #include <glm/vec2.hpp>
 
@@ -33,30 +39,39 @@ struct FrameInput {
   std::vector<int> keysPressed;  // GLFW key codes pressed this frame (gallery only)
 };
 
-// The HDR image a scene draws into: rgba16f, linear, in VK_IMAGE_LAYOUT_GENERAL, contents undefined
-// at the start of the frame. Usable as storage image, colour attachment, sampled image and blit source.
-struct RenderTarget {
-  VkImage image = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-  VkExtent2D extent{};
-  VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
-};
-
 struct FrameContext {
   const gpu::Device& device;
   VkCommandBuffer cmd;
   gpu::PassTimer* timer;
-  const RenderTarget& target;
+  // The HDR image the scene draws into: rgba16f, linear, contents undefined at the start of the
+  // frame. Usable as storage image, colour attachment (or resolve target) and sampled image.
+  gpu::Image& target;
+  gpu::FrameResources& resources;  // the images the scene declared
+  gpu::StreamArena& stream;        // per-frame CPU-written memory (uniform blocks, uploads)
   const FrameInput& input;
   uint32_t slot;  // frame-in-flight index, for per-frame resources
 
   // A labelled, timestamped GPU pass for the scope of the returned object.
   gpu::Pass pass(const char* name) const { return gpu::Pass(device, timer, cmd, name); }
+  // The barrier from the resource's last use to `use` is derived; nothing else to write.
+  void transition(gpu::Image& image, const gpu::ImageUse& use) const { image.use(cmd, use); }
+  void transition(gpu::Buffer& buffer, const gpu::BufferUse& use) const { buffer.use(cmd, use); }
+  gpu::Image& image(gpu::ImageHandle handle) const { return resources.current(handle); }
+  // Colour/depth attachments transitioned, rendering begun, viewport and scissor set; ends with scope.
+  gpu::Rendering rendering(const gpu::RenderingDesc& desc) const { return gpu::Rendering(cmd, desc); }
+  // A uniform or parameter block for this frame.
+  template <typename T> gpu::StreamSlice uniform(const T& value) const { return stream.writeValue(value); }
+  void upload(gpu::Buffer& buffer, VkDeviceSize offset, std::span<const std::byte> data,
+              const gpu::BufferUse& after) const {
+    gpu::uploadBuffer(cmd, stream, buffer, offset, data, after);
+  }
 };
 
 struct SceneContext {
   const gpu::Device& device;
   gpu::ProgramLibrary& programs;
+  gpu::FrameResources& resources;  // declare images here; the host owns and resizes them
+  const Assets& assets;            // fonts, panoramas, files named on the command line
   uint32_t framesInFlight = 1;
 };
 
@@ -66,11 +81,12 @@ class Scene {
   virtual void resize(VkExtent2D /*target*/) {}
   virtual void update(const FrameInput& input) = 0;  // once per fixed step
   virtual void record(const FrameContext& frame) = 0;
-  virtual void drawPanel() {}  // Dear ImGui widgets, gallery only
-  // "--set key=value" and the tests' way to change a parameter; false when the key is unknown or the
-  // value malformed, with the reason in *error.
-  virtual bool setParameter(std::string_view key, std::string_view value, std::string* error) = 0;
-  virtual std::vector<std::string> parameterNames() const = 0;
+  virtual void drawPanel() {}  // extra Dear ImGui read-outs below the parameter panel, gallery only
+  // The scene's parameters: its schema (SceneInfo::schema) bound to its settings struct.
+  virtual params::Bound parameters() = 0;
+  // Checks that span several parameters, run once on the final values of every change (noodles'
+  // memory budget); a non-empty reason rejects the whole change.
+  virtual std::string checkParameters() const { return {}; }
   virtual float renderScale() const { return 1.0f; }  // fraction of the output the target covers
 };
 
@@ -79,6 +95,7 @@ struct SceneInfo {
   std::string_view title;  // "Volumetric KIFS": shown in the menu
   int key;                 // number key 1..9 in the gallery
   std::unique_ptr<Scene> (*create)(const SceneContext&);
+  const params::Schema& (*schema)();  // the parameter declarations, no instance or GPU needed
 };
 
 std::span<const SceneInfo> sceneRegistry();

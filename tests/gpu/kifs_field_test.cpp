@@ -33,9 +33,9 @@ TEST_F(KifsField, ShaderMatchesTheCppReference) {
   device().submitNow([&](VkCommandBuffer cmd) {
     probe.bind(cmd);
     probe.push(cmd, gpu::Bindings().storageBuffer(input.handle()).storageBuffer(output.handle()));
+    output.use(cmd, gpu::use::ComputeWriteBuffer);
     vkCmdDispatch(cmd, uint32_t(points.size() + 63) / 64, 1, 1);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    output.use(cmd, gpu::use::HostReadBuffer);
   });
   output.invalidate();
   const auto samples = output.view<glm::vec4>();

@@ -21,18 +21,18 @@ class NoodlesGpu : public test::GpuTest {
     gpu::ProgramLibrary programs(device());
     const IntegratePass pass(programs);
     const StrandLayout layout = planStrands(settings.grid, settings.segments, budget);
-    const gpu::Buffer nodes(device(), layout.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    gpu::Buffer nodes(device(), layout.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                             gpu::MemoryUse::Device, "test nodes");
-    const gpu::Buffer readback(device(), layout.bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+    gpu::Buffer readback(device(), layout.bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
                                "test node readback");
     device().submitNow([&](VkCommandBuffer cmd) {
+      nodes.use(cmd, gpu::use::ComputeWriteBuffer);
       pass.record(cmd, layout, nodes.handle(), settings);
-      gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+      nodes.use(cmd, gpu::use::TransferSrcBuffer);
+      readback.use(cmd, gpu::use::TransferDstBuffer);
       const VkBufferCopy copy{0, 0, layout.bytes};
       vkCmdCopyBuffer(cmd, nodes.handle(), readback.handle(), 1, &copy);
-      gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+      readback.use(cmd, gpu::use::HostReadBuffer);
     });
     readback.invalidate();
     const auto raw = readback.view<const PackedNode>();

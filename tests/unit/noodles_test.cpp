@@ -415,23 +415,40 @@ TEST(NoodlesSettings, GridForms) {
   for (const char* bad : {"", "0", "4x", "x4", "1x2x3x4", "-3", "5000", "4y4"}) EXPECT_FALSE(parseGrid(bad, grid, &error)) << bad;
 }
 
-TEST(NoodlesSettings, EveryNamedParameterParses) {
+TEST(NoodlesSettings, EveryNamedParameterParsesThroughTheSchema) {
   NoodleSettings s;
-  std::string error;
-  EXPECT_TRUE(applyParameter(s, "frames", "up", &error));
+  const params::Bound bound{&schema(), &s};
+  EXPECT_EQ(params::apply(bound, {{"frames", "up"}, {"integrator", "rk4"}, {"msaa", "off"}}), "");
   EXPECT_EQ(s.frames, FrameMethod::Up);
-  EXPECT_TRUE(applyParameter(s, "integrator", "rk4", &error));
   EXPECT_EQ(s.integrator, Integrator::Rk4);
-  EXPECT_TRUE(applyParameter(s, "msaa", "off", &error));
   EXPECT_FALSE(s.msaa);
-  EXPECT_FALSE(applyParameter(s, "field", "gradient", &error));
-  EXPECT_NE(error.find("curl"), std::string::npos);
-  EXPECT_FALSE(applyParameter(s, "step", "2", &error));
-  EXPECT_FALSE(applyParameter(s, "nonsense", "1", &error));
-  float orbit[3];
+  EXPECT_NE(params::apply(bound, {{"field", "gradient"}}).find("curl"), std::string::npos);
+  EXPECT_NE(params::apply(bound, {{"step", "2"}}), "");
+  EXPECT_NE(params::apply(bound, {{"nonsense", "1"}}), "");
+  EXPECT_EQ(params::apply(bound, {{"grid", "32x16"}}), "");
+  EXPECT_EQ(s.grid, glm::uvec3(32, 16, 1));
+  EXPECT_EQ(schema().find("grid")->format(&s), "32x16x1");
+  // Every key of the old command line is still there, so scripts and goldens keep working.
+  for (const char* key : {"grid", "segments", "step", "noise_scale", "spacing", "radius", "speed", "lift", "field",
+                          "integrator", "tangent", "frames", "colour", "stripe", "msaa", "orbit"})
+    EXPECT_NE(schema().find(key), nullptr) << key;
+}
+
+TEST(NoodlesSettings, OrbitPinsAndUnpins) {
+  OrbitPin orbit;
+  std::string error;
   EXPECT_TRUE(parseOrbit("0.5,-0.2,3", orbit, &error));
-  EXPECT_FLOAT_EQ(orbit[2], 3.0f);
+  EXPECT_TRUE(orbit.pinned);
+  EXPECT_FLOAT_EQ(orbit.distance, 3.0f);
+  EXPECT_EQ(formatOrbit(orbit), "0.5,-0.2,3");
   EXPECT_FALSE(parseOrbit("0.5,-0.2", orbit, &error));
+  EXPECT_FALSE(parseOrbit("0.5,1.6,3", orbit, &error)) << "elevation beyond the look-at limit";
+  EXPECT_FALSE(parseOrbit("0.5,0.2,0", orbit, &error)) << "distance must be positive";
+  EXPECT_FALSE(parseOrbit("nan,0.2,1", orbit, &error));
+  EXPECT_TRUE(parseOrbit("off", orbit, &error));
+  EXPECT_FALSE(orbit.pinned);
+  EXPECT_EQ(schema().find("orbit")->defaultText, "off");
+  EXPECT_TRUE(schema().find("orbit")->has(params::kTransient)) << "a pinned camera is not saved";
 }
 
 // ------------------------------------------------------------------------------- camera and colour

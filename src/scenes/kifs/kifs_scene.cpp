@@ -3,7 +3,6 @@
 
 #include "scenes/kifs/kifs_math.h"
 #include "scenes/kifs/quality.h"
-#include "scenes/parameters.h"
 
 #include <imgui.h>
 
@@ -12,10 +11,39 @@
 namespace vitrine::kifs {
 namespace {
 
-constexpr std::array<const char*, kStepCount> kStageNames = {
-    "1 glowing sphere",  "2 under-stepped march", "3 hard union", "4 smooth union",          "5 domain warp",
+const std::vector<std::string> kStageNames = {
+    "1 glowing sphere",  "2 under-stepped march", "3 hard union",      "4 smooth union",          "5 domain warp",
     "6 fold + scale",    "7 orbit trap",          "8 ACES + vignette", "9 jitter + grain (final)"};
-constexpr std::array<const char*, 4> kTierNames = {"auto", "high", "medium", "low"};
+
+struct Settings {
+  int step = kStepCount;
+  Tier tier = Tier::High;
+  float targetMs = 8.0f;
+  float dragX = 0.0f, dragY = 0.0f;  // accumulated cursor drag, in normalised output units
+};
+
+const params::Schema& schema() {
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<Settings>();
+    s.add(params::intParam<Settings>({"step", "stage", "How far the write-up's construction has got, 1 to 9 (9: the "
+                                      "final piece)."}, &Settings::step, 1, kStepCount));
+    s.add(params::choiceParam<Settings>({"tier", "quality", "March budget and render scale; auto holds target_ms."},
+                                        &Settings::tier, {"auto", "high", "medium", "low"}));
+    s.add(params::floatParam<Settings>({"target_ms", "target GPU ms", "The frame time the auto tier holds.", "",
+                                        params::kLogarithmic},
+                                       &Settings::targetMs, 1.0, 100.0));
+    s.add(params::floatParam<Settings>({"drag_x", "drag x", "Horizontal cursor drag turning the fractal.", "view",
+                                        params::kTransient},
+                                       &Settings::dragX, -100.0, 100.0));
+    s.add(params::floatParam<Settings>({"drag_y", "drag y", "Vertical cursor drag turning the fractal.", "view",
+                                        params::kTransient},
+                                       &Settings::dragY, -100.0, 100.0));
+    s.preset({"sphere", "The write-up's first step: one glowing sphere.", {{"step", "1"}}});
+    s.preset({"final", "The finished piece at high quality.", {{"step", "9"}, {"tier", "high"}}});
+    return s;
+  }();
+  return table;
+}
 
 struct Push {
   glm::vec2 angles;
@@ -33,11 +61,14 @@ class KifsScene final : public Scene {
       : march_(context.programs, "kifs/kifs.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(Push)}) {}
 
   void update(const FrameInput& input) override {
-    drag_ += input.cursor.dragging ? input.cursor.dragDelta * 2.0f : glm::vec2(0.0f);
+    if (input.cursor.dragging) {
+      settings_.dragX += input.cursor.dragDelta.x * 2.0f;
+      settings_.dragY += input.cursor.dragDelta.y * 2.0f;
+    }
     const float tumble = input.reducedMotion ? 0.0f : float(input.time);
-    angles_ = tumble * kTumbleRate + drag_ * kDragToAngle;
+    angles_ = tumble * kTumbleRate + glm::vec2(settings_.dragX, settings_.dragY) * kDragToAngle;
     reducedMotion_ = input.reducedMotion;
-    if (tier_ == Tier::Auto) active_ = autoTier_.observe(input.lastGpuMs, targetMs_);
+    if (settings_.tier == Tier::Auto) active_ = autoTier_.observe(input.lastGpuMs, settings_.targetMs);
   }
 
   void record(const FrameContext& frame) override {
@@ -45,61 +76,35 @@ class KifsScene final : public Scene {
     const Push push{angles_,
                     uint32_t(frame.input.frame),
                     frame.input.seed,
-                    step_,
+                    settings_.step,
                     settingsFor(activeTier()).marchSteps,
                     reducedMotion_ ? 0.0f : 0.045f,
                     reducedMotion_ ? 0u : uint32_t(frame.input.frame)};
+    frame.transition(frame.target, gpu::use::ComputeWrite);
     march_.bind(frame.cmd);
-    march_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view));
+    march_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view()));
     march_.constants(frame.cmd, push);
-    march_.dispatchOver(frame.cmd, frame.target.extent, {8, 8});
+    march_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
   }
 
   float renderScale() const override { return settingsFor(activeTier()).renderScale; }
 
   void drawPanel() override {
-    ImGui::SliderInt("stage", &step_, 1, kStepCount, kStageNames[step_ - 1]);
-    int tier = int(tier_);
-    if (ImGui::Combo("quality", &tier, kTierNames.data(), int(kTierNames.size()))) tier_ = Tier(tier);
-    if (tier_ == Tier::Auto) {
-      float target = float(targetMs_);
-      if (ImGui::SliderFloat("target GPU ms", &target, 1.0f, 33.0f, "%.1f")) targetMs_ = target;
-      ImGui::Text("auto tier: %s", kTierNames[int(active_)]);
-    }
-    const auto settings = settingsFor(activeTier());
-    ImGui::Text("%d march steps, render scale %.2f", settings.marchSteps, settings.renderScale);
-    if (ImGui::Button("reset drag")) drag_ = glm::vec2(0.0f);
+    ImGui::TextUnformatted(kStageNames[size_t(settings_.step - 1)].c_str());
+    if (settings_.tier == Tier::Auto) ImGui::Text("auto tier: %s", schema().find("tier")->choices[size_t(active_)].c_str());
+    const auto tier = settingsFor(activeTier());
+    ImGui::Text("%d march steps, render scale %.2f", tier.marchSteps, tier.renderScale);
   }
 
-  bool setParameter(std::string_view key, std::string_view value, std::string* error) override {
-    if (key == "step") return parseInt(value, 1, kStepCount, step_, error);
-    if (key == "tier") {
-      int index = 0;
-      if (!parseChoice(value, kTierNames, index, error)) return false;
-      tier_ = Tier(index);
-      return true;
-    }
-    if (key == "target_ms") return parseFloat(value, 0.1f, 1000.0f, targetMs_, error);
-    if (key == "drag_x") return parseFloat(value, -100.0f, 100.0f, drag_.x, error);
-    if (key == "drag_y") return parseFloat(value, -100.0f, 100.0f, drag_.y, error);
-    *error = "unknown parameter";
-    return false;
-  }
-
-  std::vector<std::string> parameterNames() const override {
-    return {"step", "tier", "target_ms", "drag_x", "drag_y"};
-  }
+  params::Bound parameters() override { return {&schema(), &settings_}; }
 
  private:
-  Tier activeTier() const { return tier_ == Tier::Auto ? active_ : tier_; }
+  Tier activeTier() const { return settings_.tier == Tier::Auto ? active_ : settings_.tier; }
 
   gpu::ComputeProgram march_;
-  int step_ = kStepCount;
-  Tier tier_ = Tier::High;
+  Settings settings_;
   Tier active_ = Tier::High;
   AutoTier autoTier_;
-  float targetMs_ = 8.0f;
-  glm::vec2 drag_{0.0f};
   glm::vec2 angles_{0.0f};
   bool reducedMotion_ = false;
 };
@@ -109,6 +114,7 @@ class KifsScene final : public Scene {
 const SceneInfo kSceneInfo{"kifs", "Volumetric KIFS", 4,
                            [](const SceneContext& context) -> std::unique_ptr<Scene> {
                              return std::make_unique<KifsScene>(context);
-                           }};
+                           },
+                           &schema};
 
 }  // namespace vitrine::kifs

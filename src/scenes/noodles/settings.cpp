@@ -1,17 +1,28 @@
 #include "scenes/noodles/settings.h"
 
-#include "scenes/parameters.h"
+#include "scenes/noodles/camera.h"
 
 #include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
 
 namespace vitrine::noodles {
 namespace {
 
-template <typename Enum, size_t N>
-bool parseEnum(std::string_view text, const std::array<const char*, N>& names, Enum& out, std::string* error) {
-  int index = 0;
-  if (!parseChoice(text, names, index, error)) return false;
-  out = Enum(index);
+bool parseUnsigned(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
+  uint32_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value < lo || value > hi) return false;
+  out = value;
+  return true;
+}
+
+bool parseFinite(std::string_view text, float& out) {
+  float value = 0.0f;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return false;
+  out = value;
   return true;
 }
 
@@ -23,13 +34,10 @@ bool parseGrid(std::string_view text, glm::uvec3& grid, std::string* error) {
   size_t begin = 0;
   while (true) {
     const size_t end = text.find('x', begin);
-    int side = 0;
-    std::string why;
-    if (axis == 3 || !parseInt(text.substr(begin, end - begin), 1, int(kMaxGridSide), side, &why)) {
+    if (axis == 3 || !parseUnsigned(text.substr(begin, end - begin), 1, kMaxGridSide, parsed[axis++])) {
       *error = fmt::format("expected N, WxH or WxHxD with sides from 1 to {}", kMaxGridSide);
       return false;
     }
-    parsed[axis++] = uint32_t(side);
     if (end == std::string_view::npos) break;
     begin = end + 1;
   }
@@ -37,48 +45,96 @@ bool parseGrid(std::string_view text, glm::uvec3& grid, std::string* error) {
   return true;
 }
 
-bool parseOrbit(std::string_view text, float values[3], std::string* error) {
+std::string formatGrid(const glm::uvec3& grid) { return fmt::format("{}x{}x{}", grid.x, grid.y, grid.z); }
+
+bool parseOrbit(std::string_view text, OrbitPin& orbit, std::string* error) {
+  if (text == "off") {
+    orbit = OrbitPin{};
+    return true;
+  }
+  float values[3];
   size_t begin = 0;
   for (int i = 0; i < 3; ++i) {
     const size_t end = i < 2 ? text.find(',', begin) : text.size();
-    std::string why;
-    if (end == std::string_view::npos || !parseFloat(text.substr(begin, end - begin), -1000.0f, 1000.0f, values[i], &why)) {
+    if (end == std::string_view::npos || !parseFinite(text.substr(begin, end - begin), values[i])) {
       *error = "expected off or AZIMUTH,ELEVATION,DISTANCE (radians, radians, world units)";
       return false;
     }
     begin = end + 1;
   }
+  if (std::fabs(values[1]) > kMaxElevation || !(values[2] > 0.0f) || std::fabs(values[0]) > 1000.0f ||
+      values[2] > 1000.0f) {
+    *error = fmt::format("the elevation must lie within +-{}, the distance in (0, 1000] and the azimuth in +-1000",
+                         kMaxElevation);
+    return false;
+  }
+  orbit = {true, values[0], values[1], values[2]};
   return true;
 }
 
-bool applyParameter(NoodleSettings& s, std::string_view key, std::string_view value, std::string* error) {
-  if (key == "grid") return parseGrid(value, s.grid, error);
-  if (key == "segments") return parseInt(value, 1, kMaxSegments, s.segments, error);
-  if (key == "step") return parseFloat(value, 0.0001f, 1.0f, s.step, error);
-  if (key == "noise_scale") return parseFloat(value, 0.001f, 10.0f, s.noiseScale, error);
-  if (key == "spacing") return parseFloat(value, 0.001f, 10.0f, s.spacing, error);
-  if (key == "radius") return parseFloat(value, 0.0001f, 1.0f, s.radius, error);
-  if (key == "speed") return parseFloat(value, 0.0f, 10.0f, s.speed, error);
-  if (key == "lift") return parseFloat(value, -10.0f, 10.0f, s.lift, error);
-  if (key == "field") return parseEnum(value, kFieldNames, s.field, error);
-  if (key == "integrator") return parseEnum(value, kIntegratorNames, s.integrator, error);
-  if (key == "tangent") return parseEnum(value, kTangentNames, s.tangent, error);
-  if (key == "frames") return parseEnum(value, kFrameNames, s.frames, error);
-  if (key == "colour") return parseEnum(value, kColourNames, s.colour, error);
-  if (key == "stripe") return parseBool(value, s.stripe, error);
-  if (key == "msaa") {
-    int index = 0;
-    if (!parseChoice(value, kMsaaNames, index, error)) return false;
-    s.msaa = index == 1;
-    return true;
-  }
-  *error = "unknown parameter";
-  return false;
+std::string formatOrbit(const OrbitPin& orbit) {
+  if (!orbit.pinned) return "off";
+  return fmt::format("{},{},{}", orbit.azimuth, orbit.elevation, orbit.distance);
 }
 
-std::vector<std::string> parameterNames() {
-  return {"grid",    "segments", "step",   "noise_scale", "spacing", "radius", "speed", "lift",
-          "field",   "integrator", "tangent", "frames",     "colour",  "stripe", "msaa",  "orbit"};
+const params::Schema& schema() {
+  using S = NoodleSettings;
+  using params::kLogarithmic, params::kRebuilds, params::kTransient;
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<S>();
+    s.add(params::customParam<S, glm::uvec3>(
+        {"grid", "grid", "Seed points per axis: N (a cube), WxH (a sheet) or WxHxD; one strand each.", "strands",
+         kRebuilds},
+        &S::grid, parseGrid, formatGrid));
+    s.add(params::intParam<S>({"segments", "segments", "Tube segments per strand.", "strands",
+                               kRebuilds | kLogarithmic},
+                              &S::segments, 1, kMaxSegments));
+    s.add(params::floatParam<S>({"step", "step", "Integration step along the field, in noise units.", "strands",
+                                 kLogarithmic},
+                                &S::step, 0.0001, 1.0));
+    s.add(params::floatParam<S>({"spacing", "spacing", "Distance between neighbouring seed points.", "strands",
+                                 kLogarithmic},
+                                &S::spacing, 0.001, 10.0));
+    s.add(params::floatParam<S>({"noise_scale", "noise scale", "Spatial frequency of the noise potentials.",
+                                 "field", kLogarithmic},
+                                &S::noiseScale, 0.001, 10.0));
+    s.add(params::floatParam<S>({"speed", "time speed", "How fast the potentials drift, noise units per second.",
+                                 "field"},
+                                &S::speed, 0.0, 10.0));
+    s.add(params::floatParam<S>({"lift", "lift", "A uniform upward flow added to the field.", "field"}, &S::lift,
+                                -10.0, 10.0));
+    s.add(params::choiceParam<S>({"field", "field", "curl: divergence-free curl noise; bitangent: the cross "
+                                  "product of two noise gradients.", "field"},
+                                 &S::field, {"curl", "bitangent"}));
+    s.add(params::choiceParam<S>({"integrator", "integrator", "Euler (the write-up's) or classic Runge-Kutta 4.",
+                                  "field"},
+                                 &S::integrator, {"euler", "rk4"}));
+    s.add(params::choiceParam<S>({"tangent", "tangent", "Follow the raw field or its unit direction.", "field"},
+                                 &S::tangent, {"normalized", "raw"}));
+    s.add(params::choiceParam<S>({"frames", "frames", "Tube frames: up-vector (twists and pinches) or "
+                                  "rotation-minimising.", "tubes"},
+                                 &S::frames, {"up", "rmf"}));
+    s.add(params::floatParam<S>({"radius", "radius", "Tube radius, world units.", "tubes", kLogarithmic},
+                                &S::radius, 0.0001, 1.0));
+    s.add(params::choiceParam<S>({"colour", "colour", "Colour along each strand: the write-up's gradient or a "
+                                  "hue per strand.", "tubes"},
+                                 &S::colour, {"gradient", "hsv"}));
+    s.add(params::boolParam<S>({"stripe", "stripe", "Paint one side of every tube, so the frames' twist shows.",
+                                "tubes"},
+                               &S::stripe));
+    s.add(params::choiceParam<S>({"msaa", "msaa", "4x multisampling of the tube pass.", "tubes", kRebuilds},
+                                 &S::msaa, {"off", "4x"}));
+    s.add(params::customParam<S, OrbitPin>(
+        {"orbit", "pinned orbit", "off, or AZIMUTH,ELEVATION,DISTANCE to hold the camera there.", "camera",
+         kTransient},
+        &S::orbit, parseOrbit, formatOrbit));
+    s.preset({"dense", "A million segments: 64x64x16 strands of 16.", {{"grid", "64x64x16"}, {"segments", "16"}}});
+    s.preset({"rising", "Strands carried upwards, striped, with rotation-minimising frames.",
+              {{"lift", "2"}, {"stripe", "on"}, {"tangent", "normalized"}, {"frames", "rmf"}}});
+    s.preset({"smooth", "RK4 along the unit direction.", {{"integrator", "rk4"}, {"tangent", "normalized"}}});
+    return s;
+  }();
+  return table;
 }
 
 }  // namespace vitrine::noodles

@@ -1,11 +1,13 @@
 #pragma once
-// Everything the noodles panel and "--set key=value" can change, with the write-up's numbers as
-// defaults where it has them. Parsing checks syntax and range only; whether the strands fit on the
-// device is the scene's check (strand_layout.h).
+// Everything the noodles panel, "--set key=value" and the settings file can change, with the
+// write-up's numbers as defaults where it has them. Parsing checks syntax and range only; whether the
+// strands fit on the device is the scene's cross-parameter check (strand_layout.h).
 #include "scenes/noodles/field.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
 #include "scenes/noodles/palette.h"
+
+#include "params/schema.h"
 
 #include <glm/vec3.hpp>
 
@@ -16,16 +18,16 @@
 
 namespace vitrine::noodles {
 
-inline constexpr std::array<const char*, 2> kFieldNames = {"curl", "bitangent"};
-inline constexpr std::array<const char*, 2> kIntegratorNames = {"euler", "rk4"};
-inline constexpr std::array<const char*, 2> kTangentNames = {"normalized", "raw"};
-inline constexpr std::array<const char*, 2> kFrameNames = {"up", "rmf"};
-inline constexpr std::array<const char*, 2> kColourNames = {"gradient", "hsv"};
-inline constexpr std::array<const char*, 2> kMsaaNames = {"off", "4x"};
-inline constexpr std::array<const char*, 2> kStripeNames = {"off", "on"};
-
 inline constexpr uint32_t kMaxGridSide = 4096;
 inline constexpr int kMaxSegments = 4096;
+
+// "orbit=AZIMUTH,ELEVATION,DISTANCE" pins the camera (reproducible views for tests and
+// screenshots); "off" lets it fly.
+struct OrbitPin {
+  bool pinned = false;
+  float azimuth = 0.0f, elevation = 0.0f, distance = 1.0f;  // radians, radians, world units
+  bool operator==(const OrbitPin&) const = default;
+};
 
 struct NoodleSettings {
   glm::uvec3 grid{16, 16, 16};  // 4096 strands...
@@ -43,17 +45,16 @@ struct NoodleSettings {
   Colouring colour = Colouring::Gradient;
   bool stripe = false;  // paint one side of every tube, so the frames' twist shows
   bool msaa = true;
+  OrbitPin orbit;
 };
 
-// Applies one "key=value"; false with the reason in *error when the key is unknown or the value bad.
-bool applyParameter(NoodleSettings& settings, std::string_view key, std::string_view value, std::string* error);
-std::vector<std::string> parameterNames();
+// Every parameter of the scene, declared once (see params/schema.h).
+const params::Schema& schema();
 
 // "16" (a cube), "64x64" (a sheet) or "32x32x8".
 bool parseGrid(std::string_view text, glm::uvec3& grid, std::string* error);
-
-// "orbit=AZIMUTH,ELEVATION,DISTANCE" (radians, radians, world units) pins the camera; "orbit=off"
-// lets it fly again. Scene-side, since it is camera state rather than a setting.
-bool parseOrbit(std::string_view text, float values[3], std::string* error);
+std::string formatGrid(const glm::uvec3& grid);
+bool parseOrbit(std::string_view text, OrbitPin& orbit, std::string* error);
+std::string formatOrbit(const OrbitPin& orbit);
 
 }  // namespace vitrine::noodles

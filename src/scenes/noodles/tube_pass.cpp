@@ -1,6 +1,5 @@
 #include "scenes/noodles/tube_pass.h"
 
-#include "gpu/barriers.h"
 
 #include <cstddef>
 
@@ -38,96 +37,62 @@ gpu::GraphicsState tubeState(VkSampleCountFlagBits samples) {
 
 const gpu::ProgramLayout kTubeLayout{{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, sizeof(TubePush)};
 
-// How the attachments were last used: by the previous frame's pass, whose contents are not kept.
-constexpr gpu::ImageUse kPreviousDepth{VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                                           VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED};
-constexpr gpu::ImageUse kPreviousColour{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED};
-
-}  // namespace
-
-TubePass::TubePass(const gpu::Device& device, gpu::ProgramLibrary& programs)
-    : device_(device),
-      single_(programs, tubeState(VK_SAMPLE_COUNT_1_BIT), kTubeLayout),
-      multisampled_(programs, tubeState(VK_SAMPLE_COUNT_4_BIT), kTubeLayout) {}
-
-void TubePass::ensureAttachments(VkExtent2D extent, VkSampleCountFlagBits samples) {
-  const bool sized = depth_ && depth_.extent2d().width == extent.width && depth_.extent2d().height == extent.height;
-  if (sized && depth_.desc().samples == samples) return;
-  if (depth_) device_.waitIdle();  // the previous frame may still be drawing into them
-
-  gpu::ImageDesc depth;
-  depth.extent = {extent.width, extent.height, 1};
+gpu::ImageDecl depthDecl(VkSampleCountFlagBits samples) {
+  gpu::ImageDecl depth;
+  depth.name = "noodles depth";
   depth.format = kDepthFormat;
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   depth.samples = samples;
-  depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-  depth_ = gpu::Image(device_, depth, "noodles depth");
+  return depth;
+}
 
-  colour_ = {};
-  if (samples == VK_SAMPLE_COUNT_1_BIT) return;
-  gpu::ImageDesc colour;
-  colour.extent = depth.extent;
+gpu::ImageDecl colourDecl(VkSampleCountFlagBits samples) {
+  gpu::ImageDecl colour;
+  colour.name = "noodles msaa colour";
   colour.format = kColourFormat;
   colour.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   colour.samples = samples;
-  colour_ = gpu::Image(device_, colour, "noodles msaa colour");
+  // Without MSAA the tubes draw straight into the target: a 1x1 stand-in costs nothing.
+  colour.size = samples != VK_SAMPLE_COUNT_1_BIT ? gpu::ImageSize::relative(1.0f) : gpu::ImageSize::absolute(1, 1);
+  return colour;
 }
 
-void TubePass::record(VkCommandBuffer cmd, const RenderTarget& target, const StrandLayout& layout, VkBuffer nodes,
-                      const TubeView& view) {
+}  // namespace
+
+TubePass::TubePass(const SceneContext& context)
+    : resources_(context.resources),
+      single_(context.programs, tubeState(VK_SAMPLE_COUNT_1_BIT), kTubeLayout),
+      multisampled_(context.programs, tubeState(VK_SAMPLE_COUNT_4_BIT), kTubeLayout),
+      depth_(resources_.declare(depthDecl(samples_))),
+      colour_(resources_.declare(colourDecl(samples_))) {}
+
+void TubePass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
   const VkSampleCountFlagBits samples = view.msaa ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
-  ensureAttachments(target.extent, samples);
-  gpu::transition(cmd, depth_.handle(), kPreviousDepth, gpu::use::DepthAttachment, VK_IMAGE_ASPECT_DEPTH_BIT);
-  if (colour_) gpu::transition(cmd, colour_.handle(), kPreviousColour, gpu::use::ColorAttachment);
-
-  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  colour.clearValue.color = {{kBackground.r, kBackground.g, kBackground.b, 1.0f}};
-  if (colour_) {  // draw multisampled, average into the target, keep nothing else
-    colour.imageView = colour_.view();
-    colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colour.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-    colour.resolveImageView = target.view;
-    colour.resolveImageLayout = VK_IMAGE_LAYOUT_GENERAL;
-    colour.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  } else {
-    colour.imageView = target.view;
-    colour.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
-    colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  if (samples != samples_) {  // the old attachments are retired behind the frames still using them
+    samples_ = samples;
+    resources_.redeclare(depth_, depthDecl(samples));
+    resources_.redeclare(colour_, colourDecl(samples));
   }
-  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = depth_.view();
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {0.0f, 0};  // reverse-Z: 0 is infinitely far
+  const VkClearColorValue background{{kBackground.r, kBackground.g, kBackground.b, 1.0f}};
+  gpu::RenderingDesc desc;
+  if (view.msaa)  // draw multisampled, average into the target, keep nothing else
+    desc.colors = {{&frame.image(colour_), background, &frame.target, false}};
+  else
+    desc.colors = {{&frame.target, background}};
+  desc.depth = gpu::DepthAttachment{&frame.image(depth_)};
+  const auto rendering = frame.rendering(desc);
 
-  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, target.extent};
-  rendering.layerCount = 1;
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachments = &colour;
-  rendering.pDepthAttachment = &depth;
-  vkCmdBeginRendering(cmd, &rendering);
-
-  const VkViewport viewport{0.0f, 0.0f, float(target.extent.width), float(target.extent.height), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, target.extent};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  const gpu::GraphicsProgram& program = colour_ ? multisampled_ : single_;
-  program.bind(cmd);
+  const gpu::GraphicsProgram& program = view.msaa ? multisampled_ : single_;
+  program.bind(frame.cmd);
   TubePush push{view.viewProjection, view.eye, view.radius, 0, 0, layout.strands, uint32_t(view.colouring),
                 layout.segments, view.stripe ? 1u : 0u};
   for (const StrandChunk& chunk : layout.chunks) {
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    program.push(cmd, gpu::Bindings().storageBuffer(nodes, chunk.offset, chunk.bytes));
-    program.constants(cmd, push);
-    vkCmdDraw(cmd, kTubeStripVertices, chunk.strandCount * layout.segments, 0, 0);
+    program.push(frame.cmd, gpu::Bindings().storageBuffer(nodes, chunk.offset, chunk.bytes));
+    program.constants(frame.cmd, push);
+    vkCmdDraw(frame.cmd, kTubeStripVertices, chunk.strandCount * layout.segments, 0, 0);
   }
-  vkCmdEndRendering(cmd);
 }
 
 }  // namespace vitrine::noodles

@@ -1,7 +1,7 @@
 #pragma once
 // The render pass that draws every segment as an instanced 8-sided tube: reverse-Z depth, optional
-// 4x MSAA resolved into the scene's target. Owns its depth and multisampled colour images, sized to
-// the target and rebuilt only when the size or the sample count changes.
+// 4x MSAA resolved into the scene's target. Its depth and multisampled colour images are declared
+// with the host at the target's size; only a change of sample count redeclares them.
 #include "gpu/program.h"
 #include "gpu/resources.h"
 #include "scenes/noodles/palette.h"
@@ -26,18 +26,16 @@ inline constexpr glm::vec3 kBackground{0.01f, 0.01f, 0.014f};  // the write-up's
 
 class TubePass {
  public:
-  TubePass(const gpu::Device& device, gpu::ProgramLibrary& programs);
-  void record(VkCommandBuffer cmd, const RenderTarget& target, const StrandLayout& layout, VkBuffer nodes,
-              const TubeView& view);
+  explicit TubePass(const SceneContext& context);
+  void record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view);
 
  private:
-  void ensureAttachments(VkExtent2D extent, VkSampleCountFlagBits samples);
-
-  const gpu::Device& device_;
+  gpu::FrameResources& resources_;
   gpu::GraphicsProgram single_;
   gpu::GraphicsProgram multisampled_;
-  gpu::Image depth_;
-  gpu::Image colour_;  // multisampled; empty without MSAA
+  VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_4_BIT;
+  gpu::ImageHandle depth_;
+  gpu::ImageHandle colour_;  // multisampled; a 1x1 stand-in without MSAA
 };
 
 }  // namespace vitrine::noodles

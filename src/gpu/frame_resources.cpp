@@ -1,0 +1,122 @@
+#include "gpu/frame_resources.h"
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vitrine::gpu {
+namespace {
+
+VkImageAspectFlags aspectOf(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_X8_D24_UNORM_PACK32:
+      return VK_IMAGE_ASPECT_DEPTH_BIT;
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+      return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    default:
+      return VK_IMAGE_ASPECT_COLOR_BIT;
+  }
+}
+
+VkExtent3D sizeFor(const ImageSize& size, VkExtent2D target) {
+  if (!size.isRelative()) return size.extent;
+  return {std::max(1u, uint32_t(std::lround(target.width * size.scale))),
+          std::max(1u, uint32_t(std::lround(target.height * size.scale))), 1};
+}
+
+}  // namespace
+
+ImageHandle FrameResources::declare(ImageDecl decl) {
+  entries_.push_back({std::move(decl), {}, 0, true, false});
+  Entry& entry = entries_.back();
+  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  return {uint32_t(entries_.size() - 1)};
+}
+
+void FrameResources::redeclare(ImageHandle handle, ImageDecl decl) {
+  Entry& entry = entries_.at(handle.index);
+  entry.decl = std::move(decl);
+  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+}
+
+void FrameResources::create(Entry& entry, VkExtent2D target) {
+  ImageDesc desc;
+  desc.extent = sizeFor(entry.decl.size, target);
+  desc.type = desc.extent.depth > 1 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+  desc.format = entry.decl.format;
+  desc.usage = entry.decl.usage;
+  if (entry.decl.pairing == Pairing::History) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // cleared
+  if (!entry.decl.initial.empty()) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (entry.decl.mips != 1) desc.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  desc.samples = entry.decl.samples;
+  desc.aspect = aspectOf(entry.decl.format);
+  desc.mips = entry.decl.mips;
+  const int count = entry.decl.pairing == Pairing::Single ? 1 : 2;
+  for (int i = 0; i < 2; ++i) {
+    if (entry.images[i]) device_.retire(std::move(entry.images[i]));
+    entry.images[i] = {};
+    if (i < count)
+      entry.images[i] = Image(device_, desc, count == 1 ? entry.decl.name : fmt::format("{} {}", entry.decl.name, i));
+  }
+  entry.front = 0;
+  entry.fresh = true;
+  entry.historyValid = false;
+}
+
+void FrameResources::resize(VkExtent2D target) {
+  if (target.width == target_.width && target.height == target_.height) return;
+  target_ = target;
+  for (Entry& entry : entries_)
+    if (entry.decl.size.isRelative()) create(entry, target);
+}
+
+void FrameResources::beginFrame(VkCommandBuffer cmd, StreamArena& stream) {
+  for (Entry& entry : entries_) {
+    if (!entry.images[0]) continue;  // relative, before the first resize
+    const bool history = entry.decl.pairing == Pairing::History;
+    if (history && !entry.fresh) {
+      entry.front ^= 1u;  // last frame's current is this frame's previous
+      entry.historyValid = true;
+    }
+    if (!entry.fresh) continue;
+    entry.fresh = false;
+    if (!entry.decl.initial.empty())
+      for (Image& image : entry.images)
+        if (image) uploadImage(cmd, stream, image, entry.decl.initial, entry.decl.initialUse);
+    if (history) {  // zeros rather than garbage, and the scene is told not to trust them this frame
+      const VkClearColorValue zero{};
+      for (Image& image : entry.images) {
+        image.discard();
+        image.use(cmd, use::TransferDst);
+        const VkImageSubresourceRange range{image.desc().aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+        vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+      }
+      entry.historyValid = false;
+    }
+  }
+}
+
+Image& FrameResources::current(ImageHandle handle) {
+  Entry& entry = entries_.at(handle.index);
+  return entry.images[entry.front];
+}
+
+Image& FrameResources::previous(ImageHandle handle) {
+  Entry& entry = entries_.at(handle.index);
+  if (entry.decl.pairing == Pairing::Single) throw Error(fmt::format("{} is not a pair", entry.decl.name));
+  return entry.images[entry.front ^ 1u];
+}
+
+void FrameResources::flip(ImageHandle handle) { entries_.at(handle.index).front ^= 1u; }
+
+bool FrameResources::historyValid(ImageHandle handle) const { return entries_.at(handle.index).historyValid; }
+
+VkExtent3D FrameResources::extent(ImageHandle handle) const { return entries_.at(handle.index).images[0].extent(); }
+
+}  // namespace vitrine::gpu

@@ -1,0 +1,48 @@
+#pragma once
+// Each scene's parameter values across a gallery session: read from the settings file at start,
+// given to a scene whenever it is created (so switching away and back keeps its values), updated
+// after every change, and written back — debounced while a slider moves, flushed on exit. Headless,
+// bench and record runs never use this: goldens and benchmarks cannot depend on a user's file.
+#include "params/settings_file.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vitrine::host {
+
+class GallerySettings {
+ public:
+  using Clock = params::SettingsSaver::Clock;
+
+  // `path` empty: nothing is read or written. `reset`: start from defaults (the file is rewritten on
+  // the first change). Problems with the file become warnings(), never errors.
+  GallerySettings(std::filesystem::path path, bool reset);
+  ~GallerySettings();  // flushes
+
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::string& lastScene() const { return settings_.scene; }
+  const std::filesystem::path& path() const { return path_; }
+
+  // What a scene starts with: its saved values (validated key by key when loaded).
+  params::KeyValues valuesFor(std::string_view scene) const;
+  // After any change, or when a scene is left: its current values (all of them, transient ones too,
+  // so a switch back restores them; only non-transient ones are written).
+  void remember(std::string_view scene, params::KeyValues values, Clock::time_point now);
+  void showing(std::string_view scene, Clock::time_point now);  // the scene to start with next time
+  void tick(Clock::time_point now);  // writes when a burst of changes has settled
+  void flush();                      // writes now if anything is unsaved
+
+ private:
+  void save();
+  std::filesystem::path path_;
+  params::Settings settings_;
+  params::SettingsSaver saver_;
+  std::vector<std::string> warnings_;
+};
+
+// The schema of a registered scene, for the settings file (null for a scene this build lacks).
+const params::Schema* schemaOfScene(std::string_view scene);
+
+}  // namespace vitrine::host

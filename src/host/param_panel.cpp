@@ -1,0 +1,132 @@
+#include "host/param_panel.h"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace vitrine::host {
+namespace {
+
+void tooltip(const params::Param& param) {
+  if (ImGui::IsItemHovered() && !param.help.empty())
+    ImGui::SetTooltip("%s\n%s: %s (default %s)", param.help.c_str(), param.key.c_str(), param.typeName().c_str(),
+                      param.defaultText.c_str());
+}
+
+std::string numberText(const params::Param& param, double value) {
+  return param.kind == params::Kind::Int ? fmt::to_string(int(std::lround(value)))
+                                         : params::formatFloat(float(value));
+}
+
+}  // namespace
+
+std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std::string& error) {
+  std::optional<PanelEdit> edit;
+  auto set = [&](const std::string& key, std::string value) {
+    edit = PanelEdit{PanelEdit::What::Values, {{key, std::move(value)}}, {}};
+  };
+  const params::Schema& schema = *bound.schema;
+
+  if (!schema.presets().empty()) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
+    if (ImGui::BeginCombo("preset", "choose...")) {
+      for (const auto& preset : schema.presets()) {
+        if (ImGui::Selectable(preset.name.c_str())) edit = PanelEdit{PanelEdit::What::Preset, {}, preset.name};
+        if (ImGui::IsItemHovered() && !preset.help.empty()) ImGui::SetTooltip("%s", preset.help.c_str());
+      }
+      ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+  }
+  if (ImGui::SmallButton("reset all")) edit = PanelEdit{PanelEdit::What::ResetAll, {}, {}};
+
+  std::string group = schema.params().empty() ? "" : schema.params().front().group;
+  for (const params::Param& param : schema.params()) {
+    if (param.group != group) {
+      group = param.group;
+      ImGui::Spacing();
+      ImGui::TextDisabled("%s", group.c_str());
+      ImGui::Separator();
+    }
+    ImGui::PushID(param.key.c_str());
+    const std::string current = param.format(bound.settings);
+    const bool changed = current != param.defaultText;
+    // Applying on release keeps a slider from rebuilding buffers on every step of a drag.
+    const bool onRelease = param.has(params::kApplyOnRelease) || param.has(params::kRebuilds);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
+    switch (param.kind) {
+      case params::Kind::Float:
+      case params::Kind::Int: {
+        const bool integer = param.kind == params::Kind::Int;
+        auto it = editing_.find(param.key);
+        double value = it != editing_.end() ? it->second : param.number(bound.settings);
+        const ImGuiSliderFlags flags = param.has(params::kLogarithmic) ? ImGuiSliderFlags_Logarithmic : 0;
+        bool moved;
+        if (integer) {
+          int v = int(std::lround(value));
+          moved = ImGui::SliderInt(param.label.c_str(), &v, int(param.min), int(param.max), "%d", flags);
+          value = v;
+        } else {
+          float v = float(value);
+          moved = ImGui::SliderFloat(param.label.c_str(), &v, float(param.min), float(param.max), "%.4g", flags);
+          value = v;
+        }
+        if (moved) {
+          if (onRelease) editing_[param.key] = value;
+          else set(param.key, numberText(param, value));
+        }
+        if (onRelease && ImGui::IsItemDeactivated() && editing_.count(param.key)) {
+          set(param.key, numberText(param, editing_[param.key]));
+          editing_.erase(param.key);
+        }
+        break;
+      }
+      case params::Kind::Bool: {
+        bool on = param.number(bound.settings) != 0.0;
+        if (ImGui::Checkbox(param.label.c_str(), &on)) set(param.key, on ? "on" : "off");
+        break;
+      }
+      case params::Kind::Choice: {
+        const int index = int(param.number(bound.settings));
+        const char* shown = index >= 0 && size_t(index) < param.choices.size() ? param.choices[size_t(index)].c_str()
+                                                                                : "?";
+        if (ImGui::BeginCombo(param.label.c_str(), shown)) {
+          for (size_t i = 0; i < param.choices.size(); ++i)
+            if (ImGui::Selectable(param.choices[i].c_str(), int(i) == index)) set(param.key, param.choices[i]);
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case params::Kind::Custom: {  // typed text, applied when the field is left (Enter, Tab, a click)
+        const auto typed = typing_.find(param.key);
+        char buffer[128];
+        std::snprintf(buffer, sizeof buffer, "%s", typed != typing_.end() ? typed->second.c_str() : current.c_str());
+        if (ImGui::InputText(param.label.c_str(), buffer, sizeof buffer)) typing_[param.key] = buffer;
+        if (ImGui::IsItemDeactivated()) {
+          if (auto it = typing_.find(param.key); it != typing_.end() && it->second != current) set(param.key, it->second);
+          typing_.erase(param.key);  // show the applied (or kept) value again
+        }
+        break;
+      }
+    }
+    tooltip(param);
+    if (changed) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("reset")) set(param.key, param.defaultText);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to %s", param.defaultText.c_str());
+    }
+    ImGui::PopID();
+  }
+  if (!error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26.0f);
+    ImGui::TextUnformatted(error.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+  return edit;
+}
+
+}  // namespace vitrine::host

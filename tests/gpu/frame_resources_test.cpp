@@ -1,0 +1,215 @@
+// The host's frame resources under the validation layer with synchronisation checks: declared images
+// through many resizes with two frames in flight, a history pair carrying last frame's contents (and
+// reported invalid after a resize), and deferred deletion leaving nothing behind at device exit.
+#include "gpu/sync_objects.h"
+#include "host/scene_renderer.h"
+#include "image/image.h"
+#include "support/gpu_test.h"
+
+#include <array>
+
+namespace vitrine::test {
+namespace {
+
+struct NoSettings {
+  int unused = 0;
+};
+
+const params::Schema& noSchema() {
+  static const params::Schema schema = params::Schema::forStruct<NoSettings>();
+  return schema;
+}
+
+// Counts frames in a history pair: each frame writes previous + 1 (0 + 1 when the history is not
+// valid), then copies it into the target. Also declares a ping-pong pair and a mipmapped image with
+// initial data, so their creation, uploads and resizes run under validation too.
+class CountingScene final : public Scene {
+ public:
+  explicit CountingScene(const SceneContext& context)
+      : device_(context.device),
+        accumulate_(context.programs, "test/accumulate.comp",
+                    {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 8}) {
+    constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    history_ = context.resources.declare(
+        {"count", VK_FORMAT_R16G16B16A16_SFLOAT, usage, gpu::ImageSize::relative(0.5f), 1, gpu::Pairing::History});
+    pingPong_ = context.resources.declare(
+        {"ping-pong", VK_FORMAT_R16G16B16A16_SFLOAT, usage, gpu::ImageSize::relative(0.25f), 1, gpu::Pairing::PingPong});
+    gpu::ImageDecl atlas{"atlas", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT, gpu::ImageSize::absolute(16, 16),
+                         0};
+    atlas.initial.assign(16 * 16 * 4, std::byte{200});
+    atlas_ = context.resources.declare(std::move(atlas));
+  }
+  void update(const FrameInput&) override {}
+  params::Bound parameters() override { return {&noSchema(), &settings_}; }
+
+  void record(const FrameContext& frame) override {
+    const auto pass = frame.pass("count");
+    gpu::Image& current = frame.image(history_);
+    gpu::Image& previous = frame.resources.previous(history_);
+    validFrames_.push_back(frame.resources.historyValid(history_));
+    run(frame, previous, current, 1.0f, frame.resources.historyValid(history_));
+    // Two steps through the ping-pong pair, each reading what the last wrote.
+    for (int i = 0; i < 2; ++i) {
+      run(frame, frame.image(pingPong_), frame.resources.previous(pingPong_), 0.0f, true);
+      frame.resources.flip(pingPong_);
+    }
+    frame.transition(frame.image(atlas_), gpu::use::ComputeSample);
+    run(frame, current, frame.target, 0.0f, true);
+  }
+
+  std::vector<bool> validFrames_;
+
+ private:
+  void run(const FrameContext& frame, gpu::Image& source, gpu::Image& destination, float add, bool useSource) {
+    frame.transition(source, gpu::use::ComputeSample);
+    frame.transition(destination, gpu::use::ComputeWrite);
+    accumulate_.bind(frame.cmd);
+    accumulate_.push(frame.cmd, gpu::Bindings()
+                                    .sampledImage(source.view(),
+                                                  device_.sampler(gpu::Device::Filter::Linear,
+                                                                  gpu::Device::Address::Clamp),
+                                                  gpu::use::ComputeSample.layout)
+                                    .storageImage(destination.view()));
+    struct {
+      float add;
+      uint32_t useSource;
+    } push{add, useSource ? 1u : 0u};
+    accumulate_.constants(frame.cmd, push);
+    accumulate_.dispatchOver(frame.cmd, destination.extent2d(), {8, 8});
+  }
+
+  const gpu::Device& device_;
+  gpu::ComputeProgram accumulate_;
+  gpu::ImageHandle history_, pingPong_, atlas_;
+  NoSettings settings_;
+};
+
+CountingScene* lastScene = nullptr;
+const SceneInfo kCounting{"counting", "Counting", 9,
+                          [](const SceneContext& context) -> std::unique_ptr<Scene> {
+                            auto scene = std::make_unique<CountingScene>(context);
+                            lastScene = scene.get();
+                            return scene;
+                          },
+                          &noSchema};
+
+// Two frames in flight, as the gallery runs them: a frame is recorded while the previous one may
+// still be on the GPU, and the output image changes size whenever the test says so.
+class InFlight {
+ public:
+  explicit InFlight(const gpu::Device& device)
+      : device_(device),
+        programs_(device),
+        renderer_(device, programs_, assets_, 2),
+        pool_(gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, "test frames")) {
+    const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
+                                            VK_COMMAND_BUFFER_LEVEL_PRIMARY, 2};
+    vkAllocateCommandBuffers(device, &alloc, cmds_.data());
+    renderer_.setScene(kCounting);
+  }
+  ~InFlight() { device_.waitIdle(); }
+
+  host::SceneRenderer& renderer() { return renderer_; }
+
+  void frame(VkExtent2D size) {
+    const uint32_t slot = uint32_t(frames_ % 2);
+    if (serials_[slot]) device_.wait(serials_[slot]);
+    if (!output_ || output_.extent2d().width != size.width || output_.extent2d().height != size.height) {
+      if (output_) device_.retire(std::move(output_));
+      gpu::ImageDesc desc;
+      desc.extent = {size.width, size.height, 1};
+      desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+      output_ = gpu::Image(device_, desc, "test output");
+    }
+    VkCommandBuffer cmd = cmds_[slot];
+    vkResetCommandBuffer(cmd, 0);
+    const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
+                                         VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    vkBeginCommandBuffer(cmd, &begin);
+    output_.discard();
+    FrameInput input;
+    input.frame = frames_;
+    renderer_.record(cmd, slot, input,
+                     host::BlitDestination{output_.handle(), size, output_.lastUse(), gpu::use::TransferSrc,
+                                           output_.view()});
+    output_.assumeUse(gpu::use::TransferSrc);
+    vkEndCommandBuffer(cmd);
+    serials_[slot] = device_.submit({cmd, {}, {}});
+    ++frames_;
+  }
+
+  // The first texel of the last frame's output.
+  float firstTexel() {
+    device_.waitIdle();
+    gpu::Buffer staging(device_, output_.extent2d().width * output_.extent2d().height * 8,
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "test readback");
+    device_.submitNow([&](VkCommandBuffer cmd) { gpu::recordReadback(cmd, output_, staging); });
+    staging.invalidate();
+    return imageFromHalves(output_.extent2d().width, output_.extent2d().height, staging.view<const uint16_t>())
+        .pixels[0];
+  }
+
+ private:
+  const gpu::Device& device_;
+  Assets assets_{"/nonexistent"};
+  gpu::ProgramLibrary programs_;
+  host::SceneRenderer renderer_;
+  gpu::Unique<VkCommandPool> pool_;
+  std::array<VkCommandBuffer, 2> cmds_{};
+  std::array<uint64_t, 2> serials_{};
+  gpu::Image output_;
+  uint64_t frames_ = 0;
+};
+
+class FrameResources : public GpuTest {};
+
+TEST_F(FrameResources, HistoryCarriesLastFrameAndIsClearedOnResize) {
+  InFlight run(device());
+  for (int i = 0; i < 5; ++i) run.frame({64, 36});
+  EXPECT_FLOAT_EQ(run.firstTexel(), 5.0f) << "each frame adds one to last frame's count";
+  run.frame({80, 40});  // a resize recreates the pair: cleared, reported invalid, counting restarts
+  EXPECT_FLOAT_EQ(run.firstTexel(), 1.0f);
+  run.frame({80, 40});
+  EXPECT_FLOAT_EQ(run.firstTexel(), 2.0f);
+  const std::vector<bool> expected{false, true, true, true, true, false, true};
+  EXPECT_EQ(lastScene->validFrames_, expected);
+}
+
+TEST_F(FrameResources, ManyResizesWithFramesInFlightAreValidationClean) {
+  InFlight run(device());
+  for (uint32_t i = 0; i < 60; ++i) run.frame({40 + (i * 7) % 50, 20 + (i * 13) % 40});
+  // Nothing waited for the device while resizing: the old images were retired and are being freed
+  // as frames finish, so the graveyard stays small rather than growing with every resize.
+  EXPECT_LT(device().retiredCount(), 40u);
+}
+
+TEST_F(FrameResources, SceneSwitchesRetireTheOldSceneWithoutWaiting) {
+  InFlight run(device());
+  for (int i = 0; i < 6; ++i) {
+    run.frame({48, 32});
+    run.renderer().setScene(kCounting);  // a frame of the old scene may still be running
+  }
+  run.frame({48, 32});
+  EXPECT_FLOAT_EQ(run.firstTexel(), 1.0f) << "a new scene's history starts empty";
+}
+
+// Its own instance and device, so the device's destruction — where a leaked object is reported — is
+// part of the test.
+TEST(FrameResourcesExit, DeferredDeletionFreesEverythingByExit) {
+  gpu::Instance instance({true, {}});
+  {
+    gpu::Device device(instance, {});
+    {
+      InFlight run(device);
+      for (uint32_t i = 0; i < 12; ++i) {
+        run.frame({32 + i * 4, 24});
+        if (i % 4 == 3) run.renderer().setScene(kCounting);
+      }
+    }
+    EXPECT_EQ(device.retiredCount(), 0u) << "the renderer drains what it retired when it goes";
+  }
+  EXPECT_EQ(instance.validationMessages(), 0) << "no leaked object at vkDestroyDevice, no hazard";
+}
+
+}  // namespace
+}  // namespace vitrine::test
