@@ -1,5 +1,6 @@
 // The parameter table: every kind's parse and canonical text, the range checks every front end shares,
-// batches judged once on their final values, presets and declaration mistakes.
+// batches judged once on their final values, presets, declaration mistakes and the --list-params text.
+#include "params/listing.h"
 #include "params/schema.h"
 
 #include <gtest/gtest.h>
@@ -353,6 +354,32 @@ TEST(ParamsSchema, EveryPathEnforcesTheSameRange) {
     }
     EXPECT_EQ(presetAccepted, accepted) << text;
   }
+}
+
+TEST(ParamsListing, ShowsKeysTypesDefaultsFlagsGroupsAndPresets) {
+  const std::string text = describeSchema("demo", schema());
+  for (const char* needle : {"demo", "scale", "float 0.001..10", "default 0.5", "Noise scale.", "int 1..9", "default 9",
+                             "choice round|square|star", "default square", "[look]", "[layout]", "grid", "custom",
+                             "default 32x32x8", "rebuilds", "not saved", "calm", "Slow and round.", "scale=0.25 shape=round",
+                             "dense", "grid=64 steps=3"})
+    EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
+  // Ungrouped parameters lead; the groups follow in order of first use.
+  EXPECT_LT(text.find("drag"), text.find("[look]"));
+  EXPECT_LT(text.find("[look]"), text.find("[layout]"));
+  // The columns line up: "default" starts at the same column on every parameter line.
+  size_t column = std::string::npos;
+  size_t lineStart = 0;
+  while (lineStart < text.size()) {
+    const size_t lineEnd = text.find('\n', lineStart);
+    const std::string line = text.substr(lineStart, lineEnd - lineStart);
+    if (const size_t at = line.find(" default "); at != std::string::npos) {
+      if (column == std::string::npos) column = at;
+      EXPECT_EQ(at, column) << line;
+    }
+    lineStart = lineEnd + 1;
+  }
+  EXPECT_NE(column, std::string::npos);
+  EXPECT_EQ(text.back(), '\n');
 }
 
 }  // namespace
