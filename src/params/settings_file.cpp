@@ -1,0 +1,266 @@
+#include "params/settings_file.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+
+namespace vitrine::params {
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;  // keeps the file's order (and ours: version first) for a reader
+
+namespace {
+
+// A settings file is three levels deep; a limit far above that keeps a hostile file from building a
+// structure that later recursion (dump, destruction) could overflow the stack on.
+constexpr int kMaxDepth = 32;
+
+struct NotSettings {
+  std::string why;
+};
+
+Json parseLimited(const std::string& text) {
+  const auto limitDepth = [](int depth, Json::parse_event_t event, Json&) {
+    if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) && depth >= kMaxDepth)
+      throw NotSettings{fmt::format("nested deeper than {} levels", kMaxDepth)};
+    return true;
+  };
+  try {
+    return Json::parse(text, limitDepth);
+  } catch (const Json::parse_error& e) {
+    // Not e.what(): it quotes the bytes it stopped at, and those may be binary.
+    throw NotSettings{e.byte > text.size() ? "not JSON: it ends too early" : fmt::format("not JSON at byte {}", e.byte)};
+  }
+}
+
+// "settings.json" → "settings.json.bad-20250101-120000" (then "-2", "-3" if taken): the user's file is
+// kept for a look, out of the way of the next save.
+std::string moveAside(const fs::path& path) {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  const std::string base = path.string() + ".bad-" + stamp;
+  fs::path target = base;
+  std::error_code ec;
+  for (int n = 2; fs::exists(fs::symlink_status(target, ec)); ++n) target = fmt::format("{}-{}", base, n);
+  fs::rename(path, target, ec);
+  if (ec) return fmt::format("could not be moved aside ({}); starting from the defaults", ec.message());
+  return fmt::format("moved it to {} and started from the defaults", target.string());
+}
+
+std::string_view expected(Kind kind) {
+  switch (kind) {
+    case Kind::Float: return "a number";
+    case Kind::Int: return "a whole number";
+    case Kind::Bool: return "true or false";
+    case Kind::Choice:
+    case Kind::Custom: return "a string";
+  }
+  return "?";
+}
+
+// The text a JSON value stands for, when its JSON type fits the kind; the parameter's parse then
+// judges the text exactly as it judges "--set key=text".
+bool textOf(const Json& value, Kind kind, std::string& text, std::string& why) {
+  const bool fits = (kind == Kind::Float || kind == Kind::Int) ? value.is_number()
+                    : kind == Kind::Bool                        ? value.is_boolean()
+                                                                : value.is_string();
+  if (!fits) {
+    why = fmt::format("expected {}, found {}", expected(kind), value.type_name());
+    return false;
+  }
+  // dump() of a number is its shortest round-trip text ("0.05", "1e+308", "9.0"): a float parse
+  // refuses what overflows a float, an int parse what is not whole.
+  text = value.is_boolean() ? (value.get<bool>() ? "on" : "off") : value.is_string() ? value.get<std::string>() : value.dump();
+  return true;
+}
+
+// A value as a warning quotes it: its JSON, cut short (a hostile file may hold a megabyte string).
+std::string shortText(const Json& value) {
+  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+// The typed JSON for a canonical text; text that does not read as its kind stays a string (nothing lost).
+Json typed(const Param* param, const std::string& text) {
+  if (!param) return text;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (param->kind == Kind::Float) {
+    double value = 0.0;
+    if (const auto [end, ec] = std::from_chars(first, last, value); ec == std::errc() && end == last) return value;
+  } else if (param->kind == Kind::Int) {
+    int64_t value = 0;
+    if (const auto [end, ec] = std::from_chars(first, last, value); ec == std::errc() && end == last) return value;
+  } else if (param->kind == Kind::Bool) {
+    bool value = false;
+    if (parseBoolText(text, value, nullptr)) return value;
+  }
+  return text;
+}
+
+void loadScene(const std::string& where, const std::string& name, const Json& values, const Schema& schema,
+               LoadResult& result) {
+  if (!values.is_object()) {
+    result.warnings.push_back(fmt::format("{}: scenes.{} is {}, not an object; using its defaults", where, name, values.type_name()));
+    return;
+  }
+  KeyValues& kept = result.settings.scenes[name];
+  const auto scratch = schema.makeDefaults();  // each parse writes only its own field
+  for (const auto& [key, value] : values.items()) {
+    const Param* param = schema.find(key);
+    if (!param) {  // from another version: kept for the save, not applied
+      result.settings.unknown["scenes"][name][key] = value;
+      continue;
+    }
+    std::string text, why;
+    if (param->has(kTransient))
+      why = "not kept between runs";
+    else if (textOf(value, param->kind, text, why) && param->parse(scratch.get(), text, &why))
+      kept.emplace_back(key, param->format(scratch.get()));  // canonical: "1" for 1, "0.05" for 0.05000001
+    if (!why.empty())
+      result.warnings.push_back(fmt::format("{}: {}.{}={}: {}; using the default", where, name, key, shortText(value), why));
+  }
+}
+
+}  // namespace
+
+fs::path defaultSettingsPath() {
+  const char* config = std::getenv("XDG_CONFIG_HOME");
+  if (config && *config && fs::path(config).is_absolute()) return fs::path(config) / "vitrine" / "settings.json";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".config" / "vitrine" / "settings.json";
+  return {};
+}
+
+LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
+  LoadResult result;
+  const std::string where = path.string();
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return result;  // first start
+  if (ec) {
+    result.warnings.push_back(fmt::format("{}: cannot read it ({}); starting from the defaults", where, ec.message()));
+    return result;
+  }
+  // A directory or a device in its place is not ours to move: say so and leave it.
+  if (!fs::is_regular_file(status)) {
+    result.warnings.push_back(fmt::format("{}: not a regular file; starting from the defaults", where));
+    return result;
+  }
+
+  std::string text;
+  Json root;
+  try {
+    if (fs::file_size(path, ec) > kMaxSettingsBytes && !ec)
+      throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      result.warnings.push_back(fmt::format("{}: cannot open it; starting from the defaults", where));
+      return result;
+    }
+    // Read one byte past the limit, in case the file grew since file_size.
+    text.resize(kMaxSettingsBytes + 1);
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(size_t(in.gcount()));
+    if (text.size() > kMaxSettingsBytes) throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
+    root = parseLimited(text);
+    if (!root.is_object()) throw NotSettings{fmt::format("{} at the top, not an object", root.type_name())};
+    if (root.contains("version") && root["version"] != kSettingsVersion)
+      throw NotSettings{fmt::format("version {}, this build reads version {}", root["version"].dump(), kSettingsVersion)};
+  } catch (const NotSettings& bad) {
+    result.warnings.push_back(fmt::format("{} is not a settings file ({}); {}", where, bad.why, moveAside(path)));
+    return result;
+  }
+
+  Settings& settings = result.settings;
+  for (const auto& [key, value] : root.items()) {
+    if (key == "version") continue;
+    if (key == "scene") {
+      if (!value.is_string())
+        result.warnings.push_back(fmt::format("{}: scene: expected a string, found {}; using the default", where, value.type_name()));
+      else if (!schemaFor || !schemaFor(value.get<std::string>()))
+        result.warnings.push_back(fmt::format("{}: scene: no scene '{}'; using the default", where, value.get<std::string>()));
+      else
+        settings.scene = value.get<std::string>();
+    } else if (key == "scenes") {
+      if (!value.is_object()) {
+        result.warnings.push_back(fmt::format("{}: scenes: expected an object, found {}; using the defaults", where, value.type_name()));
+        continue;
+      }
+      for (const auto& [name, values] : value.items()) {
+        if (const Schema* schema = schemaFor ? schemaFor(name) : nullptr)
+          loadScene(where, name, values, *schema, result);
+        else
+          settings.unknown["scenes"][name] = values;  // a scene of another version: kept as it is
+      }
+    } else {
+      settings.unknown[key] = value;
+    }
+  }
+  return result;
+}
+
+void saveSettings(const fs::path& path, const Settings& settings, const SchemaLookup& schemaFor) {
+  // Version and scene first, for a reader; then what was not understood, in its place; then our values,
+  // which win where both name the same key.
+  Json out = Json::object();
+  out["version"] = kSettingsVersion;
+  if (!settings.scene.empty()) out["scene"] = settings.scene;
+  if (settings.unknown.is_object())
+    for (const auto& [key, value] : settings.unknown.items())
+      if (key != "version" && key != "scene") out[key] = Json(value);
+  Json& scenes = out["scenes"];
+  if (!scenes.is_object()) scenes = Json::object();
+  for (const auto& [name, values] : settings.scenes) {
+    Json& scene = scenes[name];
+    if (!scene.is_object()) scene = Json::object();
+    const Schema* schema = schemaFor ? schemaFor(name) : nullptr;
+    for (const auto& [key, text] : values) {
+      const Param* param = schema ? schema->find(key) : nullptr;
+      if (param && param->has(kTransient)) continue;
+      scene[key] = typed(param, text);
+    }
+  }
+
+  if (const fs::path folder = path.parent_path(); !folder.empty()) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw Error(fmt::format("Cannot create {}: {}", folder.string(), ec.message()));
+  }
+  // replace: a key from a hand-edited file with bad UTF-8 must not make the save throw.
+  const std::string text = out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  replaceAtomically(path, [&](const fs::path& temporary) {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file.write(text.data(), std::streamsize(text.size()));
+    file.close();
+    if (!file) throw Error(fmt::format("Cannot write {}", temporary.string()));
+  });
+}
+
+void SettingsSaver::markDirty(Clock::time_point now) {
+  dirty_ = true;
+  lastChange_ = now;
+}
+
+bool SettingsSaver::due(Clock::time_point now) {
+  if (!dirty_ || now - lastChange_ < delay_) return false;
+  dirty_ = false;
+  return true;
+}
+
+bool SettingsSaver::flush() {
+  const bool was = dirty_;
+  dirty_ = false;
+  return was;
+}
+
+}  // namespace vitrine::params

@@ -1,0 +1,85 @@
+#pragma once
+// The gallery's settings file: the scene it last showed and every scene's saved values, e.g.
+//
+//   {"version": 1, "scene": "noodles",
+//    "scenes": {"kifs": {"step": 9, "tier": "high"}, "noodles": {"grid": "32x32x8", "msaa": "4x"}}}
+//
+// Values are typed by kind (Float/Int: numbers, Bool: true/false, Choice/Custom: strings) and every
+// one is validated by the parameter's own parse, as --set values are. A file is the user's: nothing in
+// it is deleted. Values this version does not understand are kept and written back; a file that cannot
+// be read as settings is renamed aside, and the gallery starts from the defaults.
+#include "params/schema.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vitrine::params {
+
+inline constexpr int kSettingsVersion = 1;
+inline constexpr uintmax_t kMaxSettingsBytes = 1u << 20;  // a settings file is a few kB; more is not one
+
+// $XDG_CONFIG_HOME/vitrine/settings.json, else $HOME/.config/vitrine/settings.json (a relative
+// XDG_CONFIG_HOME is ignored, as the XDG Base Directory spec says). Empty when neither is usable: the
+// gallery then keeps no settings.
+std::filesystem::path defaultSettingsPath();
+
+struct Settings {
+  std::string scene;                         // the scene to start with; empty: the gallery's default
+  std::map<std::string, KeyValues> scenes;   // per scene: canonical key=value text, ready for applyValues
+  // Everything read but not understood, in the file's own shape (top-level keys, scenes this version
+  // does not have, unknown keys inside known scenes); saveSettings writes it back underneath.
+  nlohmann::ordered_json unknown = nlohmann::ordered_json::object();
+};
+
+struct LoadResult {
+  Settings settings;
+  std::vector<std::string> warnings;  // one sentence each, for the log or the overlay
+};
+
+// Returns a scene's schema, or null for a scene this build does not have. A scene without parameters
+// should return an empty schema, not null.
+using SchemaLookup = std::function<const Schema*(std::string_view scene)>;
+
+// Never throws for what is in or around the file: every problem is a warning and the defaults apply.
+// A bad value is dropped (one warning naming scene, key and why); a file that is not settings (not
+// JSON, not an object, another version, over kMaxSettingsBytes, nested deeper than any settings file)
+// is renamed to "settings.json.bad-YYYYMMDD-HHMMSS" beside it; a missing file is no warning.
+// Values are checked one by one on a default struct: a scene's cross-parameter check is for whoever
+// applies them (applyValues with the scene's check).
+LoadResult loadSettings(const std::filesystem::path& path, const SchemaLookup& schemaFor);
+
+// Creates the folder and replaces the file atomically; throws vitrine::Error on failure. Transient
+// parameters are left out; the schema gives each value its JSON type (a key no schema knows is
+// written as a string).
+void saveSettings(const std::filesystem::path& path, const Settings& settings, const SchemaLookup& schemaFor);
+
+// When to save: after the values stop changing for `delay`, so a dragged slider writes once, after it
+// settles. Pure logic; the caller passes the time and does the writing.
+class SettingsSaver {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit SettingsSaver(Clock::duration delay = std::chrono::seconds(1)) : delay_(delay) {}
+
+  void markDirty(Clock::time_point now);  // a value changed: (re)starts the wait
+  // True once per burst of changes, when `delay` has passed since the last; the caller then saves. A
+  // failed save can markDirty(now) again to retry after another delay.
+  bool due(Clock::time_point now);
+  // True when there are unsaved changes, however recent, and forgets them: for quitting or switching.
+  bool flush();
+  bool dirty() const { return dirty_; }
+
+ private:
+  Clock::duration delay_;
+  Clock::time_point lastChange_{};
+  bool dirty_ = false;
+};
+
+}  // namespace vitrine::params

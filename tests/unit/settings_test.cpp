@@ -1,0 +1,377 @@
+// The settings file: a save/load round trip, values checked by the same table as --set, and hostile
+// files that must neither crash the gallery nor lose the user's file.
+#include "core/error.h"
+#include "params/settings_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace vitrine::params {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+enum class Tier { Auto, High, Low };
+
+struct Kifs {
+  int step = 9;
+  Tier tier = Tier::High;
+  float targetMs = 8.0f;
+  float drag = 0.0f;
+  bool grain = true;
+  std::string label = "a";
+};
+
+const Schema& kifsSchema() {
+  static const Schema schema = [] {
+    auto s = Schema::forStruct<Kifs>();
+    s.add(intParam({.key = "step"}, &Kifs::step, 1, 9));
+    s.add(choiceParam({.key = "tier"}, &Kifs::tier, {"auto", "high", "low"}));
+    s.add(floatParam({.key = "target_ms"}, &Kifs::targetMs, 0.1, 1000.0));
+    s.add(floatParam({.key = "drag", .flags = kTransient}, &Kifs::drag, -100.0, 100.0));
+    s.add(boolParam({.key = "grain"}, &Kifs::grain));
+    s.add(customParam<Kifs, std::string>(
+        {.key = "label"}, &Kifs::label,
+        [](std::string_view text, std::string& value, std::string* error) {
+          if (text.empty() || text.size() > 8) return *error = "expected 1 to 8 characters", false;
+          value = text;
+          return true;
+        },
+        [](const std::string& value) { return value; }));
+    return s;
+  }();
+  return schema;
+}
+
+const Schema* schemaFor(std::string_view scene) {
+  static const Schema empty = Schema::forStruct<Kifs>();
+  if (scene == "kifs") return &kifsSchema();
+  if (scene == "plain") return &empty;  // a scene with no parameters
+  return nullptr;
+}
+
+std::string readAll(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void writeAll(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+// A fresh folder per test, removed afterwards.
+class SettingsFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / fmt::format("vitrine-settings-{}-{}", getpid(), test->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    path_ = dir_ / "settings.json";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  LoadResult load() { return loadSettings(path_, schemaFor); }
+
+  // Files in the folder other than settings.json: where a bad file went.
+  std::vector<fs::path> asideFiles() const {
+    std::vector<fs::path> found;
+    for (const auto& entry : fs::directory_iterator(dir_))
+      if (entry.path().filename().string().rfind("settings.json.bad-", 0) == 0) found.push_back(entry.path());
+    return found;
+  }
+
+  // Writes `text`, loads it, and checks that it was moved aside intact and that the defaults apply.
+  void expectMovedAside(const std::string& text, const std::string& why) {
+    writeAll(path_, text);
+    const LoadResult result = load();
+    ASSERT_EQ(result.warnings.size(), 1u) << why;
+    EXPECT_NE(result.warnings[0].find("moved it to"), std::string::npos) << result.warnings[0];
+    EXPECT_TRUE(result.settings.scenes.empty()) << why;
+    EXPECT_TRUE(result.settings.scene.empty()) << why;
+    EXPECT_FALSE(fs::exists(path_)) << why;
+    const auto aside = asideFiles();
+    ASSERT_EQ(aside.size(), 1u) << why;
+    EXPECT_NE(result.warnings[0].find(aside[0].string()), std::string::npos) << result.warnings[0];
+    EXPECT_EQ(readAll(aside[0]), text) << why;  // kept, byte for byte
+    fs::remove(aside[0]);
+  }
+
+  fs::path dir_, path_;
+};
+
+TEST_F(SettingsFile, MissingFileIsDefaultsWithoutWarning) {
+  const LoadResult result = load();
+  EXPECT_TRUE(result.warnings.empty());
+  EXPECT_TRUE(result.settings.scene.empty());
+  EXPECT_TRUE(result.settings.scenes.empty());
+}
+
+TEST_F(SettingsFile, RoundTripKeepsValuesAndLeavesTransientOut) {
+  Kifs kifs;
+  const Bound bound = bindSettings(kifsSchema(), kifs);
+  ASSERT_EQ(applyValues(bound, {{"step", "3"}, {"tier", "low"}, {"target_ms", "0.1"}, {"drag", "4"}, {"grain", "off"},
+                          {"label", "hello"}}),
+            "");
+  Settings settings;
+  settings.scene = "kifs";
+  settings.scenes["kifs"] = snapshot(bound);  // transient included on purpose: the save leaves it out
+  saveSettings(dir_ / "sub" / "settings.json", settings, schemaFor);  // creates the folder
+  path_ = dir_ / "sub" / "settings.json";
+
+  const std::string text = readAll(path_);
+  EXPECT_EQ(text.find("drag"), std::string::npos) << text;
+  // Typed JSON: numbers, booleans and strings by kind.
+  const auto json = nlohmann::json::parse(text);
+  EXPECT_EQ(json["version"], 1);
+  EXPECT_EQ(json["scene"], "kifs");
+  EXPECT_TRUE(json["scenes"]["kifs"]["step"].is_number_integer());
+  EXPECT_TRUE(json["scenes"]["kifs"]["target_ms"].is_number());
+  EXPECT_EQ(json["scenes"]["kifs"]["target_ms"].dump(), "0.1");  // not 0.10000000149011612
+  EXPECT_EQ(json["scenes"]["kifs"]["grain"], false);
+  EXPECT_EQ(json["scenes"]["kifs"]["tier"], "low");
+  EXPECT_EQ(json["scenes"]["kifs"]["label"], "hello");
+
+  const LoadResult result = load();
+  EXPECT_TRUE(result.warnings.empty()) << result.warnings[0];
+  EXPECT_EQ(result.settings.scene, "kifs");
+  Kifs loaded;
+  ASSERT_EQ(applyValues(bindSettings(kifsSchema(), loaded), result.settings.scenes.at("kifs")), "");
+  EXPECT_EQ(loaded.step, 3);
+  EXPECT_EQ(loaded.tier, Tier::Low);
+  EXPECT_EQ(loaded.targetMs, 0.1f);
+  EXPECT_FALSE(loaded.grain);
+  EXPECT_EQ(loaded.label, "hello");
+  EXPECT_EQ(loaded.drag, 0.0f);
+  EXPECT_EQ(snapshot(bindSettings(kifsSchema(), loaded), false), snapshot(bound, false));
+}
+
+TEST_F(SettingsFile, UnknownKeysAndScenesSurviveASave) {
+  writeAll(path_, R"({"version": 1, "window": {"w": 1280, "h": 720}, "scene": "kifs",
+    "scenes": {"glass": {"ior": 1.5, "deep": [1, [2, {"x": null}]]},
+               "kifs": {"step": 4, "future_knob": "x"},
+               "plain": {"old": 1}}})");
+  LoadResult result = load();
+  EXPECT_TRUE(result.warnings.empty()) << result.warnings[0];
+  EXPECT_EQ(result.settings.scenes.at("kifs"), (KeyValues{{"step", "4"}}));
+  EXPECT_TRUE(result.settings.scenes.at("plain").empty());
+
+  result.settings.scenes["kifs"] = {{"step", "6"}};
+  saveSettings(path_, result.settings, schemaFor);
+  const auto json = nlohmann::json::parse(readAll(path_));
+  EXPECT_EQ(json["window"], nlohmann::json::parse(R"({"w": 1280, "h": 720})"));
+  EXPECT_EQ(json["scenes"]["glass"], nlohmann::json::parse(R"({"ior": 1.5, "deep": [1, [2, {"x": null}]]})"));
+  EXPECT_EQ(json["scenes"]["kifs"]["future_knob"], "x");
+  EXPECT_EQ(json["scenes"]["kifs"]["step"], 6);
+  EXPECT_EQ(json["scenes"]["plain"]["old"], 1);
+  // And again: a second load/save cycle changes nothing.
+  const std::string first = readAll(path_);
+  saveSettings(path_, load().settings, schemaFor);
+  EXPECT_EQ(readAll(path_), first);
+}
+
+TEST_F(SettingsFile, BadValuesAreDroppedWithOneWarningEach) {
+  struct Case {
+    std::string json;  // the value of "step" / "target_ms" / ...
+    std::string key;
+    std::string why;
+  };
+  const std::vector<Case> cases = {
+      {R"("NaN")", "target_ms", "expected a number, found string"},
+      {R"("0.5")", "target_ms", "expected a number, found string"},
+      {"1e308", "target_ms", "expected a number from 0.1 to 1000"},
+      {"-1e308", "target_ms", "expected a number from 0.1 to 1000"},
+      {"1e-300", "target_ms", "expected a number from 0.1 to 1000"},
+      {"2000", "target_ms", "expected a number from 0.1 to 1000"},
+      {"12", "step", "expected a whole number from 1 to 9"},
+      {"3.5", "step", "expected a whole number from 1 to 9"},
+      {"3.0", "step", "expected a whole number from 1 to 9"},  // as strict as --set step=3.0
+      {"18446744073709551615", "step", "expected a whole number from 1 to 9"},
+      {"true", "step", "expected a whole number, found boolean"},
+      {"null", "step", "expected a whole number, found null"},
+      {R"({"value": 3})", "step", "expected a whole number, found object"},
+      {"[3]", "step", "expected a whole number, found array"},
+      {R"("medium")", "tier", "expected one of: auto high low"},
+      {"1", "tier", "expected a string, found number"},
+      {R"("on")", "grain", "expected true or false, found string"},
+      {"1", "grain", "expected true or false, found number"},
+      {R"("")", "label", "expected 1 to 8 characters"},
+      {"4", "drag", "not kept between runs"},
+  };
+  for (const Case& c : cases) {
+    writeAll(path_, fmt::format(R"({{"version": 1, "scenes": {{"kifs": {{"step": 2, "{}": {}}}}}}})", c.key, c.json));
+    const LoadResult result = load();
+    ASSERT_EQ(result.warnings.size(), 1u) << c.json;
+    const std::string& warning = result.warnings[0];
+    EXPECT_NE(warning.find("kifs." + c.key + "=" + nlohmann::json::parse(c.json).dump() + ": " + c.why), std::string::npos) << warning;
+    EXPECT_NE(warning.find(path_.string()), std::string::npos) << warning;
+    // The bad value is gone (its default applies); the good one beside it stays.
+    KeyValues expected = {{"step", "2"}};
+    if (c.key == "step") expected.clear();
+    EXPECT_EQ(result.settings.scenes.at("kifs"), expected) << c.json;
+    EXPECT_TRUE(asideFiles().empty());
+  }
+}
+
+TEST_F(SettingsFile, NumbersAreCanonicalised) {
+  writeAll(path_, R"({"scenes": {"kifs": {"step": 3, "target_ms": 0.1000000001, "label": "x"}}})");
+  const LoadResult result = load();
+  EXPECT_TRUE(result.warnings.empty()) << result.warnings[0];
+  EXPECT_EQ(result.settings.scenes.at("kifs"), (KeyValues{{"step", "3"}, {"target_ms", "0.1"}, {"label", "x"}}));
+}
+
+TEST_F(SettingsFile, MalformedTopLevelValuesWarn) {
+  writeAll(path_, R"({"scene": 4, "scenes": {"kifs": [1, 2]}})");
+  LoadResult result = load();
+  ASSERT_EQ(result.warnings.size(), 2u);
+  EXPECT_NE(result.warnings[0].find("scene: expected a string, found number"), std::string::npos) << result.warnings[0];
+  EXPECT_NE(result.warnings[1].find("scenes.kifs is array, not an object"), std::string::npos) << result.warnings[1];
+
+  writeAll(path_, R"({"scene": "nope", "scenes": "kifs"})");
+  result = load();
+  ASSERT_EQ(result.warnings.size(), 2u);
+  EXPECT_NE(result.warnings[0].find("no scene 'nope'"), std::string::npos) << result.warnings[0];
+  EXPECT_NE(result.warnings[1].find("scenes: expected an object"), std::string::npos) << result.warnings[1];
+  EXPECT_TRUE(asideFiles().empty());
+}
+
+TEST_F(SettingsFile, UnreadableFilesAreMovedAsideNotDeleted) {
+  expectMovedAside(R"({"version": 1, "scenes": {"kifs": {"step": 3)", "truncated");
+  expectMovedAside("", "empty");
+  const char binary[] = "\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe\x80\x81";
+  expectMovedAside(std::string(binary, sizeof binary - 1), "binary");
+  expectMovedAside(R"([{"version": 1}])", "a top-level array");
+  expectMovedAside("42", "a number");
+  expectMovedAside(R"({"scenes": {"kifs": {"target_ms": NaN}}})", "bare NaN");
+  expectMovedAside(R"({"version": 2, "scenes": {}})", "a newer version");
+  expectMovedAside(std::string(100000, '['), "deep arrays");
+  std::string objects;
+  for (int i = 0; i < 100000; ++i) objects += R"({"a":)";
+  expectMovedAside(objects, "deep objects");
+  // Complete and inside a valid object: kept as an unknown scene, it would overflow the stack on save.
+  expectMovedAside(R"({"scenes": {"glass": )" + std::string(100000, '[') + std::string(100000, ']') + "}}",
+                   "deep but complete");
+  expectMovedAside(R"({"scenes": {}, "pad": ")" + std::string(kMaxSettingsBytes, ' ') + R"("})", "over 1 MiB");
+}
+
+TEST_F(SettingsFile, TwoBadFilesInOneSecondBothKept) {
+  writeAll(path_, "garbage one");
+  load();
+  writeAll(path_, "garbage two");
+  load();
+  const auto aside = asideFiles();
+  ASSERT_EQ(aside.size(), 2u);
+  std::set<std::string> contents;
+  for (const auto& path : aside) contents.insert(readAll(path));
+  EXPECT_EQ(contents, (std::set<std::string>{"garbage one", "garbage two"}));
+}
+
+TEST_F(SettingsFile, NotARegularFileIsLeftAlone) {
+  fs::create_directory(path_);
+  LoadResult result = load();
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_NE(result.warnings[0].find("not a regular file"), std::string::npos) << result.warnings[0];
+  EXPECT_TRUE(fs::is_directory(path_));
+  EXPECT_TRUE(asideFiles().empty());
+  // Saving over a folder fails with an error, not a crash.
+  EXPECT_THROW(saveSettings(path_, Settings{}, schemaFor), Error);
+
+  if (fs::exists("/dev/zero")) {
+    result = loadSettings("/dev/zero", schemaFor);
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_NE(result.warnings[0].find("not a regular file"), std::string::npos);
+    EXPECT_TRUE(fs::exists("/dev/zero"));
+  }
+}
+
+TEST_F(SettingsFile, SaveFailsWithAnErrorWhereNoFolderCanBeMade) {
+  writeAll(dir_ / "file", "x");
+  EXPECT_THROW(saveSettings(dir_ / "file" / "settings.json", Settings{}, schemaFor), Error);
+}
+
+// Sets an environment variable for one scope and puts the old value back.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value)
+      setenv(name, value, 1);
+    else
+      unsetenv(name);
+  }
+  ~ScopedEnv() {
+    if (old_)
+      setenv(name_, old_->c_str(), 1);
+    else
+      unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(SettingsPath, FollowsTheXdgRules) {
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", "/tmp/xdg-config");
+    ScopedEnv home("HOME", "/home/someone");
+    EXPECT_EQ(defaultSettingsPath(), fs::path("/tmp/xdg-config/vitrine/settings.json"));
+  }
+  for (const char* ignored : {"", "relative/config", "./config"}) {
+    ScopedEnv xdg("XDG_CONFIG_HOME", ignored);
+    ScopedEnv home("HOME", "/home/someone");
+    EXPECT_EQ(defaultSettingsPath(), fs::path("/home/someone/.config/vitrine/settings.json")) << ignored;
+  }
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", nullptr);
+    ScopedEnv home("HOME", "/home/someone");
+    EXPECT_EQ(defaultSettingsPath(), fs::path("/home/someone/.config/vitrine/settings.json"));
+  }
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", nullptr);
+    ScopedEnv home("HOME", nullptr);
+    EXPECT_TRUE(defaultSettingsPath().empty());
+  }
+}
+
+TEST(SettingsSaver, WritesOnceAfterChangesSettle) {
+  SettingsSaver saver(std::chrono::seconds(1));
+  const Clock::time_point t0{};
+  EXPECT_FALSE(saver.due(t0 + std::chrono::seconds(10)));  // nothing changed
+  // A slider dragged for two seconds: a change every frame, no save while it moves.
+  for (int frame = 0; frame <= 120; ++frame) {
+    const auto now = t0 + std::chrono::milliseconds(frame * 1000 / 60);
+    saver.markDirty(now);
+    EXPECT_FALSE(saver.due(now));
+  }
+  const auto last = t0 + std::chrono::seconds(2);
+  EXPECT_FALSE(saver.due(last + std::chrono::milliseconds(999)));
+  EXPECT_TRUE(saver.due(last + std::chrono::seconds(1)));
+  EXPECT_FALSE(saver.due(last + std::chrono::seconds(2)));  // once
+  EXPECT_FALSE(saver.dirty());
+}
+
+TEST(SettingsSaver, FlushReportsUnsavedChangesOnce) {
+  SettingsSaver saver;
+  EXPECT_FALSE(saver.flush());
+  saver.markDirty(Clock::time_point{});
+  EXPECT_TRUE(saver.dirty());
+  EXPECT_TRUE(saver.flush());
+  EXPECT_FALSE(saver.flush());
+  EXPECT_FALSE(saver.due(Clock::time_point{} + std::chrono::hours(1)));
+}
+
+}  // namespace
+}  // namespace vitrine::params
