@@ -3,10 +3,10 @@
 // between frames (keys, clicks, scrolling), held until the frame loop takes it.
 #include <vulkan/vulkan.h>
 
-#include <glm/vec2.hpp>
-
 #include <string>
 #include <vector>
+
+#include "host/pointer.h"
 
 struct GLFWwindow;
 
@@ -25,15 +25,6 @@ class Surface {
  private:
   VkInstance instance_;
   VkSurfaceKHR surface_;
-};
-
-// The mouse as the frame loop sees it: positions in framebuffer pixels, events since the last take.
-struct Pointer {
-  glm::vec2 pixels{0.0f};
-  VkExtent2D framebuffer{};
-  bool leftHeld = false;
-  bool leftPressed = false;  // a press happened since the last take, even if already released
-  float wheel = 0.0f;        // scroll steps since the last take
 };
 
 class Window {

@@ -1,0 +1,85 @@
+#pragma once
+// Scripted input for headless runs (--input FILE): a person's mouse and keys written down with the
+// simulation time at which they happen, replayed frame-exactly and independent of real time.
+//
+// One event per line, "SECONDS VERB ARGS"; '#' starts a comment; blank lines are allowed:
+//   move X Y      cursor to (X, Y) in normalised output coordinates, origin top-left, each in 0..1
+//   down / up     left button pressed / released
+//   wheel STEPS   scroll, a finite number of steps, negative scrolls the other way
+//   key NAME      a key press: a-z, 0-9, f1-f12, space, enter, escape, tab, backspace, left, right,
+//                 up, down, minus, equal, comma, period, slash, semicolon, apostrophe, grave,
+//                 backslash, left_bracket, right_bracket (case-insensitive)
+// Times are finite, >= 0 and never decrease down the file. The cursor stays where the last move put it
+// (at the centre of the output before the first move).
+#include <vulkan/vulkan.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <glm/vec2.hpp>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "host/cursor_tracker.h"
+#include "scenes/scene.h"
+
+namespace vitrine::host {
+
+struct InputEvent {
+  enum class Kind { Move, Down, Up, Wheel, Key };
+  double time = 0.0;
+  Kind kind = Kind::Move;
+  glm::vec2 position{0.0f};  // Move: normalised, 0..1
+  float wheel = 0.0f;        // Wheel: steps
+  int key = 0;               // Key: a GLFW key code
+};
+
+struct InputScript {
+  std::vector<InputEvent> events;  // in file order, so times never decrease
+};
+
+// Throws vitrine::Error "NAME:LINE: reason" for the first malformed line; `name` labels the text.
+InputScript parseInputScript(std::string_view text, std::string_view name);
+
+// Reads and parses a script file. Refuses what is not a regular file, or is over 1 MiB.
+InputScript loadInputScript(const std::filesystem::path& path);
+
+// The GLFW key code for a key name of the script format, any case; nullopt when there is none.
+std::optional<int> keyFromName(std::string_view name);
+
+struct StepInput {
+  CursorInput cursor;
+  std::vector<int> keysPressed;  // GLFW key codes, in file order
+};
+
+// Replays a script one fixed simulation step at a time.
+//
+// The rule: an event at time t belongs to the first step whose time is >= t, so "0.5 down" is seen by
+// the step at 0.5 s and by none before it. Step times built by adding up a fixed step carry rounding
+// error, so "reaching" t allows 1 µs of slack, far below any step. Events before the first step all
+// land in it; steps are expected in increasing time.
+//
+// The cursor goes through the same CursorTracker as a real mouse, never on the menu. Each event is
+// observed as though a frame were drawn right after it, so several events in one step apply in file
+// order and lose nothing: a press and release within one step still drags by the movement between them.
+class InputPlayer {
+ public:
+  explicit InputPlayer(InputScript script);
+
+  // The input of the step that shows `stepTime`, on an output of `outputPixels`.
+  StepInput step(double stepTime, VkExtent2D outputPixels);
+
+  // True once every event has been applied; false at the end of a run means the script ran past it.
+  bool finished() const { return next_ == script_.events.size(); }
+
+ private:
+  void observe(VkExtent2D outputPixels, bool pressed, float wheel);
+
+  InputScript script_;
+  size_t next_ = 0;
+  glm::vec2 position_{0.5f};
+  bool held_ = false;
+  CursorTracker tracker_;
+};
+
+}  // namespace vitrine::host
