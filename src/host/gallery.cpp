@@ -53,7 +53,7 @@ const SceneInfo* sceneForKey(int key) {
 // Each value checked by the scene's schema on a default settings struct, before the scene exists.
 std::string checkValues(const SceneInfo& info, const params::KeyValues& values) {
   const auto scratch = info.schema().makeDefaults();
-  return params::apply({&info.schema(), scratch.get()}, values);
+  return params::applyValues({&info.schema(), scratch.get()}, values);
 }
 
 // --set/--preset entries for `scene`: those naming it, and the unqualified ones when it is the

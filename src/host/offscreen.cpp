@@ -9,13 +9,19 @@
 #include "gpu/sync_objects.h"
 
 namespace vitrine::host {
+namespace {
+constexpr double kStep = 1.0 / 60.0;  // FrameInput::dt, exactly
+}  // namespace
 
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
-    : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size) {
+    : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size),
+      startTime_(config.startTime) {
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
+  renderer_.setEventSink(config.events);
   renderer_.setScene(*info);
+  if (config.input) player_.emplace(*config.input);
   for (const std::string& preset : config.presets)
     if (auto why = renderer_.applyPreset(preset); !why.empty())
       throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, preset, why));
@@ -40,6 +46,12 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
 
 FrameTimes Offscreen::renderFrame() {
   const auto start = std::chrono::steady_clock::now();
+  input_.time = startTime_ + double(input_.frame) * kStep;
+  if (player_) {
+    StepInput step = player_->step(input_.time, size_);
+    input_.cursor = step.cursor;
+    input_.keysPressed = std::move(step.keysPressed);
+  }
   renderer_.scene().update(input_);
   VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
@@ -60,7 +72,6 @@ FrameTimes Offscreen::renderFrame() {
   times.passes = renderer_.timer().collect(0);
   for (const auto& pass : times.passes) times.gpuMs += pass.ms;
   input_.lastGpuMs = times.gpuMs;
-  input_.time += input_.dt;
   ++input_.frame;
   return times;
 }

@@ -1,9 +1,12 @@
 #pragma once
 // A scene rendered with no window and no surface, one fixed step per frame: the headless CLI, the
-// benchmark and the golden tests all drive this. Frame k shows time startTime + k * dt.
+// benchmark and the golden tests all drive this. Frame k shows time startTime + k / 60, computed
+// in double from k (never by summing steps, which drifts), and an input script sees the same times.
 #include "image/image.h"
+#include "host/input_script.h"
 #include "host/scene_renderer.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +21,8 @@ struct OffscreenConfig {
   bool reducedMotion = false;
   std::vector<std::string> presets;  // applied in order after creation, before the parameters
   params::KeyValues parameters;      // applied together after the presets
+  std::optional<InputScript> input;  // --input: the cursor and keys, as a person would use them
+  EventSink* events = nullptr;       // --events: where the scene's events go
 };
 
 struct FrameTimes {
@@ -33,6 +38,8 @@ class Offscreen {
   FrameTimes renderFrame();
   ImageRgba readback();  // the output of the last frame
   uint64_t frames() const { return input_.frame; }
+  // False when an input script still holds events past the last rendered frame.
+  bool inputFinished() const { return !player_ || player_->finished(); }
   const SceneInfo& scene() const { return renderer_.info(); }
 
  private:
@@ -45,6 +52,8 @@ class Offscreen {
   gpu::Unique<VkCommandPool> pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   FrameInput input_;
+  double startTime_;
+  std::optional<InputPlayer> player_;
   bool rendered_ = false;
 };
 

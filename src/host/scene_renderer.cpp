@@ -30,13 +30,14 @@ void SceneRenderer::setScene(const SceneInfo& info) {
   if (resources_) device_.retire(std::move(resources_));
   resources_ = std::make_unique<gpu::FrameResources>(device_);
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
-  scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, framesInFlight_});
+  scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, SceneEvents(events_, info.name),
+                                             framesInFlight_});
   info_ = &info;
 }
 
 std::string SceneRenderer::applyParameters(const params::KeyValues& values) {
   const Scene& scene = *scene_;
-  return params::apply(scene_->parameters(), values, [&scene] { return scene.checkParameters(); });
+  return params::applyValues(scene_->parameters(), values, [&scene] { return scene.checkParameters(); });
 }
 
 std::string SceneRenderer::applyPreset(std::string_view name) {

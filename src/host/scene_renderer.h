@@ -40,6 +40,8 @@ class SceneRenderer {
   std::string applyParameters(const params::KeyValues& values);
   std::string applyPreset(std::string_view name);
   const SceneInfo& info() const { return *info_; }
+  // Where scenes created from now on report their events (null: nowhere).
+  void setEventSink(EventSink* sink) { events_ = sink; }
   gpu::PassTimer& timer() { return timer_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst);
@@ -57,6 +59,7 @@ class SceneRenderer {
   gpu::StreamArena stream_;
   gpu::ComputeProgram present_;
   const SceneInfo* info_ = nullptr;
+  EventSink* events_ = nullptr;
   std::unique_ptr<gpu::FrameResources> resources_;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;

@@ -1,12 +1,15 @@
 // The host's frame resources under the validation layer with synchronisation checks: declared images
 // through many resizes with two frames in flight, a history pair carrying last frame's contents (and
 // reported invalid after a resize), and deferred deletion leaving nothing behind at device exit.
+#include "core/error.h"
 #include "gpu/sync_objects.h"
 #include "host/scene_renderer.h"
 #include "image/image.h"
 #include "support/gpu_test.h"
 
 #include <array>
+#include <cstring>
+#include <optional>
 
 namespace vitrine::test {
 namespace {
@@ -209,6 +212,81 @@ TEST(FrameResourcesExit, DeferredDeletionFreesEverythingByExit) {
     EXPECT_EQ(device.retiredCount(), 0u) << "the renderer drains what it retired when it goes";
   }
   EXPECT_EQ(instance.validationMessages(), 0) << "no leaked object at vkDestroyDevice, no hazard";
+}
+
+}  // namespace
+}  // namespace vitrine::test
+
+namespace vitrine::test {
+namespace {
+
+class Submission : public GpuTest {};
+
+TEST_F(Submission, ARecordingThatThrowsFreesItsCommandBufferAndTheQueueGoesOn) {
+  for (int i = 0; i < 50; ++i)
+    EXPECT_THROW(device().submitNow([](VkCommandBuffer) { throw vitrine::Error("recording failed"); }), vitrine::Error);
+  const uint64_t before = device().lastSubmitted();
+  device().submitNow([](VkCommandBuffer) {});
+  EXPECT_EQ(device().lastSubmitted(), before + 1) << "the failed recordings never reached the queue";
+  EXPECT_GE(device().completed(), before + 1);
+}
+
+TEST_F(Submission, StreamArenaUploadsArriveAndChunksAreReused) {
+  gpu::StreamArena arena(device(), 64 * 1024);
+  gpu::Buffer target(device(), 4096, VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                     gpu::MemoryUse::Device, "upload target");
+  gpu::Buffer readback(device(), 4096, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "upload readback");
+  for (uint32_t frame = 0; frame < 40; ++frame) {
+    std::vector<uint32_t> values(1024, frame * 7 + 1);
+    device().submitNow([&](VkCommandBuffer cmd) {
+      gpu::uploadBuffer(cmd, arena, target, 0, std::as_bytes(std::span(values)), gpu::use::TransferSrcBuffer);
+      for (int i = 0; i < 8; ++i) arena.allocate(6000);  // per-frame uniform blocks
+      readback.use(cmd, gpu::use::TransferDstBuffer);
+      const VkBufferCopy copy{0, 0, 4096};
+      vkCmdCopyBuffer(cmd, target.handle(), readback.handle(), 1, &copy);
+      readback.use(cmd, gpu::use::HostReadBuffer);
+    });
+    readback.invalidate();
+    ASSERT_EQ(readback.view<const uint32_t>()[1023], frame * 7 + 1) << "frame " << frame;
+  }
+  // About 53 KB a frame, finished before the next: one or two chunks cycle, none is added per frame.
+  EXPECT_LE(arena.chunkCount(), 2u);
+}
+
+// Bindings hold values only: a copy outlives the original and pushes the same descriptors.
+TEST_F(Submission, CopiedBindingsStayValid) {
+  gpu::ProgramLibrary programs(device());
+  gpu::ComputeProgram accumulate(programs, "test/accumulate.comp",
+                                 {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 8});
+  gpu::ImageDesc desc;
+  desc.extent = {8, 8, 1};
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  gpu::Image source(device(), desc, "source"), destination(device(), desc, "destination");
+  std::optional<gpu::Bindings> copy;
+  {
+    auto original = std::make_unique<gpu::Bindings>();
+    original->sampledImage(source.view(), device().sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
+                           gpu::use::ComputeSample.layout)
+        .storageImage(destination.view());
+    copy = *original;
+    std::memset(static_cast<void*>(original.get()), 0xAB, sizeof(gpu::Bindings));  // the original is gone
+  }
+  gpu::Buffer readback(device(), 8 * 8 * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "readback");
+  device().submitNow([&](VkCommandBuffer cmd) {
+    source.use(cmd, gpu::use::ComputeSample);
+    destination.use(cmd, gpu::use::ComputeWrite);
+    accumulate.bind(cmd);
+    accumulate.push(cmd, *copy);
+    const struct {
+      float add;
+      uint32_t useSource;
+    } push{3.0f, 0u};
+    accumulate.constants(cmd, push);
+    accumulate.dispatchOver(cmd, VkExtent2D{8, 8}, {8, 8});
+    gpu::recordReadback(cmd, destination, readback);
+  });
+  readback.invalidate();
+  EXPECT_FLOAT_EQ(imageFromHalves(8, 8, readback.view<const uint16_t>()).pixels[0], 3.0f);
 }
 
 }  // namespace

@@ -418,14 +418,14 @@ TEST(NoodlesSettings, GridForms) {
 TEST(NoodlesSettings, EveryNamedParameterParsesThroughTheSchema) {
   NoodleSettings s;
   const params::Bound bound{&schema(), &s};
-  EXPECT_EQ(params::apply(bound, {{"frames", "up"}, {"integrator", "rk4"}, {"msaa", "off"}}), "");
+  EXPECT_EQ(params::applyValues(bound, {{"frames", "up"}, {"integrator", "rk4"}, {"msaa", "off"}}), "");
   EXPECT_EQ(s.frames, FrameMethod::Up);
   EXPECT_EQ(s.integrator, Integrator::Rk4);
   EXPECT_FALSE(s.msaa);
-  EXPECT_NE(params::apply(bound, {{"field", "gradient"}}).find("curl"), std::string::npos);
-  EXPECT_NE(params::apply(bound, {{"step", "2"}}), "");
-  EXPECT_NE(params::apply(bound, {{"nonsense", "1"}}), "");
-  EXPECT_EQ(params::apply(bound, {{"grid", "32x16"}}), "");
+  EXPECT_NE(params::applyValues(bound, {{"field", "gradient"}}).find("curl"), std::string::npos);
+  EXPECT_NE(params::applyValues(bound, {{"step", "2"}}), "");
+  EXPECT_NE(params::applyValues(bound, {{"nonsense", "1"}}), "");
+  EXPECT_EQ(params::applyValues(bound, {{"grid", "32x16"}}), "");
   EXPECT_EQ(s.grid, glm::uvec3(32, 16, 1));
   EXPECT_EQ(schema().find("grid")->format(&s), "32x16x1");
   // Every key of the old command line is still there, so scripts and goldens keep working.

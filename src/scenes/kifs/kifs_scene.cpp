@@ -58,7 +58,8 @@ struct Push {
 class KifsScene final : public Scene {
  public:
   explicit KifsScene(const SceneContext& context)
-      : march_(context.programs, "kifs/kifs.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(Push)}) {}
+      : events_(context.events),
+        march_(context.programs, "kifs/kifs.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(Push)}) {}
 
   void update(const FrameInput& input) override {
     if (input.cursor.dragging) {
@@ -68,7 +69,11 @@ class KifsScene final : public Scene {
     const float tumble = input.reducedMotion ? 0.0f : float(input.time);
     angles_ = tumble * kTumbleRate + glm::vec2(settings_.dragX, settings_.dragY) * kDragToAngle;
     reducedMotion_ = input.reducedMotion;
-    if (settings_.tier == Tier::Auto) active_ = autoTier_.observe(input.lastGpuMs, settings_.targetMs);
+    if (settings_.tier != Tier::Auto) return;
+    const Tier before = active_;
+    active_ = autoTier_.observe(input.lastGpuMs, settings_.targetMs);
+    if (active_ != before)
+      events_.emit(input.time, {"tier", {{"from", tierName(before)}, {"to", tierName(active_)}, {"gpu_ms", input.lastGpuMs}}});
   }
 
   void record(const FrameContext& frame) override {
@@ -91,7 +96,7 @@ class KifsScene final : public Scene {
 
   void drawPanel() override {
     ImGui::TextUnformatted(kStageNames[size_t(settings_.step - 1)].c_str());
-    if (settings_.tier == Tier::Auto) ImGui::Text("auto tier: %s", schema().find("tier")->choices[size_t(active_)].c_str());
+    if (settings_.tier == Tier::Auto) ImGui::Text("auto tier: %s", tierName(active_).c_str());
     const auto tier = settingsFor(activeTier());
     ImGui::Text("%d march steps, render scale %.2f", tier.marchSteps, tier.renderScale);
   }
@@ -101,6 +106,9 @@ class KifsScene final : public Scene {
  private:
   Tier activeTier() const { return settings_.tier == Tier::Auto ? active_ : settings_.tier; }
 
+  static std::string tierName(Tier tier) { return schema().find("tier")->choices[size_t(tier)]; }
+
+  SceneEvents events_;
   gpu::ComputeProgram march_;
   Settings settings_;
   Tier active_ = Tier::High;

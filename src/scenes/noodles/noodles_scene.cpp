@@ -24,6 +24,7 @@ class NoodlesScene final : public Scene {
  public:
   explicit NoodlesScene(const SceneContext& context)
       : device_(context.device),
+        events_(context.events),
         budget_(deviceBudget(context.device)),
         integrate_(context.programs),
         tubes_(context) {
@@ -42,6 +43,12 @@ class NoodlesScene final : public Scene {
       else camera_.unpin();
     }
     camera_.update(input, nestRadius(), nestCentre());
+    // A drag takes the camera off its flight and a release sends it back: tests and recordings see when.
+    if (input.cursor.dragging != dragging_) {
+      dragging_ = input.cursor.dragging;
+      events_.emit(input.time, {dragging_ ? "orbit_grab" : "orbit_release",
+                                {{"x", input.cursor.normalized.x}, {"y", input.cursor.normalized.y}}});
+    }
   }
 
   void record(const FrameContext& frame) override {
@@ -123,6 +130,7 @@ class NoodlesScene final : public Scene {
   }
 
   const gpu::Device& device_;
+  SceneEvents events_;
   const DeviceBudget budget_;
   NoodleSettings settings_;
   StrandLayout layout_;
@@ -135,6 +143,7 @@ class NoodlesScene final : public Scene {
   double writhe_ = 0.0;  // noise units the potentials have drifted
   bool reducedMotion_ = false;
   OrbitPin pinned_;  // what the camera rig was last told
+  bool dragging_ = false;
 };
 
 void NoodlesScene::drawPanel() {
