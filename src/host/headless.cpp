@@ -40,7 +40,12 @@ int runCompare(const Options& options) {
   const ImageRgba reference = readImage(options.compare[0]);
   const ImageRgba candidate = readImage(options.compare[1]);
   const CompareResult result = compareImages(reference, candidate);
-  std::printf("%s\n", result.summary().c_str());
+  if (!result.sizeMatches) {  // readImage read both, so both are EXRs
+    std::fprintf(stderr, "%s (reference %s and candidate %s, both EXR)\n", result.summary().c_str(),
+                 options.compare[0].c_str(), options.compare[1].c_str());
+    return 2;
+  }
+  std::fprintf(result.passed ? stdout : stderr, "%s\n", result.summary().c_str());  // a failure is a diagnostic
   return result.passed ? 0 : 2;
 }
 

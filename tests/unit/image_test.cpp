@@ -2,6 +2,7 @@
 // are not EXRs. No GPU.
 #include "core/error.h"
 #include "image/image_compare.h"
+#include "image/image_file.h"
 #include "image/image_io.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,54 @@ TEST_F(ImageFiles, ANaNReferenceWrittenToExrFailsTheComparison) {
   const auto r = compareImages(read, flat(8, 8, 0.25f));
   EXPECT_FALSE(r.passed) << r.summary();
   EXPECT_TRUE(contains(r.summary(), "2 non-finite in the reference")) << r.summary();
+}
+
+std::string readError(const std::filesystem::path& path) {
+  try {
+    readImage(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(ImageFiles, ReadingADeviceIsRefusedAtOnce) {
+  EXPECT_EQ(readError("/dev/zero"), "Cannot read /dev/zero: it is a character device, not a regular file.");
+}
+
+TEST_F(ImageFiles, ReadingAFolderOrAMissingFileSaysSo) {
+  EXPECT_TRUE(contains(readError(folder_), "it is a folder")) << readError(folder_);
+  EXPECT_TRUE(contains(readError(folder_ / "absent.exr"), "No such file or directory"));
+}
+
+TEST_F(ImageFiles, APngNamedExrIsCalledAPng) {
+  const auto path = folder_ / "picture.exr";
+  std::ofstream(path, std::ios::binary) << "\x89PNG\r\n\x1a\n\0\0\0\rIHDR";
+  EXPECT_EQ(readError(path), "Cannot read " + path.string() + ": it is a PNG file, not an EXR.");
+}
+
+TEST_F(ImageFiles, EmptyAndUnknownFilesAreNotExrs) {
+  const auto empty = folder_ / "empty.exr";
+  std::ofstream(empty).close();
+  EXPECT_TRUE(contains(readError(empty), "it is empty, not an EXR")) << readError(empty);
+  const auto text = folder_ / "notes.exr";
+  std::ofstream(text) << "just some text";
+  EXPECT_TRUE(contains(readError(text), "it is not an EXR")) << readError(text);
+}
+
+TEST(ImageFormat, SniffsTheCommonFormats) {
+  auto sniff = [](std::string_view bytes) {
+    return sniffImageFormat(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+  };
+  using namespace std::string_view_literals;
+  EXPECT_EQ(sniff("\x76\x2f\x31\x01\x02\0\0\0"sv), "EXR");
+  EXPECT_EQ(sniff("\x89PNG\r\n\x1a\n"sv), "PNG");
+  EXPECT_EQ(sniff("\xff\xd8\xff\xe0"sv), "JPEG");
+  EXPECT_EQ(sniff("II*\0\x08\0\0\0"sv), "TIFF");
+  EXPECT_EQ(sniff("#?RADIANCE\n"sv), "Radiance HDR");
+  EXPECT_EQ(sniff("RIFF\0\0\0\0WEBPVP8 "sv), "WebP");
+  EXPECT_EQ(sniff("\x76\x2f"sv), "");  // too short to tell
+  EXPECT_EQ(sniff("hello"sv), "");
 }
 
 }  // namespace
