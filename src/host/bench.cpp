@@ -1,9 +1,11 @@
 #include "gpu/check.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
+#include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "core/stats.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <fmt/format.h>
 #include <fstream>
@@ -50,13 +52,15 @@ SceneResult benchScene(const gpu::Device& device, const Options& options, const 
 
 int runBench(const Options& options) {
   checkWritable(options.out);
-  gpu::Instance instance({options.validation, {}});
-  gpu::Device device(instance, {options.device});
   std::vector<std::string> scenes;
   if (options.scene.empty() || options.scene == "all")
     for (const auto& info : sceneRegistry()) scenes.emplace_back(info.name);
   else
     scenes.push_back(options.scene);
+  for (const auto& scene : scenes)  // a typo fails before the device is made
+    if (!findScene(scene)) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", scene));
+  gpu::Instance instance({options.validation, {}});
+  gpu::Device device(instance, {options.device});
 
   const VkExtent2D size = options.size.value_or(VkExtent2D{1920, 1080});
   std::string json = fmt::format(
@@ -88,7 +92,15 @@ int runBench(const Options& options) {
     json += fmt::format("      ]\n    }}{}\n", s + 1 < scenes.size() ? "," : "");
   }
   json += "  ]\n}\n";
-  std::ofstream(options.out) << json;
+  replaceAtomically(options.out, [&](const std::filesystem::path& temporary) {
+    errno = 0;
+    std::ofstream file(temporary, std::ios::binary);
+    file << json;
+    file.close();  // flushes: a full disk shows here
+    if (!file)
+      throw Error(fmt::format("Cannot write {}: {}.", options.out,
+                              errno ? std::generic_category().message(errno) : "the write failed"));
+  });
   if (instance.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
     return 3;
