@@ -2,21 +2,46 @@
 
 #include "core/error.h"
 
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fmt/format.h>
+#include <limits>
+#include <optional>
 #include <string_view>
 
 namespace vitrine {
 namespace {
 
-template <typename T>
-T parseNumber(std::string_view flag, std::string_view text) {
-  T value{};
+constexpr uint32_t kMaxWindowSide = 16384;  // the gallery's --size; headless sizes meet the device's limit
+constexpr uint32_t kMaxWhole = std::numeric_limits<uint32_t>::max();
+
+// A whole number in [min, max]; nothing for anything else (a sign, a fraction, too many digits).
+std::optional<uint32_t> wholeNumber(std::string_view text, uint32_t min, uint32_t max) {
+  uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw Error(fmt::format("{} expects a number, not '{}'.", flag, text));
+  if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) return std::nullopt;
+  return uint32_t(value);
+}
+
+uint32_t parseWhole(std::string_view flag, std::string_view text, uint32_t min, uint32_t max = kMaxWhole) {
+  if (const auto value = wholeNumber(text, min, max)) return *value;
+  throw Error(fmt::format("{} expects a whole number from {} to {}, not '{}'.", flag, min, max, text));
+}
+
+double parseSeconds(std::string_view flag, std::string_view text) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    throw Error(fmt::format("{} expects a finite number of seconds, not '{}'.", flag, text));
   return value;
+}
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return text;
 }
 
 }  // namespace
@@ -40,10 +65,11 @@ Headless frame k shows time SECONDS + k/60; the last frame is written.
 VkExtent2D parseSize(const std::string& text) {
   const auto x = text.find('x');
   if (x == std::string::npos) throw Error(fmt::format("--size expects WIDTHxHEIGHT such as 1920x1080, not '{}'.", text));
-  const auto width = parseNumber<uint32_t>("--size", std::string_view(text).substr(0, x));
-  const auto height = parseNumber<uint32_t>("--size", std::string_view(text).substr(x + 1));
-  if (width == 0 || height == 0) throw Error(fmt::format("--size must be at least 1x1, not '{}'.", text));
-  return {width, height};
+  const auto width = wholeNumber(std::string_view(text).substr(0, x), 1, kMaxWhole);
+  const auto height = wholeNumber(std::string_view(text).substr(x + 1), 1, kMaxWhole);
+  if (!width || !height)
+    throw Error(fmt::format("--size expects WIDTHxHEIGHT, each a whole number from 1 to {}, not '{}'.", kMaxWhole, text));
+  return {*width, *height};
 }
 
 Options parseOptions(int argc, const char* const* argv) {
@@ -63,6 +89,8 @@ Options parseOptions(int argc, const char* const* argv) {
   }
   auto value = [&](std::string_view flag) -> std::string {
     if (i + 1 >= argc) throw Error(fmt::format("{} needs a value; see vitrine --help.", flag));
+    if (const std::string_view next = argv[i + 1]; next.size() > 2 && next.starts_with("--"))
+      throw Error(fmt::format("{} needs a value, but got the option {}.", flag, next));
     return argv[++i];
   };
   for (; i < argc; ++i) {
@@ -72,14 +100,12 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--device") options.device = value(arg);
     else if (arg == "--validate") options.validation = true;
     else if (arg == "--reduced-motion") options.reducedMotion = true;
-    else if (arg == "--seed") options.seed = parseNumber<uint32_t>(arg, value(arg));
+    else if (arg == "--seed") options.seed = parseWhole(arg, value(arg), 0);
     else if (arg == "--size") options.size = parseSize(value(arg));
-    else if (arg == "--frames") {
-      options.frames = parseNumber<uint32_t>(arg, value(arg));
-      if (options.frames == 0) throw Error("--frames must be at least 1.");
-    } else if (arg == "--time") options.time = parseNumber<double>(arg, value(arg));
+    else if (arg == "--frames") options.frames = parseWhole(arg, value(arg), 1);
+    else if (arg == "--time") options.time = parseSeconds(arg, value(arg));
     else if (arg == "--out" || arg == "--json") options.out = value(arg);
-    else if (arg == "--warmup") options.warmup = parseNumber<uint32_t>(arg, value(arg));
+    else if (arg == "--warmup") options.warmup = parseWhole(arg, value(arg), 0);
     else if (arg == "--fullscreen") options.fullscreen = true;
     else if (arg == "--no-vsync") options.vsync = false;
     else if (arg == "--set") {
@@ -97,6 +123,13 @@ Options parseOptions(int argc, const char* const* argv) {
     throw Error("--headless needs --out FILE.exr (or FILE.png).");
   if (options.mode == Mode::Bench && options.out.empty()) throw Error("bench needs --json FILE.");
   if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME.");
+  if (const std::string ext = lowercase(std::filesystem::path(options.out).extension().string());
+      options.mode == Mode::Headless && ext != ".exr" && ext != ".png")
+    throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
+  if (options.mode == Mode::Gallery && options.size &&
+      (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
+    throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",
+                            kMaxWindowSide, options.size->width, options.size->height));
   return options;
 }
 

@@ -48,6 +48,12 @@ const SceneInfo* sceneForKey(int key) {
   return nullptr;
 }
 
+// A --size the device cannot hold fails here, before a swapchain is made for it.
+const gpu::Device& checkWindowSize(const gpu::Device& device, const std::optional<VkExtent2D>& size) {
+  if (size) gpu::checkImageSize(device, *size);
+  return device;
+}
+
 double secondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
@@ -105,7 +111,7 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
-      programs_(device_),
+      programs_(checkWindowSize(device_, options.size)),
       renderer_(device_, programs_, kFramesInFlight),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
