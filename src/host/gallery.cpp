@@ -123,6 +123,7 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
+  missingAssets_.insert(missingAssets_.end(), overlay_.fontProblems().begin(), overlay_.fontProblems().end());
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   switchScene(firstScene);
   renderer_.applyParameters(options.parameters);  // --set applies to the first scene
