@@ -1,6 +1,8 @@
 #include "app/options.h"
 
 #include "core/error.h"
+#include "core/output_path.h"
+#include "scenes/scene.h"
 
 #include <cctype>
 #include <charconv>
@@ -39,6 +41,39 @@ double parseSeconds(std::string_view flag, std::string_view text) {
   return value;
 }
 
+// "SCENE.NAME" or "NAME": split at the '.', which neither scene names nor keys contain. Nothing when
+// either side is empty or there is a second '.'. An unknown scene is an error naming `flag` and `text`.
+std::optional<SceneSetting> qualifiedName(std::string_view flag, std::string_view name, std::string_view text) {
+  SceneSetting setting;
+  if (const auto dot = name.find('.'); dot != std::string_view::npos) {
+    setting.scene = name.substr(0, dot);
+    name.remove_prefix(dot + 1);
+    if (setting.scene.empty()) return std::nullopt;
+    if (!findScene(setting.scene))
+      throw Error(fmt::format("Unknown scene '{}' in {} {}; vitrine --list-scenes shows them.", setting.scene, flag,
+                              text));
+  }
+  if (name.empty() || name.find('.') != std::string_view::npos) return std::nullopt;
+  setting.key = name;
+  return setting;
+}
+
+SceneSetting parseSet(std::string_view text) {
+  const auto eq = text.find('=');
+  std::optional<SceneSetting> setting;
+  if (eq != std::string_view::npos) setting = qualifiedName("--set", text.substr(0, eq), text);
+  if (!setting) throw Error(fmt::format("--set expects KEY=VALUE or SCENE.KEY=VALUE, not '{}'.", text));
+  setting->value = text.substr(eq + 1);
+  return *setting;
+}
+
+SceneSetting parsePreset(std::string_view text) {
+  std::optional<SceneSetting> preset;
+  if (text.find('=') == std::string_view::npos) preset = qualifiedName("--preset", text, text);
+  if (!preset) throw Error(fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", text));
+  return *preset;
+}
+
 std::string lowercase(std::string text) {
   for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
   return text;
@@ -50,15 +85,21 @@ const char* usage() {
   return R"(Vitrine: a gallery of real-time GPU pieces.
 
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
-          [--reduced-motion] [--seed S] [--validate]
+          [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
+          [--reset-settings] [--validate]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
-          [--set KEY=VALUE]... --out FILE.exr|FILE.png
-  vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set KEY=VALUE]... --json FILE
+          [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
+          --out FILE.exr|FILE.png
+  vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
+          [--preset [SCENE.]NAME]... --json FILE
   vitrine compare REFERENCE.exr CANDIDATE.exr
+  vitrine --list-params [SCENE]
   vitrine --list-devices | --list-scenes | --help | --version
 
 Gallery keys: 1-9 switch scene, Tab hides the UI, V toggles vsync, F11 fullscreen, F12 screenshot, Esc quits.
 Headless frame k shows time SECONDS + k/60; the last frame is written.
+--set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
+that scene. --list-params shows each scene's parameters.
 )";
 }
 
@@ -68,7 +109,8 @@ VkExtent2D parseSize(const std::string& text) {
   const auto width = wholeNumber(std::string_view(text).substr(0, x), 1, kMaxWhole);
   const auto height = wholeNumber(std::string_view(text).substr(x + 1), 1, kMaxWhole);
   if (!width || !height)
-    throw Error(fmt::format("--size expects WIDTHxHEIGHT, each a whole number from 1 to {}, not '{}'.", kMaxWhole, text));
+    throw Error(
+        fmt::format("--size expects WIDTHxHEIGHT, each a whole number from 1 to {}, not '{}'.", kMaxWhole, text));
   return {*width, *height};
 }
 
@@ -108,13 +150,21 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--warmup") options.warmup = parseWhole(arg, value(arg), 0);
     else if (arg == "--fullscreen") options.fullscreen = true;
     else if (arg == "--no-vsync") options.vsync = false;
-    else if (arg == "--set") {
-      const std::string kv = value(arg);
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--set expects KEY=VALUE, not '{}'.", kv));
-      options.parameters.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-    } else if (arg == "--list-devices") options.mode = Mode::ListDevices;
+    else if (arg == "--set") options.parameters.push_back(parseSet(value(arg)));
+    else if (arg == "--preset") options.presets.push_back(parsePreset(value(arg)));
+    else if (arg == "--input") options.input = value(arg);
+    else if (arg == "--events") options.events = value(arg);
+    else if (arg == "--reset-settings") options.resetSettings = true;
+    else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
+    else if (arg == "--list-params") {
+      options.mode = Mode::ListParams;
+      if (i + 1 < argc && argv[i + 1][0] != '-') {  // the optional SCENE
+        options.listParams = argv[++i];
+        if (!findScene(options.listParams))
+          throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", options.listParams));
+      }
+    }
     else if (arg == "--help" || arg == "-h") options.mode = Mode::Help;
     else if (arg == "--version") options.mode = Mode::Version;
     else throw Error(fmt::format("Unknown option '{}'; see vitrine --help.", arg));
@@ -126,11 +176,21 @@ Options parseOptions(int argc, const char* const* argv) {
   if (const std::string ext = lowercase(std::filesystem::path(options.out).extension().string());
       options.mode == Mode::Headless && ext != ".exr" && ext != ".png")
     throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
+  if (!options.input.empty() && options.mode != Mode::Headless) throw Error("--input is only for --headless runs.");
+  if (!options.events.empty() && options.mode != Mode::Headless) throw Error("--events is only for --headless runs.");
+  if (!options.events.empty()) checkWritable(options.events);
   if (options.mode == Mode::Gallery && options.size &&
       (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
     throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",
                             kMaxWindowSide, options.size->width, options.size->height));
   return options;
+}
+
+std::vector<std::pair<std::string, std::string>> parametersFor(const Options& options, std::string_view scene) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const auto& setting : options.parameters)
+    if (setting.scene.empty() || setting.scene == scene) pairs.emplace_back(setting.key, setting.value);
+  return pairs;
 }
 
 }  // namespace vitrine

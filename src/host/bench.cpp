@@ -31,7 +31,7 @@ struct SceneResult {
 
 SceneResult benchScene(const gpu::Device& device, const Options& options, const std::string& scene) {
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
-                         options.reducedMotion, options.parameters};
+                         options.reducedMotion, parametersFor(options, scene)};
   Offscreen offscreen(device, config);
   // Warm-up: pipeline compilation, clocks ramping, caches; not counted.
   for (uint32_t i = 0; i < options.warmup; ++i) offscreen.renderFrame();
@@ -69,8 +69,11 @@ int runBench(const Options& options) {
       device.properties().deviceName, device.properties().driverVersion,
       VK_API_VERSION_MAJOR(device.properties().apiVersion), VK_API_VERSION_MINOR(device.properties().apiVersion),
       VK_API_VERSION_PATCH(device.properties().apiVersion), size.width, size.height, options.frames, options.warmup);
-  for (size_t i = 0; i < options.parameters.size(); ++i)
-    json += fmt::format("{}\"{}\": \"{}\"", i ? ", " : "", options.parameters[i].first, options.parameters[i].second);
+  for (size_t i = 0; i < options.parameters.size(); ++i) {
+    const SceneSetting& set = options.parameters[i];
+    json += fmt::format("{}\"{}{}{}\": \"{}\"", i ? ", " : "", set.scene, set.scene.empty() ? "" : ".", set.key,
+                        set.value);
+  }
   json += "},\n  \"scenes\": [\n";
 
   std::printf("%s, %ux%u, %u frames after %u warm-up\n", device.describe().c_str(), size.width, size.height,

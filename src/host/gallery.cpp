@@ -126,7 +126,7 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   missingAssets_.insert(missingAssets_.end(), overlay_.fontProblems().begin(), overlay_.fontProblems().end());
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   switchScene(firstScene);
-  renderer_.applyParameters(options.parameters);  // --set applies to the first scene
+  renderer_.applyParameters(parametersFor(options, firstScene.name));  // --set applies to the first scene
 }
 
 int Gallery::run() {

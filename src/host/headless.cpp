@@ -18,7 +18,7 @@ int runHeadless(const Options& options) {
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
   OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
-                         options.reducedMotion, options.parameters};
+                         options.reducedMotion, parametersFor(options, options.scene)};
   ImageRgba image;
   {
     Offscreen offscreen(device, config);

@@ -55,7 +55,8 @@ TEST_F(AtomicFile, ConcurrentWritersToOnePathAllSucceedAndOneWins) {
   constexpr int kThreads = 8, kWrites = 20;
   auto contentFor = [](int thread, int write) {
     std::ostringstream text;  // large enough that interleaved writes would show
-    for (int line = 0; line < 2000; ++line) text << "thread " << thread << " write " << write << " line " << line << '\n';
+    for (int line = 0; line < 2000; ++line)
+      text << "thread " << thread << " write " << write << " line " << line << '\n';
     return text.str();
   };
   std::set<std::string> written;

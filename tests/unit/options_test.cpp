@@ -4,11 +4,20 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vitrine {
+
+void PrintTo(const SceneSetting& s, std::ostream* os) {
+  *os << "{" << s.scene << "|" << s.key << "|" << s.value << "}";
+}
+
 namespace {
 
 Options parse(std::vector<const char*> args) {
@@ -38,7 +47,8 @@ TEST(OptionsNumbers, TimeMustBeFinite) {
 }
 
 TEST(OptionsNumbers, WholeNumbersNameTheirRange) {
-  EXPECT_EQ(refusal({"--frames", "4294967296"}), "--frames expects a whole number from 1 to 4294967295, not '4294967296'.");
+  EXPECT_EQ(refusal({"--frames", "4294967296"}),
+            "--frames expects a whole number from 1 to 4294967295, not '4294967296'.");
   EXPECT_EQ(refusal({"--frames", "0"}), "--frames expects a whole number from 1 to 4294967295, not '0'.");
   EXPECT_EQ(refusal({"--frames", "-1"}), "--frames expects a whole number from 1 to 4294967295, not '-1'.");
   EXPECT_EQ(refusal({"--frames", "2.5"}), "--frames expects a whole number from 1 to 4294967295, not '2.5'.");
@@ -86,6 +96,104 @@ TEST(OptionsValues, HeadlessWritesExrOrPng) {
   for (const char* good : {"x.exr", "x.png", "dir/x.EXR", "x.PNG"})
     EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", good}), "accepted") << good;
   EXPECT_EQ(refusal({"bench", "--json", "timings.txt"}), "accepted");  // any name for the JSON
+}
+
+// ----------------------------------------------------------------------------------- --set, --preset
+
+TEST(OptionsSettings, SetTakesKeyValueOrSceneKeyValue) {
+  const auto o = parse({"--set", "step=3", "--set", "noodles.grid=32", "--set", "noodles.noise_scale=0.5",
+                        "--set", "tier=", "--set", "kifs.drag_x=a=b"});
+  const std::vector<SceneSetting> expected{{"", "step", "3"},
+                                           {"noodles", "grid", "32"},
+                                           {"noodles", "noise_scale", "0.5"},  // a '.' after '=' is the value's
+                                           {"", "tier", ""},
+                                           {"kifs", "drag_x", "a=b"}};
+  EXPECT_EQ(o.parameters, expected);
+}
+
+TEST(OptionsSettings, MalformedSetsAreRefused) {
+  for (const char* bad : {"novalue", "=3", ".grid=3", "noodles.=3", "noodles.a.b=3", "noodles."})
+    EXPECT_EQ(refusal({"--set", bad}), fmt::format("--set expects KEY=VALUE or SCENE.KEY=VALUE, not '{}'.", bad));
+  EXPECT_EQ(refusal({"--set", "nope.grid=32"}),
+            "Unknown scene 'nope' in --set nope.grid=32; vitrine --list-scenes shows them.");
+}
+
+TEST(OptionsSettings, ParametersForKeepsTheUnqualifiedAndTheScenesOwnInOrder) {
+  const auto o = parse({"bench", "--json", "b.json", "--set", "noodles.grid=32", "--set", "speed=2", "--set",
+                        "kifs.step=4", "--set", "noodles.grid=16"});
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(parametersFor(o, "noodles"), (Pairs{{"grid", "32"}, {"speed", "2"}, {"grid", "16"}}));
+  EXPECT_EQ(parametersFor(o, "kifs"), (Pairs{{"speed", "2"}, {"step", "4"}}));
+  EXPECT_EQ(parametersFor(Options{}, "kifs"), Pairs{});
+}
+
+TEST(OptionsSettings, PresetsAreRepeatableAndMayNameTheirScene) {
+  const auto o = parse({"--preset", "calm", "--preset", "noodles.storm", "--set", "step=2", "--preset", "calm"});
+  const std::vector<SceneSetting> expected{{"", "calm", ""}, {"noodles", "storm", ""}, {"", "calm", ""}};
+  EXPECT_EQ(o.presets, expected);
+  EXPECT_EQ(o.parameters.size(), 1u);
+  for (const char* bad : {"calm=1", ".calm", "noodles.", "noodles.a.b", ""})
+    EXPECT_EQ(refusal({"--preset", bad}), fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", bad));
+  EXPECT_EQ(refusal({"--preset", "nope.calm"}),
+            "Unknown scene 'nope' in --preset nope.calm; vitrine --list-scenes shows them.");
+}
+
+// ------------------------------------------------------------------------------------- --list-params
+
+TEST(OptionsListParams, ListsEveryOrOneScene) {
+  auto o = parse({"--list-params"});
+  EXPECT_EQ(o.mode, Mode::ListParams);
+  EXPECT_EQ(o.listParams, "");
+  o = parse({"--list-params", "noodles"});
+  EXPECT_EQ(o.mode, Mode::ListParams);
+  EXPECT_EQ(o.listParams, "noodles");
+  o = parse({"--list-params", "--validate"});  // an option after it is not a scene
+  EXPECT_EQ(o.listParams, "");
+  EXPECT_TRUE(o.validation);
+  EXPECT_EQ(refusal({"--list-params", "nope"}), "Unknown scene 'nope'; vitrine --list-scenes shows them.");
+}
+
+// --------------------------------------------------------------- --input, --events, --reset-settings
+
+class OptionsFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() / ("vitrine-options-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+  std::filesystem::path folder_;
+};
+
+TEST_F(OptionsFiles, InputAndEventsBelongToHeadlessRuns) {
+  const std::string events = (folder_ / "events.jsonl").string();
+  const auto o = parse({"--headless", "--scene", "kifs", "--input", "moves.txt", "--events", events.c_str(),
+                        "--out", "x.exr"});
+  EXPECT_EQ(o.input, "moves.txt");
+  EXPECT_EQ(o.events, events);
+  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless runs.");
+  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless runs.");
+  EXPECT_EQ(refusal({"bench", "--json", "b.json", "--events", events.c_str()}),
+            "--events is only for --headless runs.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--input"}),
+            "--input needs a value; see vitrine --help.");
+}
+
+TEST_F(OptionsFiles, EventsMustBeWritable) {
+  const std::string missing = (folder_ / "no-such-folder" / "events.jsonl").string();
+  EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--events", missing.c_str(), "--out", "x.exr"})
+                .find("Cannot write " + missing + ": the folder"),
+            std::string::npos);
+  EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--events", "/dev/full", "--out", "x.exr"})
+                .find("not a regular file"),
+            std::string::npos);
+  const std::string anyName = (folder_ / "events.log").string();  // any name will do
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--events", anyName.c_str(), "--out", "x.exr"}), "accepted");
+}
+
+TEST(OptionsGallery, ResetSettings) {
+  EXPECT_FALSE(parse({}).resetSettings);
+  EXPECT_TRUE(parse({"--reset-settings"}).resetSettings);
 }
 
 }  // namespace
