@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
           std::printf("%d  %-8.*s %.*s\n", info.key, int(info.name.size()), info.name.data(), int(info.title.size()),
                       info.title.data());
         return 0;
+      case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced
+        return host::runListParams(options);
       case Mode::ListDevices: {
         gpu::Instance instance({options.validation, {}});
         std::fputs(gpu::listDevices(instance).c_str(), stdout);

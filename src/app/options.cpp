@@ -1,22 +1,82 @@
 #include "app/options.h"
 
 #include "core/error.h"
+#include "core/output_path.h"
+#include "scenes/scene.h"
 
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fmt/format.h>
+#include <limits>
+#include <optional>
 #include <string_view>
 
 namespace vitrine {
 namespace {
 
-template <typename T>
-T parseNumber(std::string_view flag, std::string_view text) {
-  T value{};
+constexpr uint32_t kMaxWindowSide = 16384;  // the gallery's --size; headless sizes meet the device's limit
+constexpr uint32_t kMaxWhole = std::numeric_limits<uint32_t>::max();
+
+// A whole number in [min, max]; nothing for anything else (a sign, a fraction, too many digits).
+std::optional<uint32_t> wholeNumber(std::string_view text, uint32_t min, uint32_t max) {
+  uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw Error(fmt::format("{} expects a number, not '{}'.", flag, text));
+  if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) return std::nullopt;
+  return uint32_t(value);
+}
+
+uint32_t parseWhole(std::string_view flag, std::string_view text, uint32_t min, uint32_t max = kMaxWhole) {
+  if (const auto value = wholeNumber(text, min, max)) return *value;
+  throw Error(fmt::format("{} expects a whole number from {} to {}, not '{}'.", flag, min, max, text));
+}
+
+double parseSeconds(std::string_view flag, std::string_view text) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    throw Error(fmt::format("{} expects a finite number of seconds, not '{}'.", flag, text));
   return value;
+}
+
+// "SCENE.NAME" or "NAME": split at the '.', which neither scene names nor keys contain. Nothing when
+// either side is empty or there is a second '.'. An unknown scene is an error naming `flag` and `text`.
+std::optional<SceneSetting> qualifiedName(std::string_view flag, std::string_view name, std::string_view text) {
+  SceneSetting setting;
+  if (const auto dot = name.find('.'); dot != std::string_view::npos) {
+    setting.scene = name.substr(0, dot);
+    name.remove_prefix(dot + 1);
+    if (setting.scene.empty()) return std::nullopt;
+    if (!findScene(setting.scene))
+      throw Error(fmt::format("Unknown scene '{}' in {} {}; vitrine --list-scenes shows them.", setting.scene, flag,
+                              text));
+  }
+  if (name.empty() || name.find('.') != std::string_view::npos) return std::nullopt;
+  setting.key = name;
+  return setting;
+}
+
+SceneSetting parseSet(std::string_view text) {
+  const auto eq = text.find('=');
+  std::optional<SceneSetting> setting;
+  if (eq != std::string_view::npos) setting = qualifiedName("--set", text.substr(0, eq), text);
+  if (!setting) throw Error(fmt::format("--set expects KEY=VALUE or SCENE.KEY=VALUE, not '{}'.", text));
+  setting->value = text.substr(eq + 1);
+  return *setting;
+}
+
+SceneSetting parsePreset(std::string_view text) {
+  std::optional<SceneSetting> preset;
+  if (text.find('=') == std::string_view::npos) preset = qualifiedName("--preset", text, text);
+  if (!preset) throw Error(fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", text));
+  return *preset;
+}
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return text;
 }
 
 }  // namespace
@@ -25,25 +85,33 @@ const char* usage() {
   return R"(Vitrine: a gallery of real-time GPU pieces.
 
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
-          [--reduced-motion] [--seed S] [--validate]
+          [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
+          [--reset-settings] [--validate]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
-          [--set KEY=VALUE]... --out FILE.exr|FILE.png
-  vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set KEY=VALUE]... --json FILE
+          [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
+          --out FILE.exr|FILE.png
+  vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
+          [--preset [SCENE.]NAME]... --json FILE
   vitrine compare REFERENCE.exr CANDIDATE.exr
+  vitrine --list-params [SCENE]
   vitrine --list-devices | --list-scenes | --help | --version
 
 Gallery keys: 1-9 switch scene, Tab hides the UI, V toggles vsync, F11 fullscreen, F12 screenshot, Esc quits.
 Headless frame k shows time SECONDS + k/60; the last frame is written.
+--set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
+that scene. --list-params shows each scene's parameters.
 )";
 }
 
 VkExtent2D parseSize(const std::string& text) {
   const auto x = text.find('x');
   if (x == std::string::npos) throw Error(fmt::format("--size expects WIDTHxHEIGHT such as 1920x1080, not '{}'.", text));
-  const auto width = parseNumber<uint32_t>("--size", std::string_view(text).substr(0, x));
-  const auto height = parseNumber<uint32_t>("--size", std::string_view(text).substr(x + 1));
-  if (width == 0 || height == 0) throw Error(fmt::format("--size must be at least 1x1, not '{}'.", text));
-  return {width, height};
+  const auto width = wholeNumber(std::string_view(text).substr(0, x), 1, kMaxWhole);
+  const auto height = wholeNumber(std::string_view(text).substr(x + 1), 1, kMaxWhole);
+  if (!width || !height)
+    throw Error(
+        fmt::format("--size expects WIDTHxHEIGHT, each a whole number from 1 to {}, not '{}'.", kMaxWhole, text));
+  return {*width, *height};
 }
 
 Options parseOptions(int argc, const char* const* argv) {
@@ -63,6 +131,8 @@ Options parseOptions(int argc, const char* const* argv) {
   }
   auto value = [&](std::string_view flag) -> std::string {
     if (i + 1 >= argc) throw Error(fmt::format("{} needs a value; see vitrine --help.", flag));
+    if (const std::string_view next = argv[i + 1]; next.size() > 2 && next.starts_with("--"))
+      throw Error(fmt::format("{} needs a value, but got the option {}.", flag, next));
     return argv[++i];
   };
   for (; i < argc; ++i) {
@@ -72,23 +142,29 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--device") options.device = value(arg);
     else if (arg == "--validate") options.validation = true;
     else if (arg == "--reduced-motion") options.reducedMotion = true;
-    else if (arg == "--seed") options.seed = parseNumber<uint32_t>(arg, value(arg));
+    else if (arg == "--seed") options.seed = parseWhole(arg, value(arg), 0);
     else if (arg == "--size") options.size = parseSize(value(arg));
-    else if (arg == "--frames") {
-      options.frames = parseNumber<uint32_t>(arg, value(arg));
-      if (options.frames == 0) throw Error("--frames must be at least 1.");
-    } else if (arg == "--time") options.time = parseNumber<double>(arg, value(arg));
+    else if (arg == "--frames") options.frames = parseWhole(arg, value(arg), 1);
+    else if (arg == "--time") options.time = parseSeconds(arg, value(arg));
     else if (arg == "--out" || arg == "--json") options.out = value(arg);
-    else if (arg == "--warmup") options.warmup = parseNumber<uint32_t>(arg, value(arg));
+    else if (arg == "--warmup") options.warmup = parseWhole(arg, value(arg), 0);
     else if (arg == "--fullscreen") options.fullscreen = true;
     else if (arg == "--no-vsync") options.vsync = false;
-    else if (arg == "--set") {
-      const std::string kv = value(arg);
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--set expects KEY=VALUE, not '{}'.", kv));
-      options.parameters.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-    } else if (arg == "--list-devices") options.mode = Mode::ListDevices;
+    else if (arg == "--set") options.parameters.push_back(parseSet(value(arg)));
+    else if (arg == "--preset") options.presets.push_back(parsePreset(value(arg)));
+    else if (arg == "--input") options.input = value(arg);
+    else if (arg == "--events") options.events = value(arg);
+    else if (arg == "--reset-settings") options.resetSettings = true;
+    else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
+    else if (arg == "--list-params") {
+      options.mode = Mode::ListParams;
+      if (i + 1 < argc && argv[i + 1][0] != '-') {  // the optional SCENE
+        options.listParams = argv[++i];
+        if (!findScene(options.listParams))
+          throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", options.listParams));
+      }
+    }
     else if (arg == "--help" || arg == "-h") options.mode = Mode::Help;
     else if (arg == "--version") options.mode = Mode::Version;
     else throw Error(fmt::format("Unknown option '{}'; see vitrine --help.", arg));
@@ -97,7 +173,32 @@ Options parseOptions(int argc, const char* const* argv) {
     throw Error("--headless needs --out FILE.exr (or FILE.png).");
   if (options.mode == Mode::Bench && options.out.empty()) throw Error("bench needs --json FILE.");
   if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME.");
+  if (const std::string ext = lowercase(std::filesystem::path(options.out).extension().string());
+      options.mode == Mode::Headless && ext != ".exr" && ext != ".png")
+    throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
+  if (!options.input.empty() && options.mode != Mode::Headless) throw Error("--input is only for --headless runs.");
+  if (!options.events.empty() && options.mode != Mode::Headless) throw Error("--events is only for --headless runs.");
+  if (!options.events.empty()) checkWritable(options.events);
+  if (options.mode == Mode::Gallery && options.size &&
+      (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
+    throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",
+                            kMaxWindowSide, options.size->width, options.size->height));
   return options;
+}
+
+std::vector<std::pair<std::string, std::string>> parametersFor(const Options& options, std::string_view scene,
+                                                               bool unqualifiedToo) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const auto& setting : options.parameters)
+    if (setting.scene == scene || (unqualifiedToo && setting.scene.empty())) pairs.emplace_back(setting.key, setting.value);
+  return pairs;
+}
+
+std::vector<std::string> presetsFor(const Options& options, std::string_view scene, bool unqualifiedToo) {
+  std::vector<std::string> names;
+  for (const auto& preset : options.presets)
+    if (preset.scene == scene || (unqualifiedToo && preset.scene.empty())) names.push_back(preset.key);
+  return names;
 }
 
 }  // namespace vitrine

@@ -5,12 +5,21 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace vitrine {
 
-enum class Mode { Gallery, Headless, Bench, Compare, ListDevices, ListScenes, Help, Version };
+enum class Mode { Gallery, Headless, Bench, Compare, ListDevices, ListScenes, ListParams, Help, Version };
+
+// One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
+struct SceneSetting {
+  std::string scene;  // empty: not qualified
+  std::string key;    // --set: the parameter; --preset: the preset's name
+  std::string value;  // --set: its value; --preset: empty
+  bool operator==(const SceneSetting&) const = default;
+};
 
 struct Options {
   Mode mode = Mode::Gallery;
@@ -26,12 +35,22 @@ struct Options {
   uint32_t warmup = 30;              // bench
   bool fullscreen = false;
   bool vsync = true;
-  bool resetSettings = false;        // --reset-settings (gallery)
-  std::vector<std::pair<std::string, std::string>> parameters;  // --set key=value
+  std::vector<SceneSetting> parameters;  // --set [SCENE.]KEY=VALUE, in command-line order
+  std::vector<SceneSetting> presets;     // --preset [SCENE.]NAME, in command-line order
   std::vector<std::string> compare;  // compare REF CANDIDATE
+  std::string listParams;            // --list-params [SCENE]: empty for every scene
+  std::string input;                 // --input FILE (headless): scripted input
+  std::string events;                // --events FILE (headless): the scene's events, as JSON lines
+  bool resetSettings = false;        // --reset-settings (gallery)
 };
 
 Options parseOptions(int argc, const char* const* argv);
+// The --set pairs that apply to `scene`, in command-line order: those naming it, and the unqualified
+// ones when `unqualifiedToo` (the scene the run is about: --scene's).
+std::vector<std::pair<std::string, std::string>> parametersFor(const Options& options, std::string_view scene,
+                                                               bool unqualifiedToo);
+// The --preset names that apply to `scene`, likewise.
+std::vector<std::string> presetsFor(const Options& options, std::string_view scene, bool unqualifiedToo);
 VkExtent2D parseSize(const std::string& text);  // "1920x1080"
 const char* usage();
 

@@ -56,16 +56,11 @@ std::string checkValues(const SceneInfo& info, const params::KeyValues& values) 
   return params::applyValues({&info.schema(), scratch.get()}, values);
 }
 
-// --set/--preset entries for `scene`: those naming it, and the unqualified ones when it is the
-// scene the gallery starts with.
-params::KeyValues parametersFor(const Options& options, std::string_view scene, std::string_view first) {
-  params::KeyValues values;
-  for (const auto& [key, value] : options.parameters)
-    if (scene == first) values.emplace_back(key, value);
-  return values;
+// A --size the device cannot hold fails here, before a swapchain is made for it.
+const gpu::Device& checkWindowSize(const gpu::Device& device, const std::optional<VkExtent2D>& size) {
+  if (size) gpu::checkImageSize(device, *size);
+  return device;
 }
-
-std::vector<std::string> presetsFor(const Options&, std::string_view, std::string_view) { return {}; }
 
 double secondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
@@ -130,7 +125,7 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
-      programs_(device_),
+      programs_(checkWindowSize(device_, options.size)),
       settings_(params::defaultSettingsPath(), options.resetSettings),
       renderer_(device_, programs_, assets_, kFramesInFlight),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
@@ -143,6 +138,7 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
+  missingAssets_.insert(missingAssets_.end(), overlay_.fontProblems().begin(), overlay_.fontProblems().end());
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
   // --preset and --set apply over the saved values of the scenes they name, checked before a window
@@ -151,14 +147,14 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
     const std::string_view first = firstScene.name;
     params::KeyValues values = settings_.valuesFor(info.name);
     bool named = false;
-    for (const auto& preset : presetsFor(options, info.name, first)) {
+    for (const auto& preset : presetsFor(options, info.name, info.name == first)) {
       const params::Preset* found = info.schema().findPreset(preset);
       if (!found) throw Error(fmt::format("Scene {} has no preset '{}'; vitrine --list-params {} lists them.",
                                           info.name, preset, info.name));
       values.insert(values.end(), found->values.begin(), found->values.end());
       named = true;
     }
-    for (auto& kv : parametersFor(options, info.name, first)) values.push_back(std::move(kv)), named = true;
+    for (auto& kv : parametersFor(options, info.name, info.name == first)) values.push_back(std::move(kv)), named = true;
     if (!named) continue;
     if (auto why = checkValues(info, values); !why.empty())
       throw Error(fmt::format("Scene {} rejects {}", info.name, why));

@@ -1,11 +1,14 @@
 #include "gpu/check.h"
 #include "image/image_io.h"
 #include "image/image_compare.h"
+#include "host/event_log.h"
+#include "host/input_script.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "core/output_path.h"
 
 #include <cstdio>
+#include <optional>
 #include <fmt/format.h>
 
 namespace vitrine::host {
@@ -18,14 +21,22 @@ int runHeadless(const Options& options) {
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
   OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
-                         options.reducedMotion, {}, options.parameters};
+                         options.reducedMotion, presetsFor(options, options.scene, true),
+                         parametersFor(options, options.scene, true)};
+  if (!options.input.empty()) config.input = loadInputScript(options.input);
+  std::optional<JsonLinesEventLog> events;
+  if (!options.events.empty()) config.events = &events.emplace(options.events);
   ImageRgba image;
   {
     Offscreen offscreen(device, config);
     for (uint32_t k = 0; k < options.frames; ++k) offscreen.renderFrame();
     image = offscreen.readback();
+    if (!offscreen.inputFinished())
+      std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
+                   options.input.c_str(), options.time + double(options.frames - 1) / 60.0);
   }
   writeImage(out, image);
+  if (events) events->close();
   std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
               image.height, options.scene.c_str(), options.frames, options.time, options.seed,
               device.properties().deviceName);
@@ -40,7 +51,12 @@ int runCompare(const Options& options) {
   const ImageRgba reference = readImage(options.compare[0]);
   const ImageRgba candidate = readImage(options.compare[1]);
   const CompareResult result = compareImages(reference, candidate);
-  std::printf("%s\n", result.summary().c_str());
+  if (!result.sizeMatches) {  // readImage read both, so both are EXRs
+    std::fprintf(stderr, "%s (reference %s and candidate %s, both EXR)\n", result.summary().c_str(),
+                 options.compare[0].c_str(), options.compare[1].c_str());
+    return 2;
+  }
+  std::fprintf(result.passed ? stdout : stderr, "%s\n", result.summary().c_str());  // a failure is a diagnostic
   return result.passed ? 0 : 2;
 }
 

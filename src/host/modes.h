@@ -8,5 +8,6 @@ int runGallery(const Options& options);   // window, swapchain, overlay (host/ga
 int runHeadless(const Options& options);  // --headless: N frames into an EXR/PNG
 int runBench(const Options& options);     // bench: GPU timestamps per pass into JSON
 int runCompare(const Options& options);   // compare: the golden metric on two files
+int runListParams(const Options& options);  // --list-params: each scene's parameters (host/list_params.cpp)
 
 }  // namespace vitrine::host

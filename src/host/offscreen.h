@@ -41,6 +41,7 @@ class Offscreen {
   // False when an input script still holds events past the last rendered frame.
   bool inputFinished() const { return !player_ || player_->finished(); }
   const SceneInfo& scene() const { return renderer_.info(); }
+  params::Bound parameters() { return renderer_.parameters(); }
 
  private:
   const gpu::Device& device_;

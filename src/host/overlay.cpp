@@ -1,11 +1,10 @@
 #include "host/overlay.h"
 
 #include <fmt/format.h>
-#include <ft2build.h>
 
 #include "gpu/check.h"
+#include "host/font_check.h"
 #include "host/swapchain.h"
-#include FT_FREETYPE_H
 #include <imgui.h>
 #include <imgui_freetype.h>
 #include <imgui_impl_glfw.h>
@@ -68,20 +67,15 @@ gpu::Unique<VkRenderPass> createRenderPass(const gpu::Device& device, VkFormat f
   return gpu::Unique<VkRenderPass>(device, renderPass);
 }
 
-// Dear ImGui asserts when its font builder fails, so a file FreeType cannot open (truncated, or a
-// FreeType built without woff2 support) is found out here and left out.
-bool freetypeReads(const std::filesystem::path& path) {
-  FT_Library library;
-  if (FT_Init_FreeType(&library) != 0) return false;
-  FT_Face face;
-  const bool ok = FT_New_Face(library, path.c_str(), 0, &face) == 0;
-  if (ok) FT_Done_Face(face);
-  FT_Done_FreeType(library);
-  return ok;
-}
-
-ImFont* addFont(const std::optional<std::filesystem::path>& path, float pixels) {
-  if (!path || !freetypeReads(*path)) return nullptr;
+// Dear ImGui asserts when its font builder fails, so a file FreeType cannot use (truncated, or a
+// FreeType built without woff2 support) is found out here, left out and named in `problems`.
+ImFont* addFont(const std::optional<std::filesystem::path>& path, float pixels, std::vector<std::string>& problems) {
+  if (!path) return nullptr;
+  if (const std::string problem = fontProblem(*path); !problem.empty()) {
+    problems.push_back(fmt::format("font {} is unusable (FreeType: {}): using Dear ImGui's built-in font",
+                                   path->string(), problem));
+    return nullptr;
+  }
   return ImGui::GetIO().Fonts->AddFontFromFileTTF(path->c_str(), pixels);
 }
 
@@ -93,8 +87,8 @@ Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini dropped into the user's working folder
   io.Fonts->FontBuilderIO = ImGuiFreeType::GetBuilderForFreeType();  // reads the woff2 files
-  if (!addFont(fonts.body, 17.0f)) io.Fonts->AddFontDefault();       // the first font is the default
-  titles = addFont(fonts.titles, 21.0f);
+  if (!addFont(fonts.body, 17.0f, fontProblems)) io.Fonts->AddFontDefault();  // the first font is the default
+  titles = addFont(fonts.titles, 21.0f, fontProblems);
   ImGui::StyleColorsDark();
   // Installs its callbacks on top of the window's own, forwarding every event to them.
   if (!ImGui_ImplGlfw_InitForVulkan(window, true)) {

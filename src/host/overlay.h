@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 struct GLFWwindow;
@@ -33,12 +34,15 @@ class Overlay {
   bool wantsMouse() const;  // the pointer is over, or dragging, a widget
   bool wantsText() const;   // a text field has the keyboard
   ImFont* titleFont() const { return context_.titles; }  // null: use the current font
+  // One line per font file that was given but FreeType could not use, naming it and the reason.
+  const std::vector<std::string>& fontProblems() const { return context_.fontProblems; }
 
  private:
   struct Context {  // the ImGui context, its fonts and its GLFW backend
     Context(GLFWwindow* window, const Fonts& fonts);
     ~Context();
     ImFont* titles = nullptr;
+    std::vector<std::string> fontProblems;
   };
   struct Renderer {  // the ImGui Vulkan backend, shut down before the render pass and pool it uses
     Renderer(const gpu::Device& device, VkDescriptorPool pool, VkRenderPass renderPass, uint32_t framesInFlight);

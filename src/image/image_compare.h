@@ -2,7 +2,7 @@
 // The golden-frame metric (docs/ARCHITECTURE.md, "Golden frames"). Gates on the worst pixels, not
 // the mean: a pixel fails when its largest channel difference exceeds both an absolute and a
 // relative tolerance; the image fails when too many pixels fail, when any pixel differs by more than
-// the hard limit, or when the candidate holds a NaN or an infinity.
+// the hard limit, or when either image holds a NaN or an infinity (a reference with one is broken).
 #include "image/image.h"
 
 #include <string>
@@ -18,7 +18,9 @@ struct CompareThresholds {
 
 struct CompareResult {
   bool sizeMatches = false;
-  size_t nonFinite = 0;
+  uint32_t referenceWidth = 0, referenceHeight = 0, candidateWidth = 0, candidateHeight = 0;
+  size_t nonFinite = 0;           // pixels of the candidate holding a NaN or an infinity
+  size_t nonFiniteReference = 0;  // the same in the reference
   size_t failing = 0;
   double failingFraction = 0.0;
   float maxDifference = 0.0f;

@@ -10,7 +10,8 @@ namespace vitrine {
 // Writes linear half-float EXR, or 8-bit sRGB PNG when the name ends in .png, through a temporary
 // file renamed into place, so a reader never sees half a file. Throws vitrine::Error.
 void writeImage(const std::filesystem::path& path, const ImageRgba& image);
-// Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error.
+// Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error, naming the path, for
+// anything but a regular file that starts like an EXR (a device, a folder, a PNG named .exr).
 ImageRgba readImage(const std::filesystem::path& path);
 bool canWritePng();
 

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/atomic_file.h"
+#include "image/image_file.h"
 #include "image/image_io.h"
 
 namespace vitrine {
@@ -34,6 +35,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {
+  checkExrFile(path);
   OIIO::ImageBuf buffer(path.string());
   if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     throw Error(fmt::format("Cannot read {}: {}", path.string(), buffer.geterror()));

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/atomic_file.h"
+#include "image/image_file.h"
 #include "image/image_io.h"
 
 namespace vitrine {
@@ -11,7 +12,7 @@ namespace vitrine {
 bool canWritePng() { return false; }
 
 void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
-  if (path.extension() != ".exr")
+  if (path.extension() != ".exr" && path.extension() != ".EXR")
     throw Error(
         fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
                     "(configure with -DVITRINE_WITH_OIIO=ON for PNG).",
@@ -32,6 +33,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {
+  checkExrFile(path);
   try {
     Imf::RgbaInputFile file(path.c_str());
     const auto window = file.dataWindow();

@@ -89,8 +89,10 @@ std::string shortText(const Json& value) {
   return text;
 }
 
+}  // namespace
+
 // The typed JSON for a canonical text; text that does not read as its kind stays a string (nothing lost).
-Json typed(const Param* param, const std::string& text) {
+Json typedValue(const Param* param, const std::string& text) {
   if (!param) return text;
   const char* first = text.data();
   const char* last = text.data() + text.size();
@@ -106,6 +108,8 @@ Json typed(const Param* param, const std::string& text) {
   }
   return text;
 }
+
+namespace {
 
 void loadScene(const std::string& where, const std::string& name, const Json& values, const Schema& schema,
                LoadResult& result) {
@@ -209,6 +213,12 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
   return result;
 }
 
+Json valuesJson(const Bound& bound, bool includeTransient) {
+  Json out = Json::object();
+  for (const auto& [key, text] : snapshot(bound, includeTransient)) out[key] = typedValue(bound.schema->find(key), text);
+  return out;
+}
+
 void saveSettings(const fs::path& path, const Settings& settings, const SchemaLookup& schemaFor) {
   // Version and scene first, for a reader; then what was not understood, in its place; then our values,
   // which win where both name the same key.
@@ -227,7 +237,7 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
     for (const auto& [key, text] : values) {
       const Param* param = schema ? schema->find(key) : nullptr;
       if (param && param->has(kTransient)) continue;
-      scene[key] = typed(param, text);
+      scene[key] = typedValue(param, text);
     }
   }
 

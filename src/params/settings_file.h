@@ -61,6 +61,12 @@ LoadResult loadSettings(const std::filesystem::path& path, const SchemaLookup& s
 // written as a string).
 void saveSettings(const std::filesystem::path& path, const Settings& settings, const SchemaLookup& schemaFor);
 
+// A value as the settings file and the benchmark's JSON write it: Float/Int as numbers, Bool as
+// true/false, the rest (and a key no schema knows: param null) as its text.
+nlohmann::ordered_json typedValue(const Param* param, const std::string& text);
+// Every parameter of a live scene as one JSON object, typed as above.
+nlohmann::ordered_json valuesJson(const Bound& bound, bool includeTransient = true);
+
 // When to save: after the values stop changing for `delay`, so a dragged slider writes once, after it
 // settles. Pure logic; the caller passes the time and does the writing.
 class SettingsSaver {

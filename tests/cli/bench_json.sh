@@ -3,7 +3,7 @@
 set -eu
 vitrine=$1; out=$2/bench.json
 mkdir -p "$2"; rm -f "$out"
-"$vitrine" bench --scene kifs --size 64x36 --frames 5 --warmup 1 --validate --json "$out"
+"$vitrine" bench --scene kifs --size 64x36 --frames 5 --warmup 1 --set step=4 --validate --json "$out"
 python3 - "$out" <<'PY'
 import json, sys
 data = json.load(open(sys.argv[1]))
@@ -13,5 +13,8 @@ assert scene["gpu"]["median_ms"] > 0 and scene["gpu"]["p95_ms"] >= scene["gpu"][
 names = [p["name"] for p in scene["passes"]]
 assert "kifs march" in names and "present" in names, names
 assert data["size"] == [64, 36] and data["frames"] == 5, data
+# Every parameter of the scene, typed, from its schema: the --set value and the defaults.
+assert scene["parameters"]["step"] == 4 and scene["parameters"]["tier"] == "high", scene["parameters"]
+assert scene["parameters"]["target_ms"] == 8, scene["parameters"]
 print("bench json ok:", names)
 PY

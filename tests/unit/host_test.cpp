@@ -75,7 +75,7 @@ TEST(Options, HeadlessCommandLine) {
   EXPECT_DOUBLE_EQ(o.time, 2.5);
   EXPECT_EQ(o.seed, 9u);
   ASSERT_EQ(o.parameters.size(), 1u);
-  EXPECT_EQ(o.parameters[0].second, "3");
+  EXPECT_EQ(o.parameters[0].value, "3");
 }
 
 TEST(Options, BadInputIsAnError) {

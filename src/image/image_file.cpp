@@ -1,0 +1,78 @@
+#include "image/image_file.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <string>
+#include <system_error>
+
+#include "core/error.h"
+
+namespace vitrine {
+namespace {
+
+bool startsWith(std::span<const unsigned char> head, std::string_view magic, size_t at = 0) {
+  return head.size() >= at + magic.size() &&
+         std::equal(magic.begin(), magic.end(), head.begin() + at,
+                    [](char m, unsigned char h) { return static_cast<unsigned char>(m) == h; });
+}
+
+std::string_view fileKind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a fifo";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+std::string osReason(int error) { return std::system_category().message(error); }
+
+}  // namespace
+
+std::string_view sniffImageFormat(std::span<const unsigned char> head) {
+  using namespace std::string_view_literals;
+  if (startsWith(head, "\x76\x2f\x31\x01"sv)) return "EXR";
+  if (startsWith(head, "\x89PNG\r\n\x1a\n"sv)) return "PNG";
+  if (startsWith(head, "\xff\xd8\xff"sv)) return "JPEG";
+  if (startsWith(head, "II*\0"sv) || startsWith(head, "MM\0*"sv)) return "TIFF";
+  if (startsWith(head, "#?RADIANCE"sv) || startsWith(head, "#?RGBE"sv)) return "Radiance HDR";
+  if (startsWith(head, "GIF87a"sv) || startsWith(head, "GIF89a"sv)) return "GIF";
+  if (startsWith(head, "RIFF"sv) && startsWith(head, "WEBP"sv, 8)) return "WebP";
+  if (startsWith(head, "BM"sv) && head.size() >= 14) return "BMP";
+  return {};
+}
+
+void checkExrFile(const std::filesystem::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    const int error = errno;
+    throw Error(fmt::format("Cannot read {}: {}.", path.string(), osReason(error)));
+  }
+  if (!S_ISREG(info.st_mode))
+    throw Error(fmt::format("Cannot read {}: it is {}, not a regular file.", path.string(), fileKind(info.st_mode)));
+  // O_NONBLOCK: should the path have become a fifo since the stat, the open still returns.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    const int error = errno;
+    throw Error(fmt::format("Cannot read {}: {}.", path.string(), osReason(error)));
+  }
+  std::array<unsigned char, 16> head{};
+  const ssize_t got = ::read(fd, head.data(), head.size());
+  const int error = errno;
+  ::close(fd);
+  if (got < 0) throw Error(fmt::format("Cannot read {}: {}.", path.string(), osReason(error)));
+  if (got == 0) throw Error(fmt::format("Cannot read {}: it is empty, not an EXR.", path.string()));
+  const std::string_view format = sniffImageFormat(std::span(head.data(), size_t(got)));
+  if (format == "EXR") return;
+  if (!format.empty()) throw Error(fmt::format("Cannot read {}: it is a {} file, not an EXR.", path.string(), format));
+  throw Error(fmt::format("Cannot read {}: it is not an EXR (its first bytes are not the EXR magic number).",
+                          path.string()));
+}
+
+}  // namespace vitrine

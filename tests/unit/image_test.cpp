@@ -1,0 +1,148 @@
+// The golden metric's handling of bad values and sizes, and the image reader's handling of files that
+// are not EXRs. No GPU.
+#include "core/error.h"
+#include "image/image_compare.h"
+#include "image/image_file.h"
+#include "image/image_io.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <string>
+
+namespace vitrine {
+namespace {
+
+ImageRgba flat(uint32_t w, uint32_t h, float v) { return {w, h, std::vector<float>(size_t(w) * h * 4, v)}; }
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CompareNonFinite, NaNInTheReferenceFails) {
+  auto reference = flat(8, 8, 0.5f);
+  reference.at(3, 4)[0] = kNaN;
+  const auto r = compareImages(reference, flat(8, 8, 0.5f));
+  EXPECT_FALSE(r.passed) << r.summary();
+  EXPECT_EQ(r.nonFiniteReference, 1u);
+  EXPECT_EQ(r.nonFinite, 0u);
+  EXPECT_EQ(r.failing, 1u);
+  EXPECT_TRUE(contains(r.summary(), "FAIL")) << r.summary();
+  EXPECT_TRUE(contains(r.summary(), "1 non-finite in the reference")) << r.summary();
+}
+
+TEST(CompareNonFinite, InfinityInTheReferenceFailsAndIsCountedAsAFailingPixel) {
+  auto reference = flat(8, 8, 0.5f);
+  reference.at(0, 0)[2] = kInf;
+  reference.at(1, 0)[1] = -kInf;
+  const auto r = compareImages(reference, flat(8, 8, 0.5f));
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.nonFiniteReference, 2u);
+  EXPECT_EQ(r.failing, 2u);
+  EXPECT_TRUE(std::isfinite(r.maxDifference)) << r.summary();  // not "max difference inf"
+  EXPECT_TRUE(contains(r.summary(), "2 non-finite in the reference")) << r.summary();
+}
+
+TEST(CompareNonFinite, NonFiniteOnBothSidesIsCountedOnEach) {
+  auto reference = flat(4, 4, 0.5f);
+  auto candidate = reference;
+  reference.at(0, 0)[0] = kNaN;
+  candidate.at(0, 0)[0] = kNaN;  // the same NaN on both sides is still not a picture
+  candidate.at(1, 1)[3] = kInf;
+  const auto r = compareImages(reference, candidate);
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.nonFiniteReference, 1u);
+  EXPECT_EQ(r.nonFinite, 2u);
+  EXPECT_TRUE(contains(r.summary(), "1 non-finite in the reference, 2 in the candidate")) << r.summary();
+}
+
+TEST(CompareSize, MismatchNamesBothSizes) {
+  const auto r = compareImages(flat(192, 108, 0), flat(64, 36, 0));
+  EXPECT_FALSE(r.passed);
+  EXPECT_FALSE(r.sizeMatches);
+  EXPECT_EQ(r.summary(), "size mismatch: reference 192x108, candidate 64x36");
+}
+
+class ImageFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() /
+              (std::string("vitrine-image-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
+               std::to_string(::getpid()));
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+  std::filesystem::path folder_;
+};
+
+// A reference EXR holding NaN, written and read back as `vitrine compare` and the golden tests do.
+TEST_F(ImageFiles, ANaNReferenceWrittenToExrFailsTheComparison) {
+  auto reference = flat(8, 8, 0.25f);
+  reference.at(2, 2)[1] = kNaN;
+  reference.at(5, 5)[0] = kInf;
+  const auto path = folder_ / "nan_reference.exr";
+  writeImage(path, reference);
+  const ImageRgba read = readImage(path);
+  ASSERT_EQ(read.width, 8u);
+  EXPECT_TRUE(std::isnan(read.at(2, 2)[1]));
+  EXPECT_TRUE(std::isinf(read.at(5, 5)[0]));
+  const auto r = compareImages(read, flat(8, 8, 0.25f));
+  EXPECT_FALSE(r.passed) << r.summary();
+  EXPECT_TRUE(contains(r.summary(), "2 non-finite in the reference")) << r.summary();
+}
+
+std::string readError(const std::filesystem::path& path) {
+  try {
+    readImage(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(ImageFiles, ReadingADeviceIsRefusedAtOnce) {
+  EXPECT_EQ(readError("/dev/zero"), "Cannot read /dev/zero: it is a character device, not a regular file.");
+}
+
+TEST_F(ImageFiles, ReadingAFolderOrAMissingFileSaysSo) {
+  EXPECT_TRUE(contains(readError(folder_), "it is a folder")) << readError(folder_);
+  EXPECT_TRUE(contains(readError(folder_ / "absent.exr"), "No such file or directory"));
+}
+
+TEST_F(ImageFiles, APngNamedExrIsCalledAPng) {
+  const auto path = folder_ / "picture.exr";
+  std::ofstream(path, std::ios::binary) << "\x89PNG\r\n\x1a\n\0\0\0\rIHDR";
+  EXPECT_EQ(readError(path), "Cannot read " + path.string() + ": it is a PNG file, not an EXR.");
+}
+
+TEST_F(ImageFiles, EmptyAndUnknownFilesAreNotExrs) {
+  const auto empty = folder_ / "empty.exr";
+  std::ofstream(empty).close();
+  EXPECT_TRUE(contains(readError(empty), "it is empty, not an EXR")) << readError(empty);
+  const auto text = folder_ / "notes.exr";
+  std::ofstream(text) << "just some text";
+  EXPECT_TRUE(contains(readError(text), "it is not an EXR")) << readError(text);
+}
+
+TEST(ImageFormat, SniffsTheCommonFormats) {
+  auto sniff = [](std::string_view bytes) {
+    return sniffImageFormat(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+  };
+  using namespace std::string_view_literals;
+  EXPECT_EQ(sniff("\x76\x2f\x31\x01\x02\0\0\0"sv), "EXR");
+  EXPECT_EQ(sniff("\x89PNG\r\n\x1a\n"sv), "PNG");
+  EXPECT_EQ(sniff("\xff\xd8\xff\xe0"sv), "JPEG");
+  EXPECT_EQ(sniff("II*\0\x08\0\0\0"sv), "TIFF");
+  EXPECT_EQ(sniff("#?RADIANCE\n"sv), "Radiance HDR");
+  EXPECT_EQ(sniff("RIFF\0\0\0\0WEBPVP8 "sv), "WebP");
+  EXPECT_EQ(sniff("\x76\x2f"sv), "");  // too short to tell
+  EXPECT_EQ(sniff("hello"sv), "");
+}
+
+}  // namespace
+}  // namespace vitrine

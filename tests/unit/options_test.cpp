@@ -1,0 +1,201 @@
+// Every rule of the command line: what is accepted, and the sentence for what is not.
+#include "app/options.h"
+#include "core/error.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vitrine {
+
+void PrintTo(const SceneSetting& s, std::ostream* os) {
+  *os << "{" << s.scene << "|" << s.key << "|" << s.value << "}";
+}
+
+namespace {
+
+Options parse(std::vector<const char*> args) {
+  args.insert(args.begin(), "vitrine");
+  return parseOptions(int(args.size()), args.data());
+}
+
+// The error message of parsing `args`, or "accepted".
+std::string refusal(std::vector<const char*> args) {
+  try {
+    parse(std::move(args));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// ------------------------------------------------------------------------------------------- numbers
+
+TEST(OptionsNumbers, TimeMustBeFinite) {
+  for (const char* bad : {"nan", "NaN", "inf", "-inf", "infinity", "1e400"})
+    EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--time", bad, "--out", "x.exr"}),
+              fmt::format("--time expects a finite number of seconds, not '{}'.", bad));
+  EXPECT_EQ(refusal({"--time", "soon"}), "--time expects a finite number of seconds, not 'soon'.");
+  EXPECT_DOUBLE_EQ(parse({"--time", "-1.5"}).time, -1.5);
+  EXPECT_DOUBLE_EQ(parse({"--time", "1e3"}).time, 1000.0);
+}
+
+TEST(OptionsNumbers, WholeNumbersNameTheirRange) {
+  EXPECT_EQ(refusal({"--frames", "4294967296"}),
+            "--frames expects a whole number from 1 to 4294967295, not '4294967296'.");
+  EXPECT_EQ(refusal({"--frames", "0"}), "--frames expects a whole number from 1 to 4294967295, not '0'.");
+  EXPECT_EQ(refusal({"--frames", "-1"}), "--frames expects a whole number from 1 to 4294967295, not '-1'.");
+  EXPECT_EQ(refusal({"--frames", "2.5"}), "--frames expects a whole number from 1 to 4294967295, not '2.5'.");
+  EXPECT_EQ(refusal({"--seed", "-1"}), "--seed expects a whole number from 0 to 4294967295, not '-1'.");
+  EXPECT_EQ(refusal({"--seed", "x"}), "--seed expects a whole number from 0 to 4294967295, not 'x'.");
+  EXPECT_EQ(refusal({"bench", "--warmup", "-3", "--json", "b.json"}),
+            "--warmup expects a whole number from 0 to 4294967295, not '-3'.");
+  EXPECT_EQ(parse({"--seed", "4294967295"}).seed, 4294967295u);
+  EXPECT_EQ(parse({"--frames", "4294967295"}).frames, 4294967295u);
+  EXPECT_EQ(parse({"bench", "--warmup", "0", "--json", "b.json"}).warmup, 0u);
+}
+
+TEST(OptionsNumbers, SizesAreWholeAndPositive) {
+  EXPECT_NE(refusal({"--size", "12by4"}).find("--size expects WIDTHxHEIGHT such as 1920x1080, not '12by4'"),
+            std::string::npos);
+  EXPECT_NE(refusal({"--size", "0x10"}).find("from 1 to"), std::string::npos) << refusal({"--size", "0x10"});
+  EXPECT_NE(refusal({"--size", "-5x10"}).find("from 1 to"), std::string::npos);
+  EXPECT_NE(refusal({"--size", "5x99999999999"}).find("from 1 to"), std::string::npos);
+  const auto o = parse({"--headless", "--scene", "kifs", "--size", "100000x10", "--out", "x.exr"});
+  EXPECT_EQ(o.size->width, 100000u);  // headless: the device's limit decides, when it is known
+}
+
+TEST(OptionsNumbers, GalleryWindowSizeIsCheckedBeforeAnyWindowOpens) {
+  EXPECT_EQ(refusal({"--size", "100000x10"}),
+            "--size expects each side of the gallery window from 1 to 16384, not '100000x10'.");
+  EXPECT_EQ(refusal({"--size", "10x16385"}),
+            "--size expects each side of the gallery window from 1 to 16384, not '10x16385'.");
+  EXPECT_EQ(parse({"--size", "16384x16384"}).size->width, 16384u);
+}
+
+// ------------------------------------------------------------------------------------------- values
+
+TEST(OptionsValues, AnOptionIsNotTakenAsTheValueOfTheOneBefore) {
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "--size", "32x18"}),
+            "--out needs a value, but got the option --size.");
+  EXPECT_EQ(refusal({"--scene", "--headless"}), "--scene needs a value, but got the option --headless.");
+  EXPECT_EQ(refusal({"--seed"}), "--seed needs a value; see vitrine --help.");
+  EXPECT_DOUBLE_EQ(parse({"--time", "-2"}).time, -2.0);  // a negative number is a value
+}
+
+TEST(OptionsValues, HeadlessWritesExrOrPng) {
+  for (const char* bad : {"x.jpg", "x.txt", "x", "x.exr.bak"})
+    EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", bad}),
+              fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", bad));
+  for (const char* good : {"x.exr", "x.png", "dir/x.EXR", "x.PNG"})
+    EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", good}), "accepted") << good;
+  EXPECT_EQ(refusal({"bench", "--json", "timings.txt"}), "accepted");  // any name for the JSON
+}
+
+// ----------------------------------------------------------------------------------- --set, --preset
+
+TEST(OptionsSettings, SetTakesKeyValueOrSceneKeyValue) {
+  const auto o = parse({"--set", "step=3", "--set", "noodles.grid=32", "--set", "noodles.noise_scale=0.5",
+                        "--set", "tier=", "--set", "kifs.drag_x=a=b"});
+  const std::vector<SceneSetting> expected{{"", "step", "3"},
+                                           {"noodles", "grid", "32"},
+                                           {"noodles", "noise_scale", "0.5"},  // a '.' after '=' is the value's
+                                           {"", "tier", ""},
+                                           {"kifs", "drag_x", "a=b"}};
+  EXPECT_EQ(o.parameters, expected);
+}
+
+TEST(OptionsSettings, MalformedSetsAreRefused) {
+  for (const char* bad : {"novalue", "=3", ".grid=3", "noodles.=3", "noodles.a.b=3", "noodles."})
+    EXPECT_EQ(refusal({"--set", bad}), fmt::format("--set expects KEY=VALUE or SCENE.KEY=VALUE, not '{}'.", bad));
+  EXPECT_EQ(refusal({"--set", "nope.grid=32"}),
+            "Unknown scene 'nope' in --set nope.grid=32; vitrine --list-scenes shows them.");
+}
+
+TEST(OptionsSettings, ParametersForKeepsTheScenesOwnAndTheUnqualifiedWhenAskedInOrder) {
+  const auto o = parse({"bench", "--json", "b.json", "--set", "noodles.grid=32", "--set", "speed=2", "--set",
+                        "kifs.step=4", "--set", "noodles.grid=16"});
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(parametersFor(o, "noodles", true), (Pairs{{"grid", "32"}, {"speed", "2"}, {"grid", "16"}}));
+  EXPECT_EQ(parametersFor(o, "kifs", true), (Pairs{{"speed", "2"}, {"step", "4"}}));
+  EXPECT_EQ(parametersFor(o, "kifs", false), (Pairs{{"step", "4"}})) << "not --scene's: only its own";
+  EXPECT_EQ(parametersFor(Options{}, "kifs", true), Pairs{});
+}
+
+TEST(OptionsSettings, PresetsAreRepeatableAndMayNameTheirScene) {
+  const auto o = parse({"--preset", "calm", "--preset", "noodles.storm", "--set", "step=2", "--preset", "calm"});
+  const std::vector<SceneSetting> expected{{"", "calm", ""}, {"noodles", "storm", ""}, {"", "calm", ""}};
+  EXPECT_EQ(o.presets, expected);
+  EXPECT_EQ(o.parameters.size(), 1u);
+  for (const char* bad : {"calm=1", ".calm", "noodles.", "noodles.a.b", ""})
+    EXPECT_EQ(refusal({"--preset", bad}), fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", bad));
+  EXPECT_EQ(refusal({"--preset", "nope.calm"}),
+            "Unknown scene 'nope' in --preset nope.calm; vitrine --list-scenes shows them.");
+}
+
+// ------------------------------------------------------------------------------------- --list-params
+
+TEST(OptionsListParams, ListsEveryOrOneScene) {
+  auto o = parse({"--list-params"});
+  EXPECT_EQ(o.mode, Mode::ListParams);
+  EXPECT_EQ(o.listParams, "");
+  o = parse({"--list-params", "noodles"});
+  EXPECT_EQ(o.mode, Mode::ListParams);
+  EXPECT_EQ(o.listParams, "noodles");
+  o = parse({"--list-params", "--validate"});  // an option after it is not a scene
+  EXPECT_EQ(o.listParams, "");
+  EXPECT_TRUE(o.validation);
+  EXPECT_EQ(refusal({"--list-params", "nope"}), "Unknown scene 'nope'; vitrine --list-scenes shows them.");
+}
+
+// --------------------------------------------------------------- --input, --events, --reset-settings
+
+class OptionsFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() / ("vitrine-options-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+  std::filesystem::path folder_;
+};
+
+TEST_F(OptionsFiles, InputAndEventsBelongToHeadlessRuns) {
+  const std::string events = (folder_ / "events.jsonl").string();
+  const auto o = parse({"--headless", "--scene", "kifs", "--input", "moves.txt", "--events", events.c_str(),
+                        "--out", "x.exr"});
+  EXPECT_EQ(o.input, "moves.txt");
+  EXPECT_EQ(o.events, events);
+  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless runs.");
+  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless runs.");
+  EXPECT_EQ(refusal({"bench", "--json", "b.json", "--events", events.c_str()}),
+            "--events is only for --headless runs.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--input"}),
+            "--input needs a value; see vitrine --help.");
+}
+
+TEST_F(OptionsFiles, EventsMustBeWritable) {
+  const std::string missing = (folder_ / "no-such-folder" / "events.jsonl").string();
+  EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--events", missing.c_str(), "--out", "x.exr"})
+                .find("Cannot write " + missing + ": the folder"),
+            std::string::npos);
+  EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--events", "/dev/full", "--out", "x.exr"})
+                .find("not a regular file"),
+            std::string::npos);
+  const std::string anyName = (folder_ / "events.log").string();  // any name will do
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--events", anyName.c_str(), "--out", "x.exr"}), "accepted");
+}
+
+TEST(OptionsGallery, ResetSettings) {
+  EXPECT_FALSE(parse({}).resetSettings);
+  EXPECT_TRUE(parse({"--reset-settings"}).resetSettings);
+}
+
+}  // namespace
+}  // namespace vitrine
