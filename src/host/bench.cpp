@@ -55,8 +55,8 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   for (const auto& name : order) {
     std::printf("  %-24s median %8.3f ms  p95 %8.3f ms\n", name.c_str(), percentile(passes[name], 50),
                 percentile(passes[name], 95));
-    Json pass = summary(passes[name]);
-    pass.insert(pass.begin(), {"name", name});
+    Json pass{{"name", name}};
+    pass.update(summary(passes[name]));
     result["passes"].push_back(std::move(pass));
   }
   return result;

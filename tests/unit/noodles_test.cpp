@@ -434,6 +434,29 @@ TEST(NoodlesSettings, EveryNamedParameterParsesThroughTheSchema) {
     EXPECT_NE(schema().find(key), nullptr) << key;
 }
 
+// The memory check spans grid and segments: it judges the final pair once, so the order of --set
+// (or of a preset's values) never decides whether a change is accepted.
+TEST(NoodlesSettings, TheMemoryCheckJudgesFinalValuesWhateverTheOrder) {
+  const DeviceBudget budget = lavapipeLikeBudget();
+  NoodleSettings s;
+  const params::Bound bound{&schema(), &s};
+  const params::Check fits = [&] {
+    try {
+      planStrands(s.grid, uint32_t(s.segments), budget);
+      return std::string();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+  };
+  EXPECT_NE(params::applyValues(bound, {{"grid", "4096x4096"}}, fits), "") << "16.7M strands of 64 segments";
+  EXPECT_EQ(s.grid, glm::uvec3(16)) << "a refused change leaves every value as it was";
+  EXPECT_EQ(params::applyValues(bound, {{"grid", "4096x4096"}, {"segments", "4"}}, fits), "");
+  s = {};
+  EXPECT_EQ(params::applyValues(bound, {{"segments", "4"}, {"grid", "4096x4096"}}, fits), "");
+  EXPECT_EQ(s.grid, glm::uvec3(4096, 4096, 1));
+  EXPECT_EQ(s.segments, 4);
+}
+
 TEST(NoodlesSettings, OrbitPinsAndUnpins) {
   OrbitPin orbit;
   std::string error;
