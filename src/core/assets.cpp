@@ -1,7 +1,9 @@
 #include "core/assets.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 namespace vitrine {
 
@@ -29,6 +31,23 @@ std::vector<std::filesystem::path> Assets::panoramas() const {
   return found;
 }
 
+std::optional<std::filesystem::path> Assets::file(const std::filesystem::path& path, std::string_view fallback) const {
+  std::error_code ec;
+  const char* why = nullptr;
+  if (!std::filesystem::exists(path, ec)) why = "not found";
+  else if (!std::filesystem::is_regular_file(path, ec)) why = "not a regular file";
+  else if (std::ifstream probe(path, std::ios::binary); !probe) why = "cannot be read";
+  if (!why) return path;
+  reportMissing(path.string() + ": " + why + "; using " + std::string(fallback));
+  return std::nullopt;
+}
+
+void Assets::reportMissing(std::string line) const {
+  if (std::find(reported_.begin(), reported_.end(), line) != reported_.end()) return;
+  std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
+  reported_.push_back(std::move(line));
+}
+
 std::vector<std::string> Assets::missing() const {
   std::vector<std::string> lines;
   for (const char* family : {"Fraunces", "CormorantSC"})
@@ -38,6 +57,7 @@ std::vector<std::string> Assets::missing() const {
   if (panoramas().empty())
     lines.push_back("HDR panoramas (" + (root_ / "hdri").string() +
                     "): scenes use a procedural sky; run scripts/setup to fetch blender-data's");
+  lines.insert(lines.end(), reported_.begin(), reported_.end());
   return lines;
 }
 

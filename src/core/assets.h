@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vitrine {
@@ -17,11 +18,18 @@ class Assets {
   const std::filesystem::path& root() const { return root_; }
   std::optional<std::filesystem::path> font(const std::string& family) const;  // "Fraunces", "CormorantSC"
   std::vector<std::filesystem::path> panoramas() const;                       // HDR environment maps
-  // One line per expected asset that is absent, saying what replaces it.
+  // A file a user named (a panorama or font given on the command line or in a parameter), relative
+  // paths from the working directory: the path when it is a readable regular file; otherwise none, and
+  // "PATH: WHY; using FALLBACK" joins missing() and is printed once, so the gallery shows it too.
+  std::optional<std::filesystem::path> file(const std::filesystem::path& path, std::string_view fallback) const;
+  // Scenes report an asset they could not use the same way (a font FreeType could not read, say).
+  void reportMissing(std::string line) const;
+  // One line per expected asset that is absent, saying what replaces it, then what was reported.
   std::vector<std::string> missing() const;
 
  private:
   std::filesystem::path root_;
+  mutable std::vector<std::string> reported_;  // a cache of what was found wanting, not state of the assets
 };
 
 }  // namespace vitrine

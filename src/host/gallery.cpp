@@ -138,8 +138,8 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
-  missingAssets_.insert(missingAssets_.end(), overlay_.fontProblems().begin(), overlay_.fontProblems().end());
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
+  for (const auto& line : overlay_.fontProblems()) assets_.reportMissing(line);  // printed as reported
   for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
   // --preset and --set apply over the saved values of the scenes they name, checked before a window
   // shows anything; like edits in the panel, they are remembered.
@@ -214,6 +214,7 @@ void Gallery::handleKeys() {
 void Gallery::switchScene(const SceneInfo& info) {
   if (hasScene_) rememberValues();  // switching back restores them
   renderer_.setScene(info);  // the old scene is retired behind the frames still using it
+  missingAssets_ = assets_.missing();  // with what the scene could not find
   hasScene_ = true;
   panel_.forget();
   panelError_.clear();

@@ -26,5 +26,24 @@ TEST(Assets, ReportsEachMissingAssetAndFindsPresentOnes) {
   std::filesystem::remove_all(root);
 }
 
+// A file a user names either is the file, or becomes one "missing asset" line saying what stands in.
+TEST(Assets, NamedFilesAreFoundOrReportedOnceWithTheirFallback) {
+  const auto root = std::filesystem::temp_directory_path() / "vitrine-assets-named";
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root / "folder");
+  std::ofstream(root / "sky.exr") << "x";
+  Assets assets(root);
+  const size_t expected = assets.missing().size();
+  EXPECT_EQ(assets.file(root / "sky.exr", "the procedural sky"), root / "sky.exr");
+  EXPECT_FALSE(assets.file(root / "nope.exr", "the procedural sky"));
+  EXPECT_FALSE(assets.file(root / "nope.exr", "the procedural sky"));  // reported once
+  EXPECT_FALSE(assets.file(root / "folder", "the procedural sky"));
+  const auto missing = assets.missing();
+  ASSERT_EQ(missing.size(), expected + 2);
+  EXPECT_NE(missing[expected].find("nope.exr: not found; using the procedural sky"), std::string::npos);
+  EXPECT_NE(missing[expected + 1].find("not a regular file"), std::string::npos);
+  std::filesystem::remove_all(root);
+}
+
 }  // namespace
 }  // namespace vitrine::host
