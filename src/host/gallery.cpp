@@ -38,8 +38,7 @@ constexpr VkPipelineStageFlags2 kAcquireStage =
     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
 constexpr gpu::ImageUse kAcquired{kAcquireStage, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED};
 
-const SceneInfo& initialScene(const std::string& name) {
-  if (name.empty()) return sceneRegistry().front();
+const SceneInfo& namedScene(const std::string& name) {
   if (const SceneInfo* info = findScene(name)) return *info;
   throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", name));
 }
@@ -68,7 +67,8 @@ double secondsBetween(Clock::time_point from, Clock::time_point to) {
 
 class Gallery {
  public:
-  Gallery(const Options& options, const SceneInfo& firstScene);
+  // `named`: the --scene the user asked for; null: the scene shown last time, else the first.
+  Gallery(const Options& options, const SceneInfo* named);
   ~Gallery() { vkDeviceWaitIdle(device_); }  // also when leaving by an exception, with frames in flight
   Gallery(const Gallery&) = delete;
   Gallery& operator=(const Gallery&) = delete;
@@ -120,7 +120,7 @@ class Gallery {
   std::string panelError_;  // why the last edit was refused
 };
 
-Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
+Gallery::Gallery(const Options& options, const SceneInfo* named)
     : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen),
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
@@ -141,6 +141,8 @@ Gallery::Gallery(const Options& options, const SceneInfo& firstScene)
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   for (const auto& line : overlay_.fontProblems()) assets_.reportMissing(line);  // printed as reported
   for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
+  const SceneInfo* last = findScene(settings_.lastScene());
+  const SceneInfo& firstScene = named ? *named : last ? *last : sceneRegistry().front();
   // --preset and --set apply over the saved values of the scenes they name, checked before a window
   // shows anything; like edits in the panel, they are remembered.
   for (const SceneInfo& info : sceneRegistry()) {
@@ -327,8 +329,8 @@ void Gallery::pollShaders() {
 }  // namespace
 
 int runGallery(const Options& options) {
-  const SceneInfo& firstScene = initialScene(options.scene);  // a typo fails before a window opens
-  return Gallery(options, firstScene).run();
+  const SceneInfo* named = options.scene.empty() ? nullptr : &namedScene(options.scene);  // a typo fails first
+  return Gallery(options, named).run();
 }
 
 }  // namespace vitrine::host

@@ -42,7 +42,7 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
   }
   if (ImGui::SmallButton("reset all")) edit = PanelEdit{PanelEdit::What::ResetAll, {}, {}};
 
-  std::string group = schema.params().empty() ? "" : schema.params().front().group;
+  std::string group;  // the first section's title shows too, when it has one
   for (const params::Param& param : schema.params()) {
     if (param.group != group) {
       group = param.group;
