@@ -1,6 +1,8 @@
 #include "host/font_check.h"
 
 #include <gtest/gtest.h>
+
+#include "support/temp_folder.h"
 #include <unistd.h>
 
 #include <fstream>
@@ -10,21 +12,12 @@
 namespace vitrine::host {
 namespace {
 
-class FontCheck : public ::testing::Test {
+class FontCheck : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              (std::string("vitrine-fonts-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
-               std::to_string(::getpid()));
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
   std::filesystem::path write(const std::string& name, const std::string& bytes) const {
     std::ofstream(folder_ / name, std::ios::binary) << bytes;
     return folder_ / name;
   }
-  std::filesystem::path folder_;
 };
 
 std::string readAll(const std::filesystem::path& path) {

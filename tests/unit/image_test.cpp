@@ -6,6 +6,8 @@
 #include "image/image_io.h"
 
 #include <gtest/gtest.h>
+
+#include "support/temp_folder.h"
 #include <unistd.h>
 
 #include <cmath>
@@ -67,18 +69,7 @@ TEST(CompareSize, MismatchNamesBothSizes) {
   EXPECT_EQ(r.summary(), "size mismatch: reference 192x108, candidate 64x36");
 }
 
-class ImageFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              (std::string("vitrine-image-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
-               std::to_string(::getpid()));
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  std::filesystem::path folder_;
-};
+class ImageFiles : public test::TempFolderTest {};
 
 // A reference EXR holding NaN, written and read back as `vitrine compare` and the golden tests do.
 TEST_F(ImageFiles, ANaNReferenceWrittenToExrFailsTheComparison) {

@@ -2,6 +2,8 @@
 #include "core/output_path.h"
 
 #include <gtest/gtest.h>
+
+#include "support/temp_folder.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,18 +13,7 @@
 namespace vitrine {
 namespace {
 
-class OutputPath : public ::testing::Test {
- protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              (std::string("vitrine-output-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
-               std::to_string(::getpid()));
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  std::filesystem::path folder_;
-};
+class OutputPath : public test::TempFolderTest {};
 
 std::string refusal(const std::filesystem::path& path) {
   try {
