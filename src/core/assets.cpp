@@ -50,10 +50,10 @@ void Assets::reportMissing(std::string line) const {
 
 std::vector<std::string> Assets::missing() const {
   std::vector<std::string> lines;
-  for (const char* family : {"Fraunces", "CormorantSC"})
+  for (const char* family : {"Fraunces", "FrauncesItalic", "CormorantSC"})
     if (!font(family))
       lines.push_back(std::string("font ") + family + " (" + (root_ / "fonts").string() +
-                      "): using Dear ImGui's built-in font; run scripts/setup to fetch it");
+                      "): using a built-in face instead; run scripts/setup to fetch it");
   if (panoramas().empty())
     lines.push_back("HDR panoramas (" + (root_ / "hdri").string() +
                     "): scenes use a procedural sky; run scripts/setup to fetch blender-data's");
