@@ -12,6 +12,7 @@ void CursorTracker::observe(const Pointer& pointer, bool menuWantsMouse) {
   if (!pointer.leftHeld) state_.dragging = false;
   if (state_.dragging && wasDragging) state_.dragDelta += normalized - state_.normalized;
   if (!menuWantsMouse) state_.wheel += pointer.wheel;
+  state_.present = pointer.inside && !menuWantsMouse;
   state_.pixels = pointer.pixels;
   state_.normalized = normalized;
 }

@@ -177,7 +177,7 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       parse.fail(
           fmt::format("time {} is before the previous event's {}; times must not decrease", word[0], previousTime));
     previousTime = event.time;
-    if (word.size() < 2) parse.fail("expected a verb after the time: move, down, up, wheel or key");
+    if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel or key");
 
     const std::string_view verb = word[1];
     const size_t arguments = word.size() - 2;
@@ -185,9 +185,9 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       parse.expectArguments(verb, arguments, 2, " (X Y)");
       event.kind = InputEvent::Kind::Move;
       event.position = {parse.coordinate("X", word[2]), parse.coordinate("Y", word[3])};
-    } else if (verb == "down" || verb == "up") {
+    } else if (verb == "down" || verb == "up" || verb == "leave") {
       parse.expectArguments(verb, arguments, 0, "");
-      event.kind = verb == "down" ? InputEvent::Kind::Down : InputEvent::Kind::Up;
+      event.kind = verb == "down" ? InputEvent::Kind::Down : verb == "up" ? InputEvent::Kind::Up : InputEvent::Kind::Leave;
     } else if (verb == "wheel") {
       parse.expectArguments(verb, arguments, 1, " (STEPS)");
       event.kind = InputEvent::Kind::Wheel;
@@ -202,7 +202,7 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       if (!key) parse.fail(fmt::format("unknown key '{}'; {}", word[2], keyHint(lowercase(word[2]))));
       event.key = *key;
     } else {
-      parse.fail(fmt::format("unknown verb '{}'; expected move, down, up, wheel or key", word[1]));
+      parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel or key", word[1]));
     }
     script.events.push_back(event);
   }
@@ -230,7 +230,7 @@ InputPlayer::InputPlayer(InputScript script) : script_(std::move(script)) {}
 
 void InputPlayer::observe(VkExtent2D outputPixels, bool pressed, float wheel) {
   const glm::vec2 size(outputPixels.width, outputPixels.height);
-  tracker_.observe(Pointer{position_ * size, outputPixels, held_, pressed, wheel}, /*menuWantsMouse=*/false);
+  tracker_.observe(Pointer{position_ * size, outputPixels, held_, pressed, wheel, inside_}, /*menuWantsMouse=*/false);
 }
 
 StepInput InputPlayer::step(double stepTime, VkExtent2D outputPixels) {
@@ -241,7 +241,8 @@ StepInput InputPlayer::step(double stepTime, VkExtent2D outputPixels) {
       input.keysPressed.push_back(event.key);
       continue;
     }
-    if (event.kind == InputEvent::Kind::Move) position_ = event.position;
+    if (event.kind == InputEvent::Kind::Move) position_ = event.position, inside_ = true;
+    if (event.kind == InputEvent::Kind::Leave) inside_ = false;
     if (event.kind == InputEvent::Kind::Down) held_ = true;
     if (event.kind == InputEvent::Kind::Up) held_ = false;
     observe(outputPixels, event.kind == InputEvent::Kind::Down,

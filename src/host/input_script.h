@@ -4,6 +4,7 @@
 //
 // One event per line, "SECONDS VERB ARGS"; '#' starts a comment; blank lines are allowed:
 //   move X Y      cursor to (X, Y) in normalised output coordinates, origin top-left, each in 0..1
+//   leave         the cursor leaves the view (until the next move)
 //   down / up     left button pressed / released
 //   wheel STEPS   scroll, a finite number of steps, negative scrolls the other way
 //   key NAME      a key press: a-z, 0-9, f1-f12, space, enter, escape, tab, backspace, left, right,
@@ -26,7 +27,7 @@
 namespace vitrine::host {
 
 struct InputEvent {
-  enum class Kind { Move, Down, Up, Wheel, Key };
+  enum class Kind { Move, Down, Up, Wheel, Key, Leave };
   double time = 0.0;
   Kind kind = Kind::Move;
   glm::vec2 position{0.0f};  // Move: normalised, 0..1
@@ -78,6 +79,7 @@ class InputPlayer {
   InputScript script_;
   size_t next_ = 0;
   glm::vec2 position_{0.5f};
+  bool inside_ = false;  // over the view: from the first move until a leave
   bool held_ = false;
   CursorTracker tracker_;
 };

@@ -14,6 +14,7 @@ struct Pointer {
   bool leftHeld = false;
   bool leftPressed = false;  // a press happened since the last take, even if already released
   float wheel = 0.0f;        // scroll steps since the last take
+  bool inside = false;       // the cursor is over the view (not elsewhere on the desktop)
 };
 
 }  // namespace vitrine::host

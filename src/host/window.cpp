@@ -113,9 +113,10 @@ Pointer Window::takePointer() {
   // GLFW reports the cursor in screen coordinates; on HiDPI displays a framebuffer pixel is smaller.
   glm::vec2 scale(1.0f);
   if (width > 0 && height > 0) scale = glm::vec2(framebuffer.width, framebuffer.height) / glm::vec2(width, height);
+  const bool inside = glfwGetWindowAttrib(window_, GLFW_HOVERED) && x >= 0.0 && y >= 0.0 && x < width && y < height;
   return Pointer{glm::vec2(float(x), float(y)) * scale, framebuffer,
                  glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, std::exchange(leftPressed_, false),
-                 std::exchange(wheel_, 0.0f)};
+                 std::exchange(wheel_, 0.0f), inside};
 }
 
 void Window::onKey(GLFWwindow* window, int key, int, int action, int) {

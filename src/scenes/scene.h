@@ -27,6 +27,7 @@ struct CursorInput {
   bool dragging = false;       // left button held after a press inside the view
   glm::vec2 dragDelta{0.0f};   // normalised movement this frame while dragging
   float wheel = 0.0f;          // scroll steps this frame
+  bool present = false;        // over the view and not over the menu: the cursor is "there" (bloom's vapour)
 };
 
 struct FrameInput {

@@ -82,7 +82,7 @@ TEST(InputScript, RefusesMalformedLinesNamingFileAndLine) {
     const char* message;
   };
   const Case cases[] = {
-      {"0 click", "s.txt:1: unknown verb 'click'; expected move, down, up, wheel or key"},
+      {"0 click", "s.txt:1: unknown verb 'click'; expected move, leave, down, up, wheel or key"},
       {"# header\n\n0 Down", "s.txt:3: unknown verb 'Down'"},
       {"0.5", "s.txt:1: expected a verb after the time"},
       {"0 move 0.5", "s.txt:1: 'move' takes 2 arguments (X Y), got 1"},
@@ -141,7 +141,7 @@ class InputScriptFiles : public ::testing::Test {
 
 TEST_F(InputScriptFiles, LoadNamesTheFileInErrors) {
   const auto path = write("bad.txt", "0 down\n0.1 jump\n");
-  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, down, up, wheel or key");
+  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, leave, down, up, wheel or key");
   EXPECT_EQ(loadInputScript(write("good.txt", "0 down\n")).events.size(), 1u);
 }
 
@@ -247,6 +247,24 @@ TEST(InputScript, PlayerGivesKeysInFileOrder) {
   EXPECT_EQ(steps[12].keysPressed, (std::vector<int>{GLFW_KEY_B, GLFW_KEY_A, GLFW_KEY_ESCAPE}));
   EXPECT_EQ(steps[18].keysPressed, std::vector<int>{GLFW_KEY_1});
   EXPECT_TRUE(steps[13].keysPressed.empty());
+}
+
+}  // namespace
+}  // namespace vitrine::host
+
+namespace vitrine::host {
+namespace {
+
+// A scene can tell the cursor is over the view (bloom's vapour is only there when it is): away until
+// the first move, there after it, away again after `leave`, back with the next move.
+TEST(InputScript, TheCursorIsPresentFromTheFirstMoveUntilItLeaves) {
+  InputPlayer player(parseInputScript("0.1 move 0.5 0.5\n0.3 leave\n0.5 move 0.2 0.2\n", "s.txt"));
+  EXPECT_FALSE(player.step(0.0, {200, 100}).cursor.present);
+  EXPECT_TRUE(player.step(0.1, {200, 100}).cursor.present);
+  EXPECT_TRUE(player.step(0.2, {200, 100}).cursor.present);
+  EXPECT_FALSE(player.step(0.3, {200, 100}).cursor.present);
+  EXPECT_TRUE(player.step(0.5, {200, 100}).cursor.present);
+  EXPECT_NE(errorOf("0.1 leave now\n"), "(no error)");
 }
 
 }  // namespace
