@@ -293,6 +293,8 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   features.features.shaderInt16 = has.features.shaderInt16;
   features.features.fillModeNonSolid = has.features.fillModeNonSolid;
   features.features.shaderStorageImageWriteWithoutFormat = has.features.shaderStorageImageWriteWithoutFormat;
+  features.features.shaderStorageImageExtendedFormats = has.features.shaderStorageImageExtendedFormats;  // r16f
+  storageExtendedFormats_ = has.features.shaderStorageImageExtendedFormats;
   storageWriteWithoutFormat_ = has.features.shaderStorageImageWriteWithoutFormat;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};

@@ -73,6 +73,8 @@ class Device {
   std::string describe() const;  // "NVIDIA H100 (driver 0x..., Vulkan 1.3.x)"
   // Storage images without a format qualifier: lets one compute pass write any output format.
   bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }
+  // Storage images in the extended formats (r16f: half the bytes of a float lattice).
+  bool storageExtendedFormats() const { return storageExtendedFormats_; }
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;
@@ -125,6 +127,7 @@ class Device {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queueFamily_ = 0;
   bool storageWriteWithoutFormat_ = false;
+  bool storageExtendedFormats_ = false;
   Unique<VkCommandPool> oneShotPool_;
   Unique<VkSemaphore> timeline_;
   mutable uint64_t submitted_ = 0;

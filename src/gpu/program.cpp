@@ -241,8 +241,9 @@ VkPipeline GraphicsProgram::build() const {
   blend.colorWriteMask = 0xF;
   if (state_.blend != GraphicsState::Blend::None) {
     const bool additive = state_.blend == GraphicsState::Blend::Additive;
+    const bool premultiplied = state_.blend == GraphicsState::Blend::Premultiplied;
     blend.blendEnable = VK_TRUE;
-    blend.srcColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA;
+    blend.srcColorBlendFactor = additive || premultiplied ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA;
     blend.dstColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     blend.colorBlendOp = VK_BLEND_OP_ADD;
     blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;

@@ -129,7 +129,7 @@ struct GraphicsState {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
-  enum class Blend { None, Additive, Alpha } blend = Blend::None;
+  enum class Blend { None, Additive, Alpha, Premultiplied } blend = Blend::None;
 };
 
 class GraphicsProgram final : public Program {

@@ -1,3 +1,4 @@
+#include "scenes/bloom/bloom_scene.h"
 #include "scenes/kifs/kifs_scene.h"
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
@@ -6,6 +7,7 @@ namespace vitrine {
 
 std::span<const SceneInfo> sceneRegistry() {
   static const SceneInfo scenes[] = {
+      bloom::kSceneInfo,
       kifs::kSceneInfo,
       noodles::kSceneInfo,
   };

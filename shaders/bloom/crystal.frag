@@ -1,0 +1,81 @@
+#version 460
+// The crystal: sphere-trace the octahedron from the proxy's box to its entry, find the exit
+// analytically (a convex polytope of 8 planes), integrate the vapour's phase colour front to back
+// over jittered samples, add a Fresnel rim and facet shading at the entry; during the climax a
+// spectral shimmer. Output is premultiplied: the chamber shows through what the crystal lets pass.
+#extension GL_GOOGLE_include_directive : require
+#include "crystal_push.glsl"
+#include "../common/hash.glsl"
+layout(location = 0) in vec3 world;
+layout(location = 0) out vec4 colour;
+layout(binding = 0) uniform sampler3D vapour;
+
+const vec3 kLight = normalize(vec3(-0.4, 0.8, 0.6));
+
+void main() {
+  const vec3 ro = pc.eye;
+  const vec3 rd = normalize(world - ro);
+  // Only the box's far faces do the work (one invocation a pixel, also with the eye inside the box).
+  const vec3 w = abs(world);
+  const vec3 face = w.x >= max(w.y, w.z) ? vec3(sign(world.x), 0, 0) : w.y >= w.z ? vec3(0, sign(world.y), 0)
+                                                                                 : vec3(0, 0, sign(world.z));
+  if (dot(face, rd) < 0.0) discard;
+  // The box [-R, R]^3: start where the ray enters it (or at the eye when inside).
+  const vec3 inv = 1.0 / rd;
+  const vec3 a = (-kCrystalRadius - ro) * inv, b = (kCrystalRadius - ro) * inv;
+  const vec3 lo = min(a, b), hi = max(a, b);
+  const float boxIn = max(max(max(lo.x, lo.y), lo.z), 0.0), boxOut = min(min(hi.x, hi.y), hi.z);
+
+  float t = boxIn;
+  bool hit = false;
+  for (uint i = 0u; i < pc.traceSteps && t < boxOut; ++i) {
+    const float d = octahedronDistance(ro + rd * t, kCrystalRadius);
+    if (d < 1e-4) {
+      hit = true;
+      break;
+    }
+    t += d;
+  }
+  if (!hit) discard;
+
+  // Exit: the nearest plane |n . p| = R (n = (+-1, +-1, +-1)) the ray leaves through.
+  float exitT = boxOut;
+  for (int k = 0; k < 8; ++k) {
+    const vec3 n = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
+    const float towards = dot(n, rd);
+    if (towards > 1e-6) exitT = min(exitT, (kCrystalRadius - dot(n, ro)) / towards);
+  }
+  const vec3 entry = ro + rd * t;
+  const float span = max(exitT - t, 0.0);
+
+  // Front-to-back: each sample's colour at its phase, with an opacity that grows with the vapour.
+  const float step = span / float(pc.samples);
+  const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
+  vec3 sum = vec3(0.0);
+  float alpha = 0.0;
+  for (uint i = 0u; i < pc.samples && alpha < 0.995; ++i) {
+    const vec3 p = entry + rd * ((float(i) + jitter) * step);
+    const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
+    const float density = 2.4 + 7.0 * v;
+    const float a = 1.0 - exp(-density * step);
+    sum += (1.0 - alpha) * a * phaseColour(v);
+    alpha += (1.0 - alpha) * a;
+  }
+
+  // Facets catch the light; the rim brightens towards grazing angles.
+  const vec3 normal = sign(entry) * 0.57735027;
+  const float facing = abs(dot(normal, rd));
+  sum *= 0.72 + 0.38 * max(dot(normal, kLight), 0.0);
+  const float fresnel = 0.04 + 0.96 * pow(1.0 - facing, 5.0);
+  sum += vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
+  // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
+  const float surface = 0.22 + 0.5 * fresnel;
+  alpha = alpha + (1.0 - alpha) * surface;
+
+  if (pc.shimmer > 0.0) {  // the chamber sings: a slow spectral wash across the crystal
+    const vec2 uv = gl_FragCoord.xy * 0.004;
+    const vec3 spectrum = 0.5 + 0.5 * cos(6.2831853 * (vec3(0.0, 0.33, 0.67) + pc.time * 0.35 + uv.x + uv.y));
+    sum = mix(sum, sum * (0.6 + 0.8 * spectrum), pc.shimmer * 0.35);
+  }
+  colour = vec4(sum, alpha);
+}

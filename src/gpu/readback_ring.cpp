@@ -1,0 +1,48 @@
+#include "gpu/readback_ring.h"
+
+#include <fmt/format.h>
+
+namespace vitrine::gpu {
+
+ReadbackRing::ReadbackRing(const Device& device, VkDeviceSize bytes, uint32_t slots, const std::string& name)
+    : device_(device), bytes_(bytes) {
+  for (uint32_t i = 0; i < slots; ++i)
+    slots_.push_back({Buffer(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                             fmt::format("{} {}", name, i)),
+                      0, 0.0, false});
+}
+
+bool ReadbackRing::record(VkCommandBuffer cmd, Buffer& source, double tag) {
+  Slot& slot = slots_[next_];
+  if (slot.pending && slot.serial > device_.completed()) return false;  // all in flight: skip, never wait
+  next_ = (next_ + 1) % slots_.size();
+  source.use(cmd, use::TransferSrcBuffer);
+  slot.buffer.use(cmd, use::TransferDstBuffer);
+  const VkBufferCopy region{0, 0, bytes_};
+  vkCmdCopyBuffer(cmd, source.handle(), slot.buffer.handle(), 1, &region);
+  slot.buffer.use(cmd, use::HostReadBuffer);
+  slot.serial = device_.lastSubmitted() + 1;
+  slot.tag = tag;
+  slot.pending = true;
+  return true;
+}
+
+std::optional<ReadbackRing::Result> ReadbackRing::poll() {
+  const uint64_t completed = device_.completed();
+  Slot* newest = nullptr;
+  for (Slot& slot : slots_) {
+    if (!slot.pending || slot.serial > completed) continue;
+    if (!newest || slot.serial > newest->serial) {
+      if (newest) newest->pending = false;
+      newest = &slot;
+    } else {
+      slot.pending = false;
+    }
+  }
+  if (!newest) return std::nullopt;
+  newest->pending = false;
+  newest->buffer.invalidate();
+  return Result{{static_cast<const std::byte*>(newest->buffer.mapped()), size_t(bytes_)}, newest->tag};
+}
+
+}  // namespace vitrine::gpu

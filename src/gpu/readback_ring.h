@@ -1,0 +1,43 @@
+#pragma once
+// Small results the GPU computes every frame and the CPU wants back (statistics, a phase level),
+// read a few frames later without ever stalling: each frame's copy goes into the next of a few
+// host-readable buffers, and poll() hands over the newest one whose submission has finished. When
+// every buffer is still in flight, that frame's copy is skipped rather than waited for.
+#include "gpu/resources.h"
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace vitrine::gpu {
+
+class ReadbackRing {
+ public:
+  ReadbackRing(const Device& device, VkDeviceSize bytes, uint32_t slots, const std::string& name);
+
+  // Records a copy of `source` (its first `bytes`) into a free slot, tagged (a frame index or a
+  // time); false when no slot is free this frame.
+  bool record(VkCommandBuffer cmd, Buffer& source, double tag);
+
+  struct Result {
+    std::span<const std::byte> bytes;  // valid until the next record() into that slot
+    double tag;
+  };
+  // The newest finished copy not yet handed over; older finished ones are dropped with it.
+  std::optional<Result> poll();
+
+ private:
+  struct Slot {
+    Buffer buffer;
+    uint64_t serial = 0;  // of the submission that fills it
+    double tag = 0.0;
+    bool pending = false;
+  };
+  const Device& device_;
+  VkDeviceSize bytes_;
+  std::vector<Slot> slots_;
+  size_t next_ = 0;
+};
+
+}  // namespace vitrine::gpu

@@ -1,0 +1,234 @@
+#pragma once
+// The maths of the bloom scene (seed 000, "The Bloom"), in plain C++ that shaders/bloom/ mirrors and
+// GoogleTest checks: the octahedral crystal and its lattice, one explicit diffusion step (the CPU
+// reference of diffuse.comp), the stability bound that fixes the number of sub-steps, the phase
+// colours, the cursor's ray into the crystal, the CPU proxy of the seed, and the phase detector.
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace vitrine::bloom {
+
+// ------------------------------------------------------------------------------------ the crystal
+// An octahedron |x| + |y| + |z| <= R about the origin. The lattice of N^3 voxels spans its bounding
+// box [-R, R]^3; voxel i's centre is at normalised coordinate (i + 0.5) / N * 2 - 1.
+inline constexpr float kCrystalRadius = 0.8f;  // world units, centre to vertex
+
+inline glm::vec3 voxelCentre(glm::uvec3 voxel, uint32_t n) { return (glm::vec3(voxel) + 0.5f) / float(n) * 2.0f - 1.0f; }
+inline bool insideCrystal(glm::vec3 normalised) {
+  return std::abs(normalised.x) + std::abs(normalised.y) + std::abs(normalised.z) <= 1.0f;
+}
+// A lower bound of the distance to the octahedron surface (exact on the faces): safe to sphere-trace.
+inline float octahedronDistance(glm::vec3 p, float radius) {
+  return (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) - radius) * 0.57735027f;
+}
+
+// ---------------------------------------------------------------------------------- the diffusion
+// next = cur + D dt (sum of the six neighbours - 6 cur) - decay dt next + source dt, masked, clamped.
+// Rates are given for a 96^3 lattice and scaled with it, so a finer lattice shows the same picture:
+// D (voxels^2 / s) grows with (N / 96)^2 and the source's sigma (voxels) with N / 96.
+inline constexpr float kMaxConcentration = 1.05f;
+inline constexpr uint32_t kReferenceLattice = 96;
+// The explicit scheme is stable when D dt 6 < 1 per sub-step; 0.9 keeps a margin (and no overshoot
+// ringing, which starts at 0.5 per axis pair for oscillating modes of the 3D Laplacian stencil).
+inline constexpr float kStabilityLimit = 0.9f;
+
+struct DiffusionParams {
+  float diffusion = 0.0f;  // D, voxels^2 / s at this lattice size
+  float decay = 0.0f;      // per second
+  float dt = 0.0f;         // one sub-step, seconds
+  bool sourceOn = false;
+  glm::vec3 source{0.0f};  // the source centre, in voxel coordinates (0..N)
+  float sigma = 1.0f;      // voxels
+  float sourceRate = 0.0f; // concentration per second at the source centre
+};
+
+inline float scaledDiffusion(float diffusionAt96, uint32_t n) {
+  const float s = float(n) / float(kReferenceLattice);
+  return diffusionAt96 * s * s;
+}
+inline float scaledSigma(float sigmaAt96, uint32_t n) { return sigmaAt96 * float(n) / float(kReferenceLattice); }
+
+// Fixed sub-steps for a frame of frameDt seconds so that D dt 6 stays at or under the limit.
+inline uint32_t substepsFor(float diffusion, float frameDt) {
+  return std::max(1u, uint32_t(std::ceil(6.0f * diffusion * frameDt / kStabilityLimit)));
+}
+
+inline float sourceAt(glm::vec3 voxelCentreCoords, const DiffusionParams& p) {
+  if (!p.sourceOn) return 0.0f;
+  const glm::vec3 d = voxelCentreCoords - p.source;
+  return p.sourceRate * std::exp(-glm::dot(d, d) / (2.0f * p.sigma * p.sigma));
+}
+
+// One voxel's update, given its value and the sum of its six (edge-clamped) neighbours.
+inline float diffuseVoxel(float current, float neighbourSum, glm::vec3 voxelCoords, bool inside,
+                          const DiffusionParams& p) {
+  if (!inside) return 0.0f;
+  float next = current + p.diffusion * (neighbourSum - 6.0f * current) * p.dt;
+  next += sourceAt(voxelCoords, p) * p.dt;
+  next -= p.decay * next * p.dt;
+  return std::clamp(next, 0.0f, kMaxConcentration);
+}
+
+// The CPU reference of one step of shaders/bloom/diffuse.comp over an n^3 lattice (x fastest).
+inline void diffuseLattice(const std::vector<float>& in, std::vector<float>& out, uint32_t n,
+                           const DiffusionParams& p) {
+  out.resize(in.size());
+  const auto at = [&](int x, int y, int z) {
+    const int last = int(n) - 1;  // zero flux: an edge voxel's missing neighbour is itself
+    x = std::clamp(x, 0, last), y = std::clamp(y, 0, last), z = std::clamp(z, 0, last);
+    return in[(size_t(z) * n + size_t(y)) * n + size_t(x)];
+  };
+  for (uint32_t z = 0; z < n; ++z)
+    for (uint32_t y = 0; y < n; ++y)
+      for (uint32_t x = 0; x < n; ++x) {
+        const int ix = int(x), iy = int(y), iz = int(z);
+        const float sum = at(ix - 1, iy, iz) + at(ix + 1, iy, iz) + at(ix, iy - 1, iz) + at(ix, iy + 1, iz) +
+                          at(ix, iy, iz - 1) + at(ix, iy, iz + 1);
+        const glm::uvec3 v{x, y, z};
+        out[(size_t(z) * n + y) * n + x] =
+            diffuseVoxel(at(ix, iy, iz), sum, glm::vec3(v) + 0.5f, insideCrystal(voxelCentre(v, n)), p);
+      }
+}
+
+// ------------------------------------------------------------------------------------ the colours
+// Sharp smoothsteps, so a change of phase reads as a flip: white -> amber -> rose -> crimson at
+// 0.20 / 0.40 / 0.60, each over +-0.03. Linear RGB.
+inline constexpr glm::vec3 kPristine{0.86f, 0.89f, 0.93f};
+inline constexpr glm::vec3 kAmber{1.00f, 0.50f, 0.06f};
+inline constexpr glm::vec3 kRose{0.90f, 0.24f, 0.36f};
+inline constexpr glm::vec3 kCrimson{0.50f, 0.015f, 0.05f};
+inline constexpr std::array<float, 3> kColourThresholds{0.20f, 0.40f, 0.60f};
+inline constexpr float kColourWidth = 0.06f;
+
+inline float smoothstep(float e0, float e1, float x) {
+  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+inline glm::vec3 phaseColour(float v) {
+  glm::vec3 c = kPristine;
+  const glm::vec3 next[3] = {kAmber, kRose, kCrimson};
+  for (int i = 0; i < 3; ++i) {
+    const float t = kColourThresholds[i];
+    c = glm::mix(c, next[i], smoothstep(t - kColourWidth * 0.5f, t + kColourWidth * 0.5f, v));
+  }
+  return c;
+}
+
+// ------------------------------------------------------------------------------------ the camera
+inline constexpr glm::vec3 kEye{0.0f, 0.2f, 3.0f};
+inline constexpr float kFieldOfViewY = 0.62f;  // radians
+
+struct Ray {
+  glm::vec3 origin, direction;
+};
+// The ray through a point of the output, normalised 0..1 with the origin top-left.
+inline Ray cameraRay(float u, float v, float aspect) {
+  const glm::vec3 forward = glm::normalize(-kEye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float h = std::tan(kFieldOfViewY * 0.5f);
+  const glm::vec3 d = forward + right * ((u * 2.0f - 1.0f) * h * aspect) + up * ((1.0f - v * 2.0f) * h);
+  return {kEye, glm::normalize(d)};
+}
+
+// Where the cursor puts the vapour: the point of its ray nearest the crystal's centre, and how far
+// that is from the centre (world units). The scene injects while that distance is small enough.
+struct CursorVapour {
+  glm::vec3 point;
+  float distance;
+};
+inline CursorVapour cursorVapour(const Ray& ray) {
+  const float t = std::max(0.0f, -glm::dot(ray.origin, ray.direction));
+  const glm::vec3 p = ray.origin + ray.direction * t;
+  return {p, glm::length(p)};
+}
+// World position to voxel coordinates (0..n across the bounding box), clamped into the lattice.
+inline glm::vec3 worldToVoxel(glm::vec3 world, uint32_t n) {
+  return glm::clamp((world / kCrystalRadius * 0.5f + 0.5f) * float(n), glm::vec3(0.0f), glm::vec3(float(n)));
+}
+
+// ---------------------------------------------------------------------------- the CPU proxy (seed)
+// dV/dt = S - D V: S = 0.20/s while the cursor is on the crystal, D = 0.10/s rising, 0.40/s venting.
+struct ProxyRates {
+  float source = 0.20f, decayRising = 0.10f, decayVenting = 0.40f;
+};
+inline float proxyStep(float v, bool sourceOn, float dt, const ProxyRates& r = {}) {
+  const float s = sourceOn ? r.source : 0.0f;
+  const float d = sourceOn ? r.decayRising : r.decayVenting;
+  return std::clamp(v + (s - d * v) * dt, 0.0f, kMaxConcentration);
+}
+
+// --------------------------------------------------------------------------------- the phases
+// Phase k (amber, rose, crimson) is reached on the way up when its signal rises to `on`, left on the
+// way down when it falls below `off` (< on: hysteresis, so noise at a threshold cannot chatter);
+// the climax likewise. Phases rise and fall in order.
+enum class Phase { Pristine, Amber, Rose, Crimson };
+inline constexpr std::array<std::string_view, 4> kPhaseNames{"pristine", "amber", "rose", "crimson"};
+inline constexpr std::array<float, 4> kEventThresholds{0.25f, 0.45f, 0.65f, 0.82f};  // amber, rose, crimson, climax
+
+struct PhaseEvent {
+  enum class Kind { Up, Climax, Vent } kind;
+  Phase phase;         // Up: reached; Vent: left (Crimson for a climax that ended: see fromClimax)
+  bool fromClimax = false;
+  std::string_view name() const {
+    if (kind == Kind::Climax) return "chroma";
+    if (kind == Kind::Up) return kPhaseNames[size_t(phase)];
+    return "vent";
+  }
+  std::string_view left() const { return fromClimax ? "chroma" : kPhaseNames[size_t(phase)]; }
+};
+
+struct Hysteresis {
+  float on, off;
+};
+
+class PhaseDetector {
+ public:
+  // signal[k] for amber, rose, crimson, climax; bands[k] its on/off levels.
+  std::vector<PhaseEvent> observe(const std::array<float, 4>& signal, const std::array<Hysteresis, 4>& bands) {
+    std::vector<PhaseEvent> events;
+    // Down first, from the top, so a fast vent reports every phase it leaves in order.
+    if (climax_ && signal[3] < bands[3].off) {
+      climax_ = false;
+      events.push_back({PhaseEvent::Kind::Vent, Phase::Crimson, true});
+    }
+    while (phase_ > 0 && !climax_ && signal[size_t(phase_ - 1)] < bands[size_t(phase_ - 1)].off) {
+      events.push_back({PhaseEvent::Kind::Vent, Phase(phase_), false});
+      --phase_;
+    }
+    while (phase_ < 3 && signal[size_t(phase_)] >= bands[size_t(phase_)].on) {
+      ++phase_;
+      events.push_back({PhaseEvent::Kind::Up, Phase(phase_), false});
+    }
+    if (!climax_ && phase_ == 3 && signal[3] >= bands[3].on) {
+      climax_ = true;
+      events.push_back({PhaseEvent::Kind::Climax, Phase::Crimson, false});
+    }
+    return events;
+  }
+  Phase phase() const { return Phase(phase_); }
+  bool climax() const { return climax_; }
+  void reset() { phase_ = 0, climax_ = false; }
+
+ private:
+  int phase_ = 0;
+  bool climax_ = false;
+};
+
+// The GPU source: the fraction of crystal voxels above each event threshold. A phase is reached when
+// 45 % of the crystal is past its threshold and left below 25 %. The climax needs half the crystal
+// past 0.82: the zero-concentration outside is a sink, so a shell under the surface never saturates
+// (with the default rates the interior plateaus near 55 % while the button is held, 35 % hovering).
+inline constexpr std::array<Hysteresis, 4> kFractionBands{{{0.45f, 0.25f}, {0.45f, 0.25f}, {0.45f, 0.25f}, {0.5f, 0.25f}}};
+// The CPU source: the proxy's V against the thresholds themselves, 0.03 below to leave.
+inline constexpr std::array<Hysteresis, 4> kProxyBands{
+    {{0.25f, 0.22f}, {0.45f, 0.42f}, {0.65f, 0.62f}, {0.82f, 0.79f}}};
+
+}  // namespace vitrine::bloom

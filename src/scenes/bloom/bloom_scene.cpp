@@ -1,0 +1,314 @@
+// bloom: a vapochromic octahedral crystal (seed 000, "The Bloom"). The cursor is the vapour: it
+// diffuses through a 3D lattice in a compute pass, the crystal is raymarched over a bounding-box
+// proxy so only its pixels pay, and its colour flips white -> amber -> rose -> crimson at sharp
+// thresholds. The phases are read from the lattice itself (statistics reduced on the GPU, read back
+// a few frames later, never a stall) and reported as scene events.
+#include "scenes/bloom/bloom_scene.h"
+
+#include "core/error.h"
+#include "gpu/readback_ring.h"
+#include "scenes/bloom/bloom_math.h"
+#include "scenes/bloom/settings.h"
+
+#include <Imath/half.h>
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <imgui.h>
+
+#include <array>
+#include <cstring>
+#include <deque>
+
+namespace vitrine::bloom {
+namespace {
+
+constexpr VkFormat kLatticeFormat = VK_FORMAT_R16_SFLOAT;  // one channel: 2 bytes a voxel, not the seed's 8
+constexpr int kMaxStepsPerFrame = 4;                        // catch-up steps simulated in one frame at most
+constexpr size_t kStatsWords = 8;
+
+struct DiffusePush {
+  glm::vec3 source;
+  float diffusion, decay, dt, sigma, sourceRate;
+};
+static_assert(sizeof(DiffusePush) == 32);
+
+struct ChamberPush {
+  float shadow, glow;
+  float pad0, pad1;
+  glm::vec3 glowColour;
+  float pad2;
+};
+
+struct CrystalPush {  // mirrors shaders/bloom/crystal_push.glsl
+  glm::mat4 viewProjection;
+  glm::vec3 eye;
+  float time;
+  uint32_t frame, traceSteps, samples;
+  float shimmer;
+  uint32_t seed;
+};
+static_assert(sizeof(CrystalPush) == 100);
+
+gpu::GraphicsState crystalState() {
+  gpu::GraphicsState state;
+  state.vertex = "bloom/crystal.vert";
+  state.fragment = "bloom/crystal.frag";
+  state.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
+  state.blend = gpu::GraphicsState::Blend::Premultiplied;
+  return state;
+}
+
+// The statistics buffer's words (shaders/bloom/stats.comp).
+struct LatticeStats {
+  uint32_t crystal = 0;
+  std::array<uint32_t, 4> above{};  // 0.25, 0.45, 0.65, 0.82
+  float peak = 0.0f;
+  std::array<float, 4> fractions() const {
+    std::array<float, 4> f{};
+    for (size_t i = 0; i < 4; ++i) f[i] = crystal ? float(above[i]) / float(crystal) : 0.0f;
+    return f;
+  }
+};
+
+class BloomScene final : public Scene {
+ public:
+  explicit BloomScene(const SceneContext& context)
+      : device_(context.device),
+        resources_(context.resources),
+        events_(context.events),
+        diffuse_(context.programs, "bloom/diffuse.comp",
+                 {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(DiffusePush)}),
+        statistics_(context.programs, "bloom/stats.comp",
+               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0}),
+        chamber_(context.programs, "bloom/chamber.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ChamberPush)}),
+        crystal_(context.programs, crystalState(),
+                 {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, sizeof(CrystalPush)}),
+        statsBuffer_(context.device, kStatsWords * sizeof(uint32_t),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     gpu::MemoryUse::Device, "bloom statistics"),
+        statsReadback_(context.device, kStatsWords * sizeof(uint32_t), 4, "bloom statistics readback") {
+    if (!context.device.storageExtendedFormats())
+      throw Error(fmt::format("bloom needs r16f storage images (shaderStorageImageExtendedFormats), which {} lacks",
+                              context.device.properties().deviceName));
+    lattice_ = resources_.declare(latticeDecl(settings_.lattice, 0.0f));
+    builtLattice_ = settings_.lattice;
+  }
+
+  void resize(VkExtent2D target) override { aspect_ = float(target.width) / float(std::max(target.height, 1u)); }
+
+  void update(const FrameInput& input) override {
+    time_ = input.time;
+    frame_ = input.frame;
+    seed_ = input.seed;
+    // The cursor's ray, unprojected into the crystal's space, is the vapour source near the crystal.
+    const Ray ray = cameraRay(input.cursor.normalized.x, input.cursor.normalized.y, aspect_);
+    const CursorVapour vapour = cursorVapour(ray);
+    const bool near = input.cursor.present && vapour.distance < settings_.reach * kCrystalRadius;
+    source_.on = near;
+    source_.voxel = worldToVoxel(vapour.point, uint32_t(settings_.lattice));
+    source_.rate = settings_.sourceRate * (input.cursor.dragging ? settings_.dragBoost : 1.0f);
+    stepsPending_ = std::min(stepsPending_ + 1, kMaxStepsPerFrame);
+    stepSeconds_ = input.dt;
+
+    // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
+    proxy_ = proxyStep(proxy_, input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
+                       {0.20f, settings_.decayRising, settings_.decayVenting});
+    if (settings_.phaseSource == PhaseSource::Cpu) detect({proxy_, proxy_, proxy_, proxy_}, kProxyBands, time_);
+    while (auto result = statsReadback_.poll()) {  // finished a frame or more ago: no waiting
+      LatticeStats stats;
+      std::array<uint32_t, kStatsWords> words{};
+      std::memcpy(words.data(), result->bytes.data(), sizeof(words));
+      stats.crystal = words[0];
+      for (size_t i = 0; i < 4; ++i) stats.above[i] = words[1 + i];
+      std::memcpy(&stats.peak, &words[5], sizeof(float));
+      stats_ = stats;
+      history_.push_back({float(stats.peak), stats.fractions()[1], proxy_});
+      if (history_.size() > kHistory) history_.pop_front();
+      if (settings_.phaseSource == PhaseSource::Gpu) detect(stats.fractions(), kFractionBands, result->tag);
+    }
+    if (settings_.vent) {
+      settings_.vent = false;
+      restart(0.0f);
+    }
+  }
+
+  void record(const FrameContext& frame) override {
+    if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
+    simulate(frame);
+    measure(frame);
+    drawChamber(frame);
+    drawCrystal(frame);
+  }
+
+  params::Bound parameters() override { return {&schema(), &settings_}; }
+
+  void drawPanel() override {
+    const auto f = stats_.fractions();
+    ImGui::Text("phase %s%s   peak %.2f", std::string(kPhaseNames[size_t(detector_.phase())]).c_str(),
+                detector_.climax() ? " + CHROMA" : "", stats_.peak);
+    ImGui::Text("crystal past 0.25 / 0.45 / 0.65 / 0.82: %.0f%% %.0f%% %.0f%% %.0f%%", f[0] * 100, f[1] * 100,
+                f[2] * 100, f[3] * 100);
+    std::vector<float> peak, amber, proxy;
+    for (const auto& h : history_) peak.push_back(h.peak), amber.push_back(h.fraction), proxy.push_back(h.proxy);
+    ImGui::PlotLines("GPU peak", peak.data(), int(peak.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
+    ImGui::PlotLines("GPU past 0.45", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
+    ImGui::PlotLines("CPU proxy V", proxy.data(), int(proxy.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
+    ImGui::Text("%u sub-steps a frame (D dt 6 = %.2f)", substeps(), stabilityNumber());
+  }
+
+ private:
+  struct Sample {
+    float peak, fraction, proxy;
+  };
+  static constexpr size_t kHistory = 600;  // ten seconds of readings
+
+  gpu::ImageDecl latticeDecl(int n, float fill) const {
+    gpu::ImageDecl decl{"bloom vapour", kLatticeFormat,
+                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                        gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n)), 1, gpu::Pairing::PingPong};
+    // Initial texels: the fill inside the crystal, zero outside (half floats).
+    const uint32_t size = uint32_t(n);
+    std::vector<uint16_t> texels(size_t(size) * size * size, 0);
+    if (fill > 0.0f) {
+      const uint16_t bits = half(fill).bits();
+      for (uint32_t z = 0; z < size; ++z)
+        for (uint32_t y = 0; y < size; ++y)
+          for (uint32_t x = 0; x < size; ++x)
+            if (insideCrystal(voxelCentre({x, y, z}, size))) texels[(size_t(z) * size + y) * size + x] = bits;
+    }
+    decl.initial.resize(texels.size() * sizeof(uint16_t));
+    std::memcpy(decl.initial.data(), texels.data(), decl.initial.size());
+    decl.initialUse = gpu::use::ComputeRead;
+    return decl;
+  }
+
+  // A new lattice (size change, fill, vent): the old images are retired behind frames in flight.
+  void restart(float fill) {
+    resources_.redeclare(lattice_, latticeDecl(settings_.lattice, fill));
+    builtLattice_ = settings_.lattice;
+    builtFill_ = settings_.fill;
+  }
+
+  float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
+  uint32_t substeps() const { return substepsFor(scaledD(), stepSeconds_); }
+  float stabilityNumber() const { return 6.0f * scaledD() * stepSeconds_ / float(substeps()); }
+
+  void simulate(const FrameContext& frame) {
+    if (stepsPending_ == 0) return;
+    const auto pass = frame.pass("bloom diffuse");
+    const uint32_t n = uint32_t(settings_.lattice);
+    const uint32_t perStep = substeps();
+    DiffusePush push{source_.voxel,
+                     scaledD(),
+                     source_.on ? settings_.decayRising : settings_.decayVenting,
+                     stepSeconds_ / float(perStep),
+                     scaledSigma(settings_.sigma, n),
+                     source_.on ? source_.rate : 0.0f};
+    diffuse_.bind(frame.cmd);
+    diffuse_.constants(frame.cmd, push);
+    for (uint32_t i = 0; i < uint32_t(stepsPending_) * perStep; ++i) {
+      gpu::Image& read = frame.image(lattice_);
+      gpu::Image& write = frame.resources.previous(lattice_);
+      frame.transition(read, gpu::use::ComputeRead);
+      frame.transition(write, gpu::use::ComputeWrite);
+      diffuse_.push(frame.cmd, gpu::Bindings().storageImage(read.view()).storageImage(write.view()));
+      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
+      frame.resources.flip(lattice_);
+    }
+    stepsPending_ = 0;
+  }
+
+  void measure(const FrameContext& frame) {
+    const auto pass = frame.pass("bloom statistics");
+    frame.transition(statsBuffer_, gpu::use::TransferDstBuffer);
+    vkCmdFillBuffer(frame.cmd, statsBuffer_.handle(), 0, VK_WHOLE_SIZE, 0);
+    gpu::Image& lattice = frame.image(lattice_);
+    frame.transition(lattice, gpu::use::ComputeRead);
+    frame.transition(statsBuffer_, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    statistics_.bind(frame.cmd);
+    statistics_.push(frame.cmd, gpu::Bindings().storageImage(lattice.view()).storageBuffer(statsBuffer_.handle()));
+    const uint32_t n = uint32_t(settings_.lattice);
+    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
+    statsReadback_.record(frame.cmd, statsBuffer_, time_);
+  }
+
+  void drawChamber(const FrameContext& frame) {
+    const auto pass = frame.pass("bloom chamber");
+    frame.transition(frame.target, gpu::use::ComputeWrite);
+    const float fill = std::min(stats_.peak, 1.0f);
+    const ChamberPush push{0.22f + 0.12f * fill, fill * 0.6f, 0, 0, phaseColour(stats_.peak), 0};
+    chamber_.bind(frame.cmd);
+    chamber_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view()));
+    chamber_.constants(frame.cmd, push);
+    chamber_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
+  }
+
+  void drawCrystal(const FrameContext& frame) {
+    const auto pass = frame.pass("bloom crystal");
+    gpu::Image& lattice = frame.image(lattice_);
+    frame.transition(lattice, gpu::use::FragmentSample);
+    const auto rendering = frame.rendering({{{&frame.target, std::nullopt}}, std::nullopt});
+    const glm::mat4 view = glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    glm::mat4 projection = glm::perspective(kFieldOfViewY, aspect_, 0.05f, 20.0f);
+    projection[1][1] *= -1.0f;  // Vulkan's clip space has y down
+    const float shimmer = detector_.climax() ? 1.0f : 0.0f;
+    const CrystalPush push{projection * view, kEye, float(time_), uint32_t(frame_), uint32_t(settings_.traceSteps),
+                           uint32_t(settings_.samples), shimmer, seed_};
+    crystal_.bind(frame.cmd);
+    crystal_.push(frame.cmd, gpu::Bindings().sampledImage(
+                                 lattice.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+                                 gpu::use::FragmentSample.layout));
+    crystal_.constants(frame.cmd, push);
+    vkCmdDraw(frame.cmd, 36, 1, 0, 0);
+  }
+
+  void detect(const std::array<float, 4>& signal, const std::array<Hysteresis, 4>& bands, double time) {
+    for (const PhaseEvent& event : detector_.observe(signal, bands)) {
+      SceneEvent out{std::string(event.name()), {}};
+      if (event.kind == PhaseEvent::Kind::Vent) out.values.push_back({"from", std::string(event.left())});
+      out.values.push_back({"source", settings_.phaseSource == PhaseSource::Gpu ? "gpu" : "cpu"});
+      events_.emit(time, out);
+    }
+  }
+
+  const gpu::Device& device_;
+  gpu::FrameResources& resources_;
+  SceneEvents events_;
+  gpu::ComputeProgram diffuse_;
+  gpu::ComputeProgram statistics_;
+  gpu::ComputeProgram chamber_;
+  gpu::GraphicsProgram crystal_;
+  gpu::Buffer statsBuffer_;
+  gpu::ReadbackRing statsReadback_;
+  gpu::ImageHandle lattice_;
+  Settings settings_;
+  int builtLattice_ = 0;
+  float builtFill_ = 0.0f;
+  float aspect_ = 16.0f / 9.0f;
+  double time_ = 0.0;
+  uint64_t frame_ = 0;
+  uint32_t seed_ = 0;
+  struct {
+    bool on = false;
+    glm::vec3 voxel{0.0f};
+    float rate = 0.0f;
+  } source_;
+  int stepsPending_ = 0;
+  float stepSeconds_ = 1.0f / 60.0f;
+  float proxy_ = 0.0f;
+  LatticeStats stats_;
+  PhaseDetector detector_;
+  std::deque<Sample> history_;
+};
+
+}  // namespace
+
+const SceneInfo kSceneInfo{"bloom", "The Bloom", 1,
+                           [](const SceneContext& context) -> std::unique_ptr<Scene> {
+                             return std::make_unique<BloomScene>(context);
+                           },
+                           &schema};
+
+}  // namespace vitrine::bloom

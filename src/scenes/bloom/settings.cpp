@@ -1,0 +1,55 @@
+#include "scenes/bloom/settings.h"
+
+namespace vitrine::bloom {
+
+const params::Schema& schema() {
+  using S = Settings;
+  using params::kLogarithmic, params::kRebuilds, params::kTransient;
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<S>();
+    s.add(params::intParam<S>({"lattice", "lattice", "Voxels per side of the vapour lattice.", "vapour", kRebuilds},
+                              &S::lattice, 48, 256));
+    s.add(params::floatParam<S>({"diffusion", "diffusion", "How fast vapour spreads, voxels^2 per second at 96^3 "
+                                 "(scaled with the lattice).", "vapour", kLogarithmic},
+                                &S::diffusion, 0.5, 200.0));
+    s.add(params::floatParam<S>({"decay_rising", "decay rising", "Decay per second while vapour flows in.", "vapour"},
+                                &S::decayRising, 0.0, 2.0));
+    s.add(params::floatParam<S>({"decay_venting", "decay venting", "Decay per second once the cursor leaves.",
+                                 "vapour"},
+                                &S::decayVenting, 0.0, 4.0));
+    s.add(params::floatParam<S>({"source", "source strength", "Concentration per second the hovering cursor "
+                                 "injects at its centre.", "vapour"},
+                                &S::sourceRate, 0.0, 10.0));
+    s.add(params::floatParam<S>({"drag_boost", "drag boost", "Times stronger while the button is held.", "vapour"},
+                                &S::dragBoost, 1.0, 10.0));
+    s.add(params::floatParam<S>({"sigma", "source sigma", "Width of the Gaussian source, voxels at 96^3.", "vapour"},
+                                &S::sigma, 2.0, 60.0));
+    s.add(params::floatParam<S>({"reach", "reach", "The cursor's ray injects within this many crystal radii of "
+                                 "the centre.", "vapour"},
+                                &S::reach, 0.5, 3.0));
+    s.add(params::choiceParam<S>({"phase_source", "phase source", "gpu: the lattice's own statistics; cpu: the "
+                                  "write-up's proxy dV/dt = S - D V.", "phases"},
+                                 &S::phaseSource, {"gpu", "cpu"}));
+    s.add(params::intParam<S>({"trace_steps", "trace steps", "Sphere-trace budget to the crystal's entry.",
+                               "render"},
+                              &S::traceSteps, 8, 128));
+    s.add(params::intParam<S>({"samples", "samples", "Volume samples from entry to exit.", "render"}, &S::samples,
+                              8, 256));
+    s.add(params::floatParam<S>({"volume", "volume", "Master volume.", "sound"}, &S::volume, 0.0, 1.0));
+    s.add(params::boolParam<S>({"mute", "mute", "Silence (M in the gallery).", "sound"}, &S::mute));
+    s.add(params::floatParam<S>({"reverb_wet", "reverb wet", "How far the plate reverb opens at the climax.",
+                                 "sound"},
+                                &S::reverbWet, 0.0, 1.0));
+    s.add(params::floatParam<S>({"fill", "fill", "Restart with the whole crystal at this concentration (tests, "
+                                 "stills).", "actions", kTransient},
+                                &S::fill, 0.0, 1.05));
+    s.add(params::boolParam<S>({"vent", "vent now", "Empty the lattice at once.", "actions", kTransient}, &S::vent));
+    s.preset({"fine", "A 160^3 lattice with more samples.", {{"lattice", "160"}, {"samples", "96"}}});
+    s.preset({"quick", "A 64^3 lattice, fast phases: for slow devices.",
+              {{"lattice", "64"}, {"source", "3"}, {"samples", "40"}}});
+    return s;
+  }();
+  return table;
+}
+
+}  // namespace vitrine::bloom

@@ -1,0 +1,31 @@
+#pragma once
+// Everything the bloom panel, --set and the settings file can change, declared once (params/schema.h),
+// with the write-up's numbers as defaults.
+#include "params/schema.h"
+
+namespace vitrine::bloom {
+
+enum class PhaseSource { Gpu, Cpu };
+
+struct Settings {
+  int lattice = 96;                // voxels per side
+  float diffusion = 30.0f;         // D, voxels^2 / s at 96^3
+  float decayRising = 0.10f;       // per second while vapour flows in
+  float decayVenting = 0.40f;      // per second once it stops
+  float sourceRate = 0.8f;         // concentration per second at the source centre, hovering
+  float dragBoost = 2.5f;          // times the source rate while the button is held
+  float sigma = 20.0f;             // source width, voxels at 96^3
+  float reach = 1.3f;              // the cursor's ray injects within this many crystal radii of the centre
+  PhaseSource phaseSource = PhaseSource::Gpu;
+  int traceSteps = 48;             // sphere-trace budget to the entry
+  int samples = 56;                // volume samples entry to exit
+  float volume = 0.8f;
+  bool mute = false;
+  float reverbWet = 0.28f;         // how far the plate reverb opens at the climax
+  float fill = 0.0f;               // transient: start (or restart) with the crystal at this concentration
+  bool vent = false;               // transient action: empty the lattice now
+};
+
+const params::Schema& schema();
+
+}  // namespace vitrine::bloom
