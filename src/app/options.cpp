@@ -4,6 +4,7 @@
 #include "core/output_path.h"
 #include "scenes/scene.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -89,6 +90,7 @@ const char* usage() {
           [--reset-settings] [--validate]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
+          [--audio-out FILE.wav]
           --out FILE.exr|FILE.png
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
           [--preset [SCENE.]NAME]... --json FILE
@@ -154,6 +156,7 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--preset") options.presets.push_back(parsePreset(value(arg)));
     else if (arg == "--input") options.input = value(arg);
     else if (arg == "--events") options.events = value(arg);
+    else if (arg == "--audio-out") options.audioOut = value(arg);
     else if (arg == "--reset-settings") options.resetSettings = true;
     else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
@@ -179,6 +182,13 @@ Options parseOptions(int argc, const char* const* argv) {
   if (!options.input.empty() && options.mode != Mode::Headless) throw Error("--input is only for --headless runs.");
   if (!options.events.empty() && options.mode != Mode::Headless) throw Error("--events is only for --headless runs.");
   if (!options.events.empty()) checkWritable(options.events);
+  if (!options.audioOut.empty()) {
+    if (options.mode != Mode::Headless) throw Error("--audio-out is only for --headless runs.");
+    std::string ext = std::filesystem::path(options.audioOut).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".wav") throw Error(fmt::format("--audio-out writes WAV: name it FILE.wav, not '{}'.", options.audioOut));
+    checkWritable(options.audioOut);
+  }
   if (options.mode == Mode::Gallery && options.size &&
       (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
     throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",

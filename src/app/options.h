@@ -42,6 +42,7 @@ struct Options {
   std::string input;                 // --input FILE (headless): scripted input
   std::string events;                // --events FILE (headless): the scene's events, as JSON lines
   bool resetSettings = false;        // --reset-settings (gallery)
+  std::string audioOut;              // --audio-out FILE.wav (headless): the run's sound, offline
 };
 
 Options parseOptions(int argc, const char* const* argv);

@@ -199,3 +199,18 @@ TEST(OptionsGallery, ResetSettings) {
 
 }  // namespace
 }  // namespace vitrine
+
+namespace vitrine {
+namespace {
+
+TEST(OptionsAudio, AudioOutIsAHeadlessWavFile) {
+  const char* ok[] = {"vitrine", "--headless", "--scene", "bloom", "--out", "/tmp/a.exr", "--audio-out", "/tmp/a.wav"};
+  EXPECT_EQ(parseOptions(8, ok).audioOut, "/tmp/a.wav");
+  const char* notWav[] = {"vitrine", "--headless", "--scene", "bloom", "--out", "/tmp/a.exr", "--audio-out", "/tmp/a.mp3"};
+  EXPECT_THROW(parseOptions(8, notWav), Error);
+  const char* gallery[] = {"vitrine", "--audio-out", "/tmp/a.wav"};
+  EXPECT_THROW(parseOptions(3, gallery), Error);
+}
+
+}  // namespace
+}  // namespace vitrine
