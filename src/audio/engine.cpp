@@ -1,0 +1,276 @@
+#include "audio/engine.h"
+
+#include <RtAudio.h>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "core/error.h"
+
+namespace vitrine::audio {
+
+int64_t sampleTime(double seconds) { return std::isfinite(seconds) ? toSamples(seconds) : kAsSoonAsPossible; }
+
+// --- Synth ---
+
+Synth::Synth(int64_t firstSample, uint32_t reverbSeed) : reverb_(plateImpulse(reverbSeed)), now_(firstSample) {}
+
+void Synth::render(float* out, size_t frames) {
+  while (frames > 0) {
+    // Everything due by this sample applies before it is rendered; late commands apply now.
+    const Command* next = queue_.front();
+    while (next && next->sample <= now_) {
+      apply(*next);
+      queue_.pop();
+      next = queue_.front();
+    }
+    // Render up to the next command's sample, so it lands exactly there even mid-block.
+    size_t span = frames;
+    if (next) span = size_t(std::min<int64_t>(int64_t(frames), next->sample - now_));
+    renderSpan(out, span);
+    out += 2 * span;
+    frames -= span;
+    now_ += int64_t(span);
+  }
+}
+
+void Synth::renderSpan(float* out, size_t frames) {
+  for (size_t i = 0; i < frames; ++i) {
+    float dry = drone_.next();
+    for (BellVoice& voice : voices_)
+      if (voice.active()) dry += voice.next();
+    // The convolver runs even while the mix is dry, so the plate opens on a full tail.
+    const float reverberated = reverb_.process(dry);
+    const float wet = wet_.next();
+    const float mixed = (1.0f - wet) * dry + wet * reverberated;
+    const float sample = limiter_.process(mixed * volume_.next() * unmuted_.next());
+    out[2 * i] = sample;
+    out[2 * i + 1] = sample;
+  }
+}
+
+void Synth::apply(const Command& command) {
+  switch (command.kind) {
+    case Command::Kind::Bell:
+      startBell(command.value, kBellLevel, kBellPartials);
+      break;
+    case Command::Kind::Climax:
+      for (float hz : kClimaxChordHz) startBell(hz, kClimaxLevel, kClimaxPartials);
+      wet_.climax();
+      break;
+    case Command::Kind::Drone:
+      drone_.setOn(command.value != 0.0f);
+      break;
+    case Command::Kind::Volume:
+      if (std::isfinite(command.value)) volume_.set(std::clamp(command.value, 0.0f, 1.0f), kLevelGlide);
+      break;
+    case Command::Kind::Mute:
+      unmuted_.set(command.value != 0.0f ? 0.0f : 1.0f, kLevelGlide);
+      break;
+    case Command::Kind::ReverbWet:
+      wet_.setOverride(std::isnan(command.value) ? std::nullopt : std::optional<float>(command.value));
+      break;
+  }
+}
+
+void Synth::startBell(float hz, float level, std::span<const Partial> partials) {
+  if (!(hz > 0.0f && hz < kSampleRate / 2.0f)) return;  // NaN included: nothing sensible to ring
+  BellVoice* voice = &voices_[0];
+  for (BellVoice& candidate : voices_) {
+    if (!candidate.active()) {
+      voice = &candidate;
+      break;
+    }
+    // The oldest has decayed furthest, so cutting it off is the least audible.
+    if (candidate.started() < voice->started()) voice = &candidate;
+  }
+  voice->start(hz, level, partials, now_);
+}
+
+size_t Synth::ringing() const {
+  return size_t(std::count_if(voices_.begin(), voices_.end(), [](const BellVoice& v) { return v.active(); }));
+}
+
+// --- AudioOutput ---
+
+namespace {
+
+int playCallback(void* output, void*, unsigned int frames, double, RtAudioStreamStatus, void* synth) {
+  static_cast<Synth*>(synth)->render(static_cast<float*>(output), frames);
+  return 0;
+}
+
+// RtAudio 5.2 reports trouble with a running stream (a device unplugged, a sound server gone) on
+// its own thread; with no error callback it would throw there and end the program.
+void streamError(RtAudioError::Type type, const std::string& message) {
+  if (type == RtAudioError::WARNING || type == RtAudioError::DEBUG_WARNING) return;
+  static std::atomic_flag told;
+  if (!told.test_and_set()) std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
+}
+
+// ALSA, PulseAudio and RtAudio print each probing failure straight to stderr: over thirty lines
+// on a machine without sound. The one warning AudioOutput prints says what a user needs, so the
+// probe runs with stderr pointed at /dev/null.
+class HiddenStderr {
+ public:
+  HiddenStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(STDERR_FILENO);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+  }
+  ~HiddenStderr() {
+    std::cerr.flush();
+    std::fflush(stderr);
+    if (saved_ < 0) return;
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+  }
+  HiddenStderr(const HiddenStderr&) = delete;
+  HiddenStderr& operator=(const HiddenStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+std::string trimmed(std::string text) {
+  const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
+  text.erase(text.begin(), std::find_if_not(text.begin(), text.end(), blank));
+  text.erase(std::find_if_not(text.rbegin(), text.rend(), blank).base(), text.end());
+  return text;
+}
+
+}  // namespace
+
+AudioOutput::AudioOutput() : AudioOutput(Options{}) {}
+
+AudioOutput::AudioOutput(Options options) {
+  const std::string reason = options.useDevice ? open(options) : "not asked to open one";
+  if (!reason.empty()) std::fprintf(stderr, "vitrine: no audio device (%s): running silent\n", reason.c_str());
+}
+
+std::string AudioOutput::open(const Options& options) {
+  auto synth = std::make_unique<Synth>();
+  try {
+    HiddenStderr hidden;
+    auto device = std::make_unique<RtAudio>();
+    device->showWarnings(false);
+    if (device->getDeviceCount() == 0) return "none found";
+    RtAudio::StreamParameters output;
+    output.deviceId = device->getDefaultOutputDevice();
+    output.nChannels = 2;
+    RtAudio::StreamOptions streamOptions;
+    streamOptions.streamName = "Vitrine";
+    unsigned int frames = options.bufferFrames;
+    device->openStream(&output, nullptr, RTAUDIO_FLOAT32, kSampleRate, &frames, &playCallback, synth.get(),
+                       &streamOptions, &streamError);
+    device->startStream();
+    if (!device->isStreamRunning()) return "the stream did not start";
+    synth_ = std::move(synth);
+    device_ = std::move(device);
+    return {};
+  } catch (const RtAudioError& e) {
+    return trimmed(e.getMessage());
+  } catch (const std::exception& e) {
+    return trimmed(e.what());
+  }
+}
+
+AudioOutput::~AudioOutput() {
+  if (!device_) return;
+  try {
+    if (device_->isStreamRunning()) device_->abortStream();  // no need to play out what is queued
+    if (device_->isStreamOpen()) device_->closeStream();
+  } catch (const RtAudioError&) {
+    // Closing a stream that failed: nothing left to do about it.
+  }
+}
+
+void AudioOutput::pause() {
+  if (!device_ || paused_) return;
+  paused_ = true;
+  try {
+    device_->stopStream();
+  } catch (const RtAudioError& e) {
+    streamError(RtAudioError::SYSTEM_ERROR, e.getMessage());
+  }
+}
+
+void AudioOutput::resume() {
+  if (!device_ || !paused_) return;
+  paused_ = false;
+  try {
+    device_->startStream();
+  } catch (const RtAudioError& e) {
+    streamError(RtAudioError::SYSTEM_ERROR, e.getMessage());
+  }
+}
+
+void AudioOutput::setMuted(bool muted) {
+  muted_ = muted;
+  post(Command::Kind::Mute, muted ? 1.0f : 0.0f);
+}
+
+void AudioOutput::setVolume(float gain) { post(Command::Kind::Volume, gain); }
+
+void AudioOutput::bell(double, float hz) { post(Command::Kind::Bell, hz); }
+void AudioOutput::climax(double) { post(Command::Kind::Climax, 0.0f); }
+void AudioOutput::drone(double, bool on) { post(Command::Kind::Drone, on ? 1.0f : 0.0f); }
+void AudioOutput::reverb(double, std::optional<float> wet) { post(Command::Kind::ReverbWet, wet.value_or(NAN)); }
+
+void AudioOutput::post(Command::Kind kind, float value) {
+  // A full queue means the callback has not run for 1024 commands (a paused stream): dropping a
+  // sound then is better than blocking the frame loop.
+  if (synth_) synth_->post({kind, kAsSoonAsPossible, value});
+}
+
+// --- OfflineAudio ---
+
+OfflineAudio::OfflineAudio(double startTime, uint32_t reverbSeed)
+    : firstSample_(std::isfinite(startTime) ? toSamples(startTime) : 0), reverbSeed_(reverbSeed) {}
+
+void OfflineAudio::bell(double time, float hz) { add(Command::Kind::Bell, time, hz); }
+void OfflineAudio::climax(double time) { add(Command::Kind::Climax, time, 0.0f); }
+void OfflineAudio::drone(double time, bool on) { add(Command::Kind::Drone, time, on ? 1.0f : 0.0f); }
+void OfflineAudio::reverb(double time, std::optional<float> wet) {
+  add(Command::Kind::ReverbWet, time, wet.value_or(NAN));
+}
+void OfflineAudio::volume(double time, float gain) { add(Command::Kind::Volume, time, gain); }
+
+void OfflineAudio::add(Command::Kind kind, double time, float value) { post({kind, sampleTime(time), value}); }
+
+void OfflineAudio::post(const Command& command) { commands_.push_back(command); }
+
+std::vector<float> OfflineAudio::render(double seconds) const {
+  if (!std::isfinite(seconds) || seconds < 0.0)
+    throw Error(fmt::format("Cannot render {} seconds of sound: the length must be a finite number from 0", seconds));
+  const int64_t frames = toSamples(seconds), end = firstSample_ + frames;
+  std::vector<float> out(size_t(frames) * 2);
+
+  // The synth wants its commands in order of time; scenes may interleave sources, so sort (stably:
+  // two commands for one sample keep the order they were given in).
+  std::vector<Command> commands = commands_;
+  std::stable_sort(commands.begin(), commands.end(),
+                   [](const Command& a, const Command& b) { return a.sample < b.sample; });
+  auto synth = std::make_unique<Synth>(firstSample_, reverbSeed_);
+  size_t next = 0;
+  while (synth->now() < end) {
+    int64_t blockEnd = std::min(synth->now() + 4096, end);
+    while (next < commands.size() && commands[next].sample < blockEnd && synth->post(commands[next])) ++next;
+    // A full queue (over a thousand commands in one block): render up to the first that did not fit.
+    if (next < commands.size() && commands[next].sample < blockEnd)
+      blockEnd = std::max(commands[next].sample, synth->now() + 1);
+    synth->render(out.data() + 2 * (synth->now() - firstSample_), size_t(blockEnd - synth->now()));
+  }
+  return out;
+}
+
+}  // namespace vitrine::audio

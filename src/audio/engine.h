@@ -1,0 +1,144 @@
+#pragma once
+// The sound engine. A Synth renders stereo blocks on the audio thread from commands that the frame
+// loop posts through a lock-free queue; AudioOutput plays one on the default device (or stays
+// silent when there is none), OfflineAudio renders a run sample-exactly for --audio-out.
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "audio/audio_sink.h"
+#include "audio/spsc_queue.h"
+#include "audio/synth.h"
+
+class RtAudio;
+
+namespace vitrine::audio {
+
+// A command's time for "as soon as possible": before any sample, so it applies at the start of
+// the next block rendered.
+inline constexpr int64_t kAsSoonAsPossible = std::numeric_limits<int64_t>::min();
+
+// Sample time for simulation seconds (seconds x 48000, rounded); a non-finite time means "as soon
+// as possible".
+int64_t sampleTime(double seconds);
+
+struct Command {
+  enum class Kind : uint8_t { Bell, Climax, Drone, Volume, Mute, ReverbWet };
+  Kind kind = Kind::Bell;
+  int64_t sample = kAsSoonAsPossible;  // applies before this sample is rendered
+  // Bell: pitch in Hz. Drone, Mute: 1 on, 0 off. Volume: master gain 0..1.
+  // ReverbWet: a fixed wet amount 0..1, or NaN to give the wet back to the climax automation.
+  float value = 0.0f;
+};
+
+// Renders the mix: drone + bell voices -> plate reverb (wet/dry crossfade:
+// (1 - wet) x dry + wet x reverb) -> master volume and mute -> limiter; mono, written to both
+// channels. Commands are posted by one producer thread and applied by render() at their exact
+// sample, also in the middle of a block. Commands must be posted in order of time (the frame loop
+// does): render() looks only at the oldest, so an earlier time behind a later one waits for it.
+class Synth {
+ public:
+  static constexpr size_t kQueueCapacity = 1024;
+  static constexpr size_t kVoices = 16;  // bells ringing at once; a seventeenth steals the oldest
+
+  explicit Synth(int64_t firstSample = 0, uint32_t reverbSeed = kPlateSeed);
+
+  // Producer side (one thread). False when the queue is full and the command was dropped.
+  bool post(const Command& command) { return queue_.push(command); }
+
+  // Consumer side (the audio thread): exactly `frames` interleaved stereo frames. Never locks,
+  // waits or allocates.
+  void render(float* interleavedStereo, size_t frames);
+
+  // Consumer-side state, for tests and offline use on the rendering thread.
+  int64_t now() const { return now_; }  // the sample render() produces next
+  float wet() const { return wet_.value(); }
+  size_t ringing() const;  // active bell voices
+
+ private:
+  void apply(const Command& command);
+  void startBell(float hz, float level, std::span<const Partial> partials);
+  void renderSpan(float* out, size_t frames);
+
+  SpscQueue<Command, kQueueCapacity> queue_;
+  Drone drone_;
+  std::array<BellVoice, kVoices> voices_;
+  PartitionedConvolver reverb_;
+  WetEnvelope wet_;
+  Ramp volume_{1.0f}, unmuted_{1.0f};
+  Limiter limiter_;
+  int64_t now_;
+};
+
+// Plays a Synth on the default output device through RtAudio, 48 kHz stereo float. Without a
+// device (none found, none opens) it prints one warning, "vitrine: no audio device (REASON):
+// running silent", and every call is a no-op; it never throws for want of sound. Use from one
+// thread (the frame loop). Scene calls ignore their time and play as soon as possible.
+class AudioOutput final : public AudioSink {
+ public:
+  struct Options {
+    bool useDevice = true;        // false: behave exactly as on a machine with no device
+    unsigned bufferFrames = 512;  // 10.7 ms per callback; the device may choose another size
+  };
+  AudioOutput();
+  explicit AudioOutput(Options options);
+  ~AudioOutput() override;
+  AudioOutput(const AudioOutput&) = delete;
+  AudioOutput& operator=(const AudioOutput&) = delete;
+
+  bool silent() const { return !device_; }
+  // Stops and restarts the stream (the gallery while minimised): no callbacks, no CPU.
+  void pause();
+  void resume();
+  bool paused() const { return paused_; }
+  // Glide to silence and back over 20 ms.
+  void setMuted(bool muted);
+  bool muted() const { return muted_; }
+  void setVolume(float gain);
+
+  void bell(double time, float hz) override;
+  void climax(double time) override;
+  void drone(double time, bool on) override;
+  void reverb(double time, std::optional<float> wet) override;
+
+ private:
+  std::string open(const Options& options);  // the reason it failed, or empty
+  void post(Command::Kind kind, float value);
+
+  // Member order matters: the device's callback renders the synth, so the device goes first.
+  std::unique_ptr<Synth> synth_;
+  std::unique_ptr<RtAudio> device_;
+  bool paused_ = false, muted_ = false;
+};
+
+// Collects a run's commands with their simulation times and renders it afterwards, each command
+// at its exact sample: the sound of a headless run, for --audio-out.
+class OfflineAudio final : public AudioSink {
+ public:
+  // `startTime`: the simulation time of the first sample (the run's --time).
+  explicit OfflineAudio(double startTime = 0.0, uint32_t reverbSeed = kPlateSeed);
+
+  void bell(double time, float hz) override;
+  void climax(double time) override;
+  void drone(double time, bool on) override;
+  void reverb(double time, std::optional<float> wet) override;
+  void volume(double time, float gain);
+  // Any command, already stamped with its sample time.
+  void post(const Command& command);
+
+  // The run's sound from startTime: exactly round(seconds x 48000) interleaved stereo frames.
+  // Commands before startTime apply at its first sample, those after the end are left out.
+  // Renders afresh each call. Throws vitrine::Error for a negative or non-finite length.
+  std::vector<float> render(double seconds) const;
+
+ private:
+  void add(Command::Kind kind, double time, float value);
+  int64_t firstSample_;
+  uint32_t reverbSeed_;
+  std::vector<Command> commands_;
+};
+
+}  // namespace vitrine::audio
