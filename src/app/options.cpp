@@ -98,7 +98,8 @@ const char* usage() {
   vitrine --list-params [SCENE]
   vitrine --list-devices | --list-scenes | --help | --version
 
-Gallery keys: 1-9 switch scene, Tab hides the UI, V toggles vsync, F11 fullscreen, F12 screenshot, Esc quits.
+Gallery keys: 1-9 switch scene, Tab hides the UI, V toggles vsync, M mutes, F11 fullscreen, F12 screenshot,
+Esc quits.
 Headless frame k shows time SECONDS + k/60; the last frame is written.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.

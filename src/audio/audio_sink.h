@@ -17,8 +17,10 @@ class AudioSink {
   virtual ~AudioSink() = default;
   // One bell at `hz`: 3 ms attack, 1.8 s decay to -60 dB.
   virtual void bell(double time, float hz) = 0;
-  // The four-bell climax chord; opens the plate reverb to 0.28 wet for six seconds.
-  virtual void climax(double time) = 0;
+  // The four-bell climax chord; opens the plate reverb to `wet` (the write-up's 0.28) for six seconds.
+  virtual void climax(double time, float wet) = 0;
+  // Master gain, 0 (silent) .. 1, gliding over 20 ms.
+  virtual void volume(double time, float gain) = 0;
   // The 55 Hz drone, faded in or out over half a second. It starts off.
   virtual void drone(double time, bool on) = 0;
   // Fixes the reverb's wet amount (0 dry .. 1 all reverb), or with nullopt hands it back to the
@@ -30,7 +32,8 @@ class AudioSink {
 class SilentAudio final : public AudioSink {
  public:
   void bell(double, float) override {}
-  void climax(double) override {}
+  void climax(double, float) override {}
+  void volume(double, float) override {}
   void drone(double, bool) override {}
   void reverb(double, std::optional<float>) override {}
 };

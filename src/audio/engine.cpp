@@ -63,7 +63,7 @@ void Synth::apply(const Command& command) {
       break;
     case Command::Kind::Climax:
       for (float hz : kClimaxChordHz) startBell(hz, kClimaxLevel, kClimaxPartials);
-      wet_.climax();
+      wet_.climax(command.value);
       break;
     case Command::Kind::Drone:
       drone_.setOn(command.value != 0.0f);
@@ -222,7 +222,8 @@ void AudioOutput::setMuted(bool muted) {
 void AudioOutput::setVolume(float gain) { post(Command::Kind::Volume, gain); }
 
 void AudioOutput::bell(double, float hz) { post(Command::Kind::Bell, hz); }
-void AudioOutput::climax(double) { post(Command::Kind::Climax, 0.0f); }
+void AudioOutput::climax(double, float wet) { post(Command::Kind::Climax, wet); }
+void AudioOutput::volume(double, float gain) { setVolume(gain); }
 void AudioOutput::drone(double, bool on) { post(Command::Kind::Drone, on ? 1.0f : 0.0f); }
 void AudioOutput::reverb(double, std::optional<float> wet) { post(Command::Kind::ReverbWet, wet.value_or(NAN)); }
 
@@ -238,7 +239,7 @@ OfflineAudio::OfflineAudio(double startTime, uint32_t reverbSeed)
     : firstSample_(std::isfinite(startTime) ? toSamples(startTime) : 0), reverbSeed_(reverbSeed) {}
 
 void OfflineAudio::bell(double time, float hz) { add(Command::Kind::Bell, time, hz); }
-void OfflineAudio::climax(double time) { add(Command::Kind::Climax, time, 0.0f); }
+void OfflineAudio::climax(double time, float wet) { add(Command::Kind::Climax, time, wet); }
 void OfflineAudio::drone(double time, bool on) { add(Command::Kind::Drone, time, on ? 1.0f : 0.0f); }
 void OfflineAudio::reverb(double time, std::optional<float> wet) {
   add(Command::Kind::ReverbWet, time, wet.value_or(NAN));

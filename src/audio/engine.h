@@ -100,7 +100,8 @@ class AudioOutput final : public AudioSink {
   void setVolume(float gain);
 
   void bell(double time, float hz) override;
-  void climax(double time) override;
+  void climax(double time, float wet) override;
+  void volume(double time, float gain) override;
   void drone(double time, bool on) override;
   void reverb(double time, std::optional<float> wet) override;
 
@@ -122,10 +123,10 @@ class OfflineAudio final : public AudioSink {
   explicit OfflineAudio(double startTime = 0.0, uint32_t reverbSeed = kPlateSeed);
 
   void bell(double time, float hz) override;
-  void climax(double time) override;
+  void climax(double time, float wet) override;
   void drone(double time, bool on) override;
   void reverb(double time, std::optional<float> wet) override;
-  void volume(double time, float gain);
+  void volume(double time, float gain) override;
   // Any command, already stamped with its sample time.
   void post(const Command& command);
 

@@ -223,9 +223,10 @@ void PartitionedConvolver::processBlock() {
 
 // --- Wet envelope ---
 
-void WetEnvelope::climax() {
+void WetEnvelope::climax(float wet) {
+  climaxWet_ = std::clamp(wet, 0.0f, 1.0f);
   holdLeft_ = toSamples(kWetRamp + kWetHold);
-  if (!override_) ramp_.set(kClimaxWet, kWetRamp);
+  if (!override_) ramp_.set(climaxWet_, kWetRamp);
 }
 
 void WetEnvelope::setOverride(std::optional<float> wet) {

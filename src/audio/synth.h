@@ -170,13 +170,14 @@ class PartitionedConvolver {
 // the amount (ramping to it) until cleared; the climax timing keeps counting underneath.
 class WetEnvelope {
  public:
-  void climax();
+  void climax(float wet = kClimaxWet);
   void setOverride(std::optional<float> wet);
   float next();
   float value() const { return ramp_.value(); }
 
  private:
-  float automaticTarget() const { return holdLeft_ > 0 ? kClimaxWet : 0.0f; }
+  float automaticTarget() const { return holdLeft_ > 0 ? climaxWet_ : 0.0f; }
+  float climaxWet_ = kClimaxWet;
   Ramp ramp_;
   int64_t holdLeft_ = 0;  // samples until the automatic wet closes
   std::optional<float> override_;

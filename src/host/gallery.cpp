@@ -11,6 +11,7 @@
 
 #include "gpu/check.h"
 #include "core/assets.h"
+#include "audio/engine.h"
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
@@ -93,6 +94,7 @@ class Gallery {
   gpu::Device device_;
   gpu::ProgramLibrary programs_;
   GallerySettings settings_;
+  audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
   SceneRenderer renderer_;
   Swapchain swapchain_;
   Overlay overlay_;
@@ -135,6 +137,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       steps_(input_.dt, kMaxCatchUpSteps),
       vsync_(options.vsync) {
   overlay_.attach(swapchain_);
+  renderer_.setAudioSink(&audio_);
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
@@ -169,7 +172,9 @@ int Gallery::run() {
   while (!window_.shouldClose()) {
     window_.pollEvents();
     if (window_.hidden()) {
+      audio_.pause();  // minimised: no drone playing to nobody
       window_.waitWhileHidden();
+      audio_.resume();
       lastFrame_ = Clock::now();  // time spent minimised is not simulated
       continue;
     }
@@ -196,6 +201,9 @@ void Gallery::handleKeys() {
         break;
       case GLFW_KEY_TAB:
         uiHidden_ = !uiHidden_;
+        break;
+      case GLFW_KEY_M:
+        audio_.setMuted(!audio_.muted());
         break;
       case GLFW_KEY_V:
         vsync_ = !vsync_;

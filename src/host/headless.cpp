@@ -1,6 +1,8 @@
 #include "gpu/check.h"
 #include "image/image_io.h"
 #include "image/image_compare.h"
+#include "audio/engine.h"
+#include "audio/wav.h"
 #include "host/event_log.h"
 #include "host/input_script.h"
 #include "host/modes.h"
@@ -26,6 +28,8 @@ int runHeadless(const Options& options) {
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);
+  std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
+  if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
   {
     Offscreen offscreen(device, config);
@@ -37,6 +41,7 @@ int runHeadless(const Options& options) {
   }
   writeImage(out, image);
   if (events) events->close();
+  if (sound) audio::writeWav(options.audioOut, sound->render(double(options.frames) / 60.0));
   std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
               image.height, options.scene.c_str(), options.frames, options.time, options.seed,
               device.properties().deviceName);

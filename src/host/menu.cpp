@@ -70,7 +70,7 @@ MenuChoice drawMenu(const MenuState& state) {
       ImGui::PopStyleColor();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("1-9 scene  Tab hide UI  F11 fullscreen  F12 screenshot  Esc quit");
+    ImGui::TextDisabled("1-9 scene  Tab hide UI  M mute  F11 fullscreen  F12 screenshot  Esc quit");
   }
   ImGui::End();
   return choice;

@@ -20,6 +20,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
   renderer_.setEventSink(config.events);
+  renderer_.setAudioSink(config.audio);
   renderer_.setScene(*info);
   if (config.input) player_.emplace(*config.input);
   for (const std::string& preset : config.presets)

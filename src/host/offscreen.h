@@ -23,6 +23,7 @@ struct OffscreenConfig {
   params::KeyValues parameters;      // applied together after the presets
   std::optional<InputScript> input;  // --input: the cursor and keys, as a person would use them
   EventSink* events = nullptr;       // --events: where the scene's events go
+  audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
 };
 
 struct FrameTimes {

@@ -42,6 +42,8 @@ class SceneRenderer {
   const SceneInfo& info() const { return *info_; }
   // Where scenes created from now on report their events (null: nowhere).
   void setEventSink(EventSink* sink) { events_ = sink; }
+  // Where scenes created from now on play their sound (null: silence). It must outlive this renderer.
+  void setAudioSink(audio::AudioSink* sink) { audio_ = sink ? sink : &silence_; }
   gpu::PassTimer& timer() { return timer_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst);
@@ -60,6 +62,8 @@ class SceneRenderer {
   gpu::ComputeProgram present_;
   const SceneInfo* info_ = nullptr;
   EventSink* events_ = nullptr;
+  audio::SilentAudio silence_;
+  audio::AudioSink* audio_ = &silence_;
   std::unique_ptr<gpu::FrameResources> resources_;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;

@@ -9,6 +9,7 @@
 #include "gpu/rendering.h"
 #include "gpu/stream.h"
 #include "params/schema.h"
+#include "audio/audio_sink.h"
 #include "scenes/scene_events.h"
 
 #include <glm/vec2.hpp>
@@ -75,6 +76,7 @@ struct SceneContext {
   gpu::FrameResources& resources;  // declare images here; the host owns and resizes them
   const Assets& assets;            // fonts, panoramas, files named on the command line
   SceneEvents events;              // what happened, for tests and recordings (--events)
+  audio::AudioSink& audio;         // the sound device, a WAV being rendered (--audio-out), or silence
   uint32_t framesInFlight = 1;
 };
 

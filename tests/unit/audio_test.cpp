@@ -389,7 +389,7 @@ TEST(AudioEngine, BlockSizesDoNotChangeTheSound) {
   OfflineAudio offline;
   offline.drone(0.0, true);
   offline.bell(0.25, kE4);
-  offline.climax(0.5004);
+  offline.climax(0.5004, kClimaxWet);
   offline.bell(0.7, kE5);
   const auto expected = offline.render(1.5);
 
@@ -549,7 +549,7 @@ TEST(AudioOutputDevice, WithoutADeviceWarnsOnceAndRunsSilent) {
     AudioOutput output(AudioOutput::Options{.useDevice = false});
     EXPECT_TRUE(output.silent());
     output.bell(0.0, kE4);
-    output.climax(0.0);
+    output.climax(0.0, kClimaxWet);
     output.drone(0.0, true);
     output.reverb(0.0, 0.5f);
     output.setVolume(0.5f);

@@ -76,6 +76,7 @@ class BloomScene final : public Scene {
       : device_(context.device),
         resources_(context.resources),
         events_(context.events),
+        audio_(context.audio),
         diffuse_(context.programs, "bloom/diffuse.comp",
                  {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(DiffusePush)}),
         statistics_(context.programs, "bloom/stats.comp",
@@ -94,11 +95,16 @@ class BloomScene final : public Scene {
     lattice_ = resources_.declare(latticeDecl(settings_.lattice, 0.0f));
     builtLattice_ = settings_.lattice;
   }
+  ~BloomScene() override { audio_.drone(time_, false); }
 
   void resize(VkExtent2D target) override { aspect_ = float(target.width) / float(std::max(target.height, 1u)); }
 
   void update(const FrameInput& input) override {
     time_ = input.time;
+    // The drone is always under the piece; the panel's volume and mute reach the mix as they change.
+    if (!droning_) audio_.drone(time_, droning_ = true);
+    const float gain = settings_.mute ? 0.0f : settings_.volume;
+    if (gain != appliedGain_) audio_.volume(time_, appliedGain_ = gain);
     frame_ = input.frame;
     seed_ = input.seed;
     // The cursor's ray, unprojected into the crystal's space, is the vapour source near the crystal.
@@ -270,12 +276,29 @@ class BloomScene final : public Scene {
       if (event.kind == PhaseEvent::Kind::Vent) out.values.push_back({"from", std::string(event.left())});
       out.values.push_back({"source", settings_.phaseSource == PhaseSource::Gpu ? "gpu" : "cpu"});
       events_.emit(time, out);
+      sound(event, time);
+    }
+  }
+
+  // A bell for every flip, rising E4 -> B4 -> E5 through amber, rose and crimson and the same notes
+  // falling as it vents; the climax chord opens the plate reverb.
+  void sound(const PhaseEvent& event, double time) {
+    static constexpr float kNotes[4] = {0.0f, audio::kE4, audio::kB4, audio::kE5};
+    switch (event.kind) {
+      case PhaseEvent::Kind::Up: audio_.bell(time, kNotes[size_t(event.phase)]); break;
+      case PhaseEvent::Kind::Climax: audio_.climax(time, settings_.reverbWet); break;
+      case PhaseEvent::Kind::Vent:
+        if (!event.fromClimax) audio_.bell(time, kNotes[size_t(event.phase)]);
+        break;
     }
   }
 
   const gpu::Device& device_;
   gpu::FrameResources& resources_;
   SceneEvents events_;
+  audio::AudioSink& audio_;
+  bool droning_ = false;
+  float appliedGain_ = -1.0f;
   gpu::ComputeProgram diffuse_;
   gpu::ComputeProgram statistics_;
   gpu::ComputeProgram chamber_;
