@@ -308,6 +308,14 @@ TEST_F(Text, TruncatedFontIsReportedNotACrash) {
   }
   EXPECT_EQ(Font::load(text).problem(), text.string() + ": unknown file format; using DejaVu Serif (" +
                                             kDejaVu.string() + ")");
+  // A fetched WOFF2 cut short, where there is one.
+  if (const auto italic = Assets::locate().font("FrauncesItalic")) {
+    const std::string woff2 = readAll(*italic);
+    const auto cut = write("FrauncesItalic.woff2", woff2.substr(0, woff2.size() / 2));
+    const Font font = Font::load(cut);
+    EXPECT_TRUE(font.isFallback());
+    EXPECT_EQ(font.problem().rfind(cut.string() + ": ", 0), 0u) << font.problem();
+  }
 
   // A fetched font cut short is reported through the assets, once, for the gallery to list.
   std::filesystem::create_directories(folder_ / "fonts");
