@@ -143,7 +143,7 @@ class GlyphAtlas {
   uint32_t height() const { return options_.height; }
   std::span<const uint8_t> texels() const { return texels_; }  // width * height, top row first
   size_t glyphCount() const { return glyphs_.size(); }
-  uint64_t revision() const { return revision_; }  // changes whenever a glyph is added
+  uint64_t revision() const { return revision_; }  // changes whenever texels are added
   float reachEm() const { return float(options_.spreadPx) / float(options_.pxPerEm); }
   // Signed distance in em (positive inside) held by a sampled texel value 0..1.
   float distanceEm(float value) const { return (value * 255.0f - 128.0f) / 128.0f * reachEm(); }
