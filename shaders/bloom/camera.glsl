@@ -1,6 +1,6 @@
 // The fixed camera of the bloom chamber; mirrors cameraRay in src/scenes/bloom/bloom_math.h.
 const vec3 kEye = vec3(0.0, 0.2, 3.0);
-const float kFieldOfViewY = 0.62;
+const float kFieldOfViewY = 0.75;
 
 vec3 cameraDirection(vec2 uv, float aspect) {  // uv: 0..1, origin top-left
   const vec3 forward = normalize(-kEye);

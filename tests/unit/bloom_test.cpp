@@ -101,6 +101,11 @@ TEST(BloomCursor, TheCentreOfTheViewPointsAtTheCrystal) {
   const CursorVapour corner = cursorVapour(cameraRay(0.02f, 0.02f, 16.0f / 9.0f));
   EXPECT_GT(corner.distance, 1.3f * kCrystalRadius) << "a corner of the view is out of reach";
   EXPECT_EQ(worldToVoxel(glm::vec3(0.0f), 96), glm::vec3(48.0f));
+  // Projection is the inverse of the camera ray: a point along a pixel's ray shows at that pixel.
+  const Ray ray = cameraRay(0.3f, 0.7f, 1.5f);
+  const glm::vec2 back = projectToView(ray.origin + ray.direction * 2.5f, 1.5f);
+  EXPECT_NEAR(back.x, 0.3f, 1e-5f);
+  EXPECT_NEAR(back.y, 0.7f, 1e-5f);
   EXPECT_EQ(worldToVoxel(glm::vec3(5.0f), 96), glm::vec3(96.0f)) << "clamped into the lattice";
 }
 

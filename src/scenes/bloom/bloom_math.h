@@ -4,6 +4,7 @@
 // reference of diffuse.comp), the stability bound that fixes the number of sub-steps, the phase
 // colours, the cursor's ray into the crystal, the CPU proxy of the seed, and the phase detector.
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -123,7 +124,7 @@ inline glm::vec3 phaseColour(float v) {
 
 // ------------------------------------------------------------------------------------ the camera
 inline constexpr glm::vec3 kEye{0.0f, 0.2f, 3.0f};
-inline constexpr float kFieldOfViewY = 0.62f;  // radians
+inline constexpr float kFieldOfViewY = 0.75f;  // radians: room above the crystal for its words
 
 struct Ray {
   glm::vec3 origin, direction;
@@ -136,6 +137,17 @@ inline Ray cameraRay(float u, float v, float aspect) {
   const float h = std::tan(kFieldOfViewY * 0.5f);
   const glm::vec3 d = forward + right * ((u * 2.0f - 1.0f) * h * aspect) + up * ((1.0f - v * 2.0f) * h);
   return {kEye, glm::normalize(d)};
+}
+
+// Where a world point shows, normalised 0..1 with the origin top-left (the inverse of cameraRay).
+inline glm::vec2 projectToView(glm::vec3 world, float aspect) {
+  const glm::vec3 forward = glm::normalize(-kEye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float h = std::tan(kFieldOfViewY * 0.5f);
+  const glm::vec3 d = world - kEye;
+  const float depth = glm::dot(d, forward);
+  return {(glm::dot(d, right) / depth / (h * aspect) + 1.0f) * 0.5f, (1.0f - glm::dot(d, up) / depth / h) * 0.5f};
 }
 
 // Where the cursor puts the vapour: the point of its ray nearest the crystal's centre, and how far

@@ -9,6 +9,7 @@
 #include "gpu/readback_ring.h"
 #include "scenes/bloom/bloom_math.h"
 #include "scenes/bloom/settings.h"
+#include "text/text_pass.h"
 
 #include <Imath/half.h>
 #include <fmt/format.h>
@@ -25,6 +26,9 @@ namespace {
 constexpr VkFormat kLatticeFormat = VK_FORMAT_R16_SFLOAT;  // one channel: 2 bytes a voxel, not the seed's 8
 constexpr int kMaxStepsPerFrame = 4;                        // catch-up steps simulated in one frame at most
 constexpr size_t kStatsWords = 8;
+
+constexpr std::array<std::string_view, 4> kLabelWords{"", "AMBER", "ROSE", "CRIMSON"};
+const text::Shaping kLabelShaping{0.18f};  // small caps, widely tracked
 
 struct DiffusePush {
   glm::vec3 source;
@@ -88,7 +92,13 @@ class BloomScene final : public Scene {
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                          VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      gpu::MemoryUse::Device, "bloom statistics"),
-        statsReadback_(context.device, kStatsWords * sizeof(uint32_t), 4, "bloom statistics readback") {
+        statsReadback_(context.device, kStatsWords * sizeof(uint32_t), 4, "bloom statistics readback"),
+        labelFont_(text::Font::fromAssets(context.assets, "CormorantSC")),
+        titleFont_(text::Font::fromAssets(context.assets, "FrauncesItalic")),
+        text_(context, {{&labelFont_, {"AMBER", "ROSE", "CRIMSON"}, kLabelShaping}, {&titleFont_, {"CHROMA"}, {}}}) {
+    for (size_t i = 1; i < 4; ++i)
+      labels_[i] = text_.layout(labelFont_, std::string(kLabelWords[i]), kLabelShaping);
+    chroma_ = text_.layout(titleFont_, "CHROMA");
     if (!context.device.storageExtendedFormats())
       throw Error(fmt::format("bloom needs r16f storage images (shaderStorageImageExtendedFormats), which {} lacks",
                               context.device.properties().deviceName));
@@ -97,7 +107,10 @@ class BloomScene final : public Scene {
   }
   ~BloomScene() override { audio_.drone(time_, false); }
 
-  void resize(VkExtent2D target) override { aspect_ = float(target.width) / float(std::max(target.height, 1u)); }
+  void resize(VkExtent2D target) override {
+    aspect_ = float(target.width) / float(std::max(target.height, 1u));
+    labelPosition_ = projectToView({0.0f, kCrystalRadius + 0.2f, 0.0f}, aspect_);  // just above the top vertex
+  }
 
   void update(const FrameInput& input) override {
     time_ = input.time;
@@ -145,6 +158,7 @@ class BloomScene final : public Scene {
     measure(frame);
     drawChamber(frame);
     drawCrystal(frame);
+    drawType(frame);
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
@@ -270,6 +284,58 @@ class BloomScene final : public Scene {
     vkCmdDraw(frame.cmd, 36, 1, 0, 0);
   }
 
+  // The type is the chemistry's voice, time-locked to the phases: the new phase's name types in above
+  // the crystal in Cormorant SC and fades; at the climax CHROMA blooms over it in deep-charcoal
+  // Fraunces italic, holds four seconds and fades once the crystal has vented.
+  void drawType(const FrameContext& frame) {
+    std::vector<text::TextDraw> draws;
+    const float height = float(frame.target.extent2d().height);
+    const double now = time_;
+    if (label_ > 0) {
+      const double age = now - labelTime_;
+      const float reveal = float(std::clamp(age / 0.35, 0.0, 1.0));
+      const float fade = float(std::clamp(1.0 - (age - 0.9) / 1.8, 0.0, 1.0));
+      if (fade > 0.0f) {
+        text::TextDraw label;
+        label.layout = &labels_[size_t(label_)];
+        label.position = labelPosition_;
+        label.normalized = true;
+        label.sizePx = height * 0.075f;
+        label.color = glm::vec4(phaseInk(label_), 1.0f);
+        label.opacity = fade;
+        label.reveal = reveal;
+        draws.push_back(label);
+      }
+    }
+    if (chromaTime_ >= 0.0) {
+      const double age = now - chromaTime_;
+      const double bloom = std::clamp(age / 0.8, 0.0, 1.0);
+      // Hold four seconds, then fade over two once the crystal has vented (sooner it stays).
+      const double fadeFrom = std::max(chromaTime_ + 4.8, ventTime_);
+      const double fade = detector_.climax() ? 1.0 : std::clamp(1.0 - (now - fadeFrom) / 2.0, 0.0, 1.0);
+      if (fade <= 0.0 && !detector_.climax()) chromaTime_ = -1.0;
+      text::TextDraw title;
+      title.layout = &chroma_;
+      title.position = {0.5f, 0.47f};
+      title.normalized = true;
+      title.sizePx = height * 0.21f * float(0.92 + 0.08 * bloom);
+      title.color = glm::vec4(0.030f, 0.028f, 0.027f, 1.0f);  // deep charcoal, linear
+      title.opacity = float(bloom * fade);
+      title.softnessEm = float(0.25 * (1.0 - bloom));  // it blooms: soft, then sharp
+      title.glow = {phaseColour(1.0f) * 0.35f * float(1.0 - bloom * 0.6), 0.12f};
+      if (title.opacity > 0.0f) draws.push_back(title);
+    }
+    if (draws.empty()) return;
+    const auto pass = frame.pass("bloom type");
+    text_.record(frame, draws);
+  }
+
+  // The label's ink: the phase's colour, darkened to read on bone white.
+  static glm::vec3 phaseInk(int phase) {
+    static constexpr glm::vec3 kInk[4] = {kPristine, kAmber, kRose, kCrimson};
+    return kInk[phase] * 0.55f;
+  }
+
   void detect(const std::array<float, 4>& signal, const std::array<Hysteresis, 4>& bands, double time) {
     for (const PhaseEvent& event : detector_.observe(signal, bands)) {
       SceneEvent out{std::string(event.name()), {}};
@@ -277,6 +343,9 @@ class BloomScene final : public Scene {
       out.values.push_back({"source", settings_.phaseSource == PhaseSource::Gpu ? "gpu" : "cpu"});
       events_.emit(time, out);
       sound(event, time);
+      if (event.kind == PhaseEvent::Kind::Up) label_ = int(event.phase), labelTime_ = time_;
+      if (event.kind == PhaseEvent::Kind::Climax) chromaTime_ = time_, ventTime_ = 1e30;
+      if (event.kind == PhaseEvent::Kind::Vent && event.fromClimax) ventTime_ = time_;
     }
   }
 
@@ -324,6 +393,16 @@ class BloomScene final : public Scene {
   LatticeStats stats_;
   PhaseDetector detector_;
   std::deque<Sample> history_;
+  text::Font labelFont_;
+  text::Font titleFont_;
+  text::TextPass text_;
+  std::array<text::TextLayout, 4> labels_;  // AMBER, ROSE, CRIMSON by phase
+  text::TextLayout chroma_;
+  int label_ = 0;  // the phase whose name shows, 0: none
+  double labelTime_ = 0.0;
+  glm::vec2 labelPosition_{0.5f, 0.1f};
+  double chromaTime_ = -1.0;  // when CHROMA bloomed; negative: not showing
+  double ventTime_ = 1e30;    // when the climax ended
 };
 
 }  // namespace
