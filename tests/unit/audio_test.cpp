@@ -396,7 +396,7 @@ TEST(AudioEngine, BlockSizesDoNotChangeTheSound) {
   Synth synth;
   synth.post({Command::Kind::Drone, 0, 1});
   synth.post({Command::Kind::Bell, sampleTime(0.25), kE4});
-  synth.post({Command::Kind::Climax, sampleTime(0.5004), 0});
+  synth.post({Command::Kind::Climax, sampleTime(0.5004), kClimaxWet});
   synth.post({Command::Kind::Bell, sampleTime(0.7), kE5});
   std::vector<float> got(expected.size());
   size_t done = 0;
