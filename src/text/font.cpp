@@ -148,7 +148,10 @@ Font Font::fromAssets(const Assets& assets, const std::string& family) {
     if (!font.problem().empty()) assets.reportMissing(font.problem());
     return font;
   }
-  return load(assets.root() / "fonts" / (family + ".woff2"));  // absent: Assets::missing() lists it already
+  // Absent: say what stands in (or that nothing does), once, in every mode.
+  Font font = load(assets.root() / "fonts" / (family + ".woff2"));
+  if (!font.problem().empty()) assets.reportMissing(font.problem());
+  return font;
 }
 
 bool Font::usable() const { return impl_ && impl_->face; }
