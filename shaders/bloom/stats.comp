@@ -5,9 +5,10 @@
 #include "crystal.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
 layout(binding = 0, r16f) uniform readonly image3D lattice;
-// [0] crystal voxels, [1..4] above 0.25 / 0.45 / 0.65 / 0.82, [5] peak (float bits: positive floats
+// [0] crystal voxels, [1..4] above the four event thresholds (0.25 / 0.45 / 0.65 / 0.82), [5] peak (float bits: positive floats
 // order as their bits do)
 layout(binding = 1, std430) buffer Stats { uint counts[8]; } stats;
+layout(push_constant) uniform Push { vec4 thresholds; } pc;  // amber, rose, crimson, climax
 
 shared uint partial[6];
 
@@ -19,10 +20,10 @@ void main() {
   if (all(lessThan(p, ivec3(n))) && insideCrystal((vec3(p) + 0.5) / float(n) * 2.0 - 1.0)) {
     const float v = imageLoad(lattice, p).r;
     atomicAdd(partial[0], 1u);
-    if (v > 0.25) atomicAdd(partial[1], 1u);
-    if (v > 0.45) atomicAdd(partial[2], 1u);
-    if (v > 0.65) atomicAdd(partial[3], 1u);
-    if (v > 0.82) atomicAdd(partial[4], 1u);
+    if (v > pc.thresholds.x) atomicAdd(partial[1], 1u);
+    if (v > pc.thresholds.y) atomicAdd(partial[2], 1u);
+    if (v > pc.thresholds.z) atomicAdd(partial[3], 1u);
+    if (v > pc.thresholds.w) atomicAdd(partial[4], 1u);
     atomicMax(partial[5], floatBitsToUint(max(v, 0.0)));
   }
   barrier();

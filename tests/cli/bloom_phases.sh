@@ -56,3 +56,14 @@ octave, _ = pitch(8.0, 2.0, 110.3)
 assert abs(drone - 55.0) < 0.5 and abs(octave - 110.3) < 0.5, (drone, octave)
 print(f"drone {drone:.2f} + {octave:.2f} Hz, peak {peak}/32767")
 PY
+
+# The seed's CPU proxy as the phase source: the same order, slower (dV/dt = 0.2 - 0.1 V).
+"$vitrine" --headless --scene bloom --size 32x18 --frames 720 --set lattice=48 --set phase_source=cpu --validate \
+  --input "$script" --events "$out/bloom-cpu.jsonl" --out "$out/bloom-cpu.exr"
+python3 - "$out/bloom-cpu.jsonl" <<'PY'
+import json, sys
+events = [json.loads(line) for line in open(sys.argv[1])]
+seen = [e["event"] if e["event"] != "vent" else "vent:" + e["from"] for e in events]
+assert seen[:4] == ["amber", "rose", "crimson", "chroma"] and all(e["source"] == "cpu" for e in events), events
+print("cpu proxy:", [(s, round(e["t"], 2)) for s, e in zip(seen, events)])
+PY

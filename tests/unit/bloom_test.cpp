@@ -142,6 +142,7 @@ TEST(BloomPhases, UpInOrderDownInReverseWithHysteresis) {
 
 TEST(BloomSettings, TheSchemaCoversThePanelTheIssueAsksFor) {
   for (const char* key : {"lattice", "diffusion", "decay_rising", "decay_venting", "source", "sigma", "phase_source",
+                          "threshold_amber", "threshold_rose", "threshold_crimson", "threshold_chroma",
                           "trace_steps", "samples", "volume", "mute", "reverb_wet", "vent"})
     EXPECT_NE(schema().find(key), nullptr) << key;
   EXPECT_TRUE(schema().find("vent")->has(params::kTransient));

@@ -183,7 +183,6 @@ inline float proxyStep(float v, bool sourceOn, float dt, const ProxyRates& r = {
 // the climax likewise. Phases rise and fall in order.
 enum class Phase { Pristine, Amber, Rose, Crimson };
 inline constexpr std::array<std::string_view, 4> kPhaseNames{"pristine", "amber", "rose", "crimson"};
-inline constexpr std::array<float, 4> kEventThresholds{0.25f, 0.45f, 0.65f, 0.82f};  // amber, rose, crimson, climax
 
 struct PhaseEvent {
   enum class Kind { Up, Climax, Vent } kind;
@@ -240,7 +239,10 @@ class PhaseDetector {
 // (with the default rates the interior plateaus near 55 % while the button is held, 35 % hovering).
 inline constexpr std::array<Hysteresis, 4> kFractionBands{{{0.45f, 0.25f}, {0.45f, 0.25f}, {0.45f, 0.25f}, {0.5f, 0.25f}}};
 // The CPU source: the proxy's V against the thresholds themselves, 0.03 below to leave.
-inline constexpr std::array<Hysteresis, 4> kProxyBands{
-    {{0.25f, 0.22f}, {0.45f, 0.42f}, {0.65f, 0.62f}, {0.82f, 0.79f}}};
+inline std::array<Hysteresis, 4> proxyBands(const std::array<float, 4>& thresholds) {
+  std::array<Hysteresis, 4> bands{};
+  for (size_t i = 0; i < 4; ++i) bands[i] = {thresholds[i], thresholds[i] - 0.03f};
+  return bands;
+}
 
 }  // namespace vitrine::bloom

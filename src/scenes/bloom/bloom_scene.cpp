@@ -65,7 +65,7 @@ gpu::GraphicsState crystalState() {
 // The statistics buffer's words (shaders/bloom/stats.comp).
 struct LatticeStats {
   uint32_t crystal = 0;
-  std::array<uint32_t, 4> above{};  // 0.25, 0.45, 0.65, 0.82
+  std::array<uint32_t, 4> above{};  // past the amber, rose, crimson and climax thresholds
   float peak = 0.0f;
   std::array<float, 4> fractions() const {
     std::array<float, 4> f{};
@@ -84,7 +84,7 @@ class BloomScene final : public Scene {
         diffuse_(context.programs, "bloom/diffuse.comp",
                  {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(DiffusePush)}),
         statistics_(context.programs, "bloom/stats.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0}),
+               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, sizeof(float) * 4}),
         chamber_(context.programs, "bloom/chamber.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ChamberPush)}),
         crystal_(context.programs, crystalState(),
                  {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, sizeof(CrystalPush)}),
@@ -133,7 +133,8 @@ class BloomScene final : public Scene {
     // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
     proxy_ = proxyStep(proxy_, input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
                        {0.20f, settings_.decayRising, settings_.decayVenting});
-    if (settings_.phaseSource == PhaseSource::Cpu) detect({proxy_, proxy_, proxy_, proxy_}, kProxyBands, time_);
+    if (settings_.phaseSource == PhaseSource::Cpu)
+      detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
     while (auto result = statsReadback_.poll()) {  // finished a frame or more ago: no waiting
       LatticeStats stats;
       std::array<uint32_t, kStatsWords> words{};
@@ -163,16 +164,23 @@ class BloomScene final : public Scene {
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
 
+  std::string checkParameters() const override {
+    const auto t = thresholds();
+    if (!(t[0] < t[1] && t[1] < t[2] && t[2] < t[3]))
+      return fmt::format("the thresholds must rise: amber {} < rose {} < crimson {} < climax {}", t[0], t[1], t[2], t[3]);
+    return {};
+  }
+
   void drawPanel() override {
     const auto f = stats_.fractions();
     ImGui::Text("phase %s%s   peak %.2f", std::string(kPhaseNames[size_t(detector_.phase())]).c_str(),
                 detector_.climax() ? " + CHROMA" : "", stats_.peak);
-    ImGui::Text("crystal past 0.25 / 0.45 / 0.65 / 0.82: %.0f%% %.0f%% %.0f%% %.0f%%", f[0] * 100, f[1] * 100,
-                f[2] * 100, f[3] * 100);
+    ImGui::Text("crystal past each threshold: %.0f%% %.0f%% %.0f%% %.0f%%", f[0] * 100, f[1] * 100, f[2] * 100,
+                f[3] * 100);
     std::vector<float> peak, amber, proxy;
     for (const auto& h : history_) peak.push_back(h.peak), amber.push_back(h.fraction), proxy.push_back(h.proxy);
     ImGui::PlotLines("GPU peak", peak.data(), int(peak.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
-    ImGui::PlotLines("GPU past 0.45", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
+    ImGui::PlotLines("GPU past rose", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
     ImGui::PlotLines("CPU proxy V", proxy.data(), int(proxy.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
     ImGui::Text("%u sub-steps a frame (D dt 6 = %.2f)", substeps(), stabilityNumber());
   }
@@ -210,6 +218,9 @@ class BloomScene final : public Scene {
     builtFill_ = settings_.fill;
   }
 
+  std::array<float, 4> thresholds() const {
+    return {settings_.thresholdAmber, settings_.thresholdRose, settings_.thresholdCrimson, settings_.thresholdChroma};
+  }
   float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
   uint32_t substeps() const { return substepsFor(scaledD(), stepSeconds_); }
   float stabilityNumber() const { return 6.0f * scaledD() * stepSeconds_ / float(substeps()); }
@@ -249,6 +260,7 @@ class BloomScene final : public Scene {
                                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     statistics_.bind(frame.cmd);
     statistics_.push(frame.cmd, gpu::Bindings().storageImage(lattice.view()).storageBuffer(statsBuffer_.handle()));
+    statistics_.constants(frame.cmd, thresholds());
     const uint32_t n = uint32_t(settings_.lattice);
     statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
     statsReadback_.record(frame.cmd, statsBuffer_, time_);

@@ -17,6 +17,10 @@ struct Settings {
   float sigma = 20.0f;             // source width, voxels at 96^3
   float reach = 1.3f;              // the cursor's ray injects within this many crystal radii of the centre
   PhaseSource phaseSource = PhaseSource::Gpu;
+  float thresholdAmber = 0.25f;    // concentrations whose crossing is a phase event
+  float thresholdRose = 0.45f;
+  float thresholdCrimson = 0.65f;
+  float thresholdChroma = 0.82f;
   int traceSteps = 48;             // sphere-trace budget to the entry
   int samples = 56;                // volume samples entry to exit
   float volume = 0.8f;
