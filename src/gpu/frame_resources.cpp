@@ -102,13 +102,24 @@ void FrameResources::beginFrame(VkCommandBuffer cmd, StreamArena& stream) {
   }
 }
 
-Image& FrameResources::current(ImageHandle handle) {
+// An image whose initial texels or clear are still pending holds garbage: a scene that redeclared it
+// while recording would read that; say so instead of rendering noise.
+FrameResources::Entry& FrameResources::ready(ImageHandle handle) {
   Entry& entry = entries_.at(handle.index);
+  if (entry.fresh && (!entry.decl.initial.empty() || entry.decl.pairing == Pairing::History))
+    throw Error(fmt::format("{} is used before its initial contents were written: (re)declare it in the scene's "
+                            "constructor or update(), not while recording",
+                            entry.decl.name));
+  return entry;
+}
+
+Image& FrameResources::current(ImageHandle handle) {
+  Entry& entry = ready(handle);
   return entry.images[entry.front];
 }
 
 Image& FrameResources::previous(ImageHandle handle) {
-  Entry& entry = entries_.at(handle.index);
+  Entry& entry = ready(handle);
   if (entry.decl.pairing == Pairing::Single) throw Error(fmt::format("{} is not a pair", entry.decl.name));
   return entry.images[entry.front ^ 1u];
 }

@@ -54,7 +54,9 @@ class FrameResources {
 
   // Absolute images exist at once; relative ones from the next resize on.
   ImageHandle declare(ImageDecl decl);
-  // Replaces a declaration (a lattice size changed): the old images are retired.
+  // Replaces a declaration (a lattice size changed): the old images are retired. Declare and
+  // redeclare images with initial data, and history pairs, in a scene's constructor or update(): they
+  // are uploaded or cleared as the next frame begins, and using one before that is an error.
   void redeclare(ImageHandle handle, ImageDecl decl);
 
   // Host: the scene's target has this extent; recreates relative images whose size changed.
@@ -78,6 +80,7 @@ class FrameResources {
     bool historyValid = false;
   };
   void create(Entry& entry, VkExtent2D target);
+  Entry& ready(ImageHandle handle);
   const Device& device_;
   std::vector<Entry> entries_;
   VkExtent2D target_{0, 0};

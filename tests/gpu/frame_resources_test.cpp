@@ -291,3 +291,25 @@ TEST_F(Submission, CopiedBindingsStayValid) {
 
 }  // namespace
 }  // namespace vitrine::test
+
+namespace vitrine::test {
+namespace {
+
+// An image whose initial texels are not uploaded yet holds garbage: using it is an error, not noise
+// (a scene that redeclared its lattice while recording read undefined memory before this check).
+TEST_F(Submission, AnImageIsNotUsableBeforeItsInitialContentsAreWritten) {
+  gpu::FrameResources resources(device());
+  gpu::ImageDecl decl{"seeded", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT, gpu::ImageSize::absolute(4, 4)};
+  decl.initial.assign(4 * 4 * 4, std::byte{7});
+  const gpu::ImageHandle handle = resources.declare(decl);
+  EXPECT_THROW(resources.current(handle), Error);
+  gpu::StreamArena arena(device());
+  device().submitNow([&](VkCommandBuffer cmd) { resources.beginFrame(cmd, arena); });
+  EXPECT_NO_THROW(resources.current(handle));
+  resources.redeclare(handle, decl);
+  EXPECT_THROW(resources.current(handle), Error) << "a redeclared image waits for the next frame's upload";
+  device().waitIdle();
+}
+
+}  // namespace
+}  // namespace vitrine::test

@@ -151,10 +151,11 @@ class BloomScene final : public Scene {
       settings_.vent = false;
       restart(0.0f);
     }
+    // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins.
+    if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
   }
 
   void record(const FrameContext& frame) override {
-    if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
     simulate(frame);
     measure(frame);
     drawChamber(frame);
