@@ -5,25 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "text/freetype_errors.h"
+
 namespace vitrine::host {
 namespace {
 
-// FreeType's own table of error strings (FT_Error_String needs a FreeType built with them).
-#undef FTERRORS_H_
-#define FT_ERRORDEF(code, value, text) {value, text},
-#define FT_ERROR_START_LIST {
-#define FT_ERROR_END_LIST {0, nullptr}};
-const struct {
-  int code;
-  const char* text;
-} kFreeTypeErrors[] =
-#include FT_ERRORS_H
-
-std::string describe(FT_Error error) {
-  for (const auto& entry : kFreeTypeErrors)
-    if (entry.text && entry.code == error) return entry.text;
-  return fmt::format("FreeType error {}", int(error));
-}
+std::string describe(FT_Error error) { return text::freetypeError(int(error)); }
 
 }  // namespace
 

@@ -12,6 +12,8 @@
 #include <hb.h>
 
 #include <fmt/format.h>
+
+#include "text/freetype_errors.h"
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -22,22 +24,7 @@
 namespace vitrine::text {
 namespace {
 
-// FreeType's own table of error strings (FT_Error_String needs a FreeType built with them).
-#undef FTERRORS_H_
-#define FT_ERRORDEF(code, value, text) {value, text},
-#define FT_ERROR_START_LIST {
-#define FT_ERROR_END_LIST {0, nullptr}};
-const struct {
-  int code;
-  const char* text;
-} kFreeTypeErrors[] =
-#include FT_ERRORS_H
-
-std::string describe(FT_Error error) {
-  for (const auto& entry : kFreeTypeErrors)
-    if (entry.text && entry.code == error) return entry.text;
-  return fmt::format("FreeType error {}", int(error));
-}
+std::string describe(FT_Error error) { return freetypeError(int(error)); }
 
 std::atomic<uint32_t> nextFontId{1};
 
@@ -148,9 +135,9 @@ Font Font::fromAssets(const Assets& assets, const std::string& family) {
     if (!font.problem().empty()) assets.reportMissing(font.problem());
     return font;
   }
-  // Absent: say what stands in (or that nothing does), once, in every mode.
+  // Absent: Assets::missing() already names it and what stands in; say more only when nothing does.
   Font font = load(assets.root() / "fonts" / (family + ".woff2"));
-  if (!font.problem().empty()) assets.reportMissing(font.problem());
+  if (!font.usable()) assets.reportMissing(font.problem());
   return font;
 }
 
