@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -29,6 +30,8 @@ namespace vitrine::host {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t stopRequested = 0;
 
 constexpr uint32_t kFramesInFlight = 2;
 constexpr int kMaxCatchUpSteps = 4;
@@ -169,11 +172,12 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
 }
 
 int Gallery::run() {
-  while (!window_.shouldClose()) {
+  while (!window_.shouldClose() && !stopRequested) {
     window_.pollEvents();
     if (window_.hidden()) {
       audio_.pause();  // minimised: no drone playing to nobody
-      window_.waitWhileHidden();
+      // Sleep on events (a few wake-ups a second, so a stop signal is still seen) until shown again.
+      while (window_.hidden() && !window_.shouldClose() && !stopRequested) window_.waitForEvents(0.25);
       audio_.resume();
       lastFrame_ = Clock::now();  // time spent minimised is not simulated
       continue;
@@ -338,6 +342,10 @@ void Gallery::pollShaders() {
 
 int runGallery(const Options& options) {
   const SceneInfo* named = options.scene.empty() ? nullptr : &namedScene(options.scene);  // a typo fails first
+  // SIGTERM (a kiosk's service manager) and Ctrl-C end the loop like Esc: settings are flushed, the
+  // device is idled and destroyed in order. The handler only sets a flag.
+  std::signal(SIGTERM, [](int) { stopRequested = 1; });
+  std::signal(SIGINT, [](int) { stopRequested = 1; });
   return Gallery(options, named).run();
 }
 

@@ -73,9 +73,7 @@ bool Window::hidden() const {
   return size.width == 0 || size.height == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
 }
 
-void Window::waitWhileHidden() const {
-  while (!shouldClose() && hidden()) glfwWaitEvents();
-}
+void Window::waitForEvents(double seconds) const { glfwWaitEventsTimeout(seconds); }
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
 

@@ -41,7 +41,8 @@ class Window {
 
   void pollEvents();
   bool hidden() const;           // minimised, or a framebuffer with no pixels
-  void waitWhileHidden() const;  // sleeps in the event queue, so a minimised gallery costs no CPU
+  // Sleeps in the event queue for at most `seconds`: a minimised gallery costs next to no CPU.
+  void waitForEvents(double seconds) const;
   bool shouldClose() const;
   void close();
   VkExtent2D framebufferSize() const;
