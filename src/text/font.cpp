@@ -362,4 +362,18 @@ TextLayout GlyphAtlas::layout(const Font& font, std::string_view utf8, const Sha
   return layout;
 }
 
+float GlyphAtlas::sampleLinear(glm::vec2 uv) const {
+  const glm::vec2 at = uv * glm::vec2(float(width()), float(height())) - 0.5f;
+  const glm::vec2 base = glm::floor(at), f = at - base;
+  auto texel = [&](int x, int y) {
+    x = std::clamp(x, 0, int(width()) - 1);
+    y = std::clamp(y, 0, int(height()) - 1);
+    return float(texels()[size_t(y) * width() + size_t(x)]) / 255.0f;
+  };
+  const int x = int(base.x), y = int(base.y);
+  const float top = texel(x, y) * (1 - f.x) + texel(x + 1, y) * f.x;
+  const float bottom = texel(x, y + 1) * (1 - f.x) + texel(x + 1, y + 1) * f.x;
+  return top * (1 - f.y) + bottom * f.y;
+}
+
 }  // namespace vitrine::text

@@ -147,6 +147,9 @@ class GlyphAtlas {
   float reachEm() const { return float(options_.spreadPx) / float(options_.pxPerEm); }
   // Signed distance in em (positive inside) held by a sampled texel value 0..1.
   float distanceEm(float value) const { return (value * 255.0f - 128.0f) / 128.0f * reachEm(); }
+  // The atlas sampled bilinearly, clamped, at texel centres: what the text pass's linear sampler
+  // returns on the GPU, for checking its output on the CPU.
+  float sampleLinear(glm::vec2 uv) const;
 
  private:
   struct Shelf {

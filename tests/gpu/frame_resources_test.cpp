@@ -6,6 +6,7 @@
 #include "host/scene_renderer.h"
 #include "image/image.h"
 #include "support/gpu_test.h"
+#include "support/test_scene.h"
 
 #include <array>
 #include <cstring>
@@ -14,19 +15,10 @@
 namespace vitrine::test {
 namespace {
 
-struct NoSettings {
-  int unused = 0;
-};
-
-const params::Schema& noSchema() {
-  static const params::Schema schema = params::Schema::forStruct<NoSettings>();
-  return schema;
-}
-
 // Counts frames in a history pair: each frame writes previous + 1 (0 + 1 when the history is not
 // valid), then copies it into the target. Also declares a ping-pong pair and a mipmapped image with
 // initial data, so their creation, uploads and resizes run under validation too.
-class CountingScene final : public Scene {
+class CountingScene final : public TestScene {
  public:
   explicit CountingScene(const SceneContext& context)
       : device_(context.device),
@@ -42,8 +34,6 @@ class CountingScene final : public Scene {
     atlas.initial.assign(16 * 16 * 4, std::byte{200});
     atlas_ = context.resources.declare(std::move(atlas));
   }
-  void update(const FrameInput&) override {}
-  params::Bound parameters() override { return {&noSchema(), &settings_}; }
 
   void record(const FrameContext& frame) override {
     const auto pass = frame.pass("count");
@@ -84,17 +74,10 @@ class CountingScene final : public Scene {
   const gpu::Device& device_;
   gpu::ComputeProgram accumulate_;
   gpu::ImageHandle history_, pingPong_, atlas_;
-  NoSettings settings_;
 };
 
 CountingScene* lastScene = nullptr;
-const SceneInfo kCounting{"counting", "Counting", 9,
-                          [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                            auto scene = std::make_unique<CountingScene>(context);
-                            lastScene = scene.get();
-                            return scene;
-                          },
-                          &noSchema};
+const SceneInfo& kCounting = testSceneInfo(lastScene);
 
 // Two frames in flight, as the gallery runs them: a frame is recorded while the previous one may
 // still be on the GPU, and the output image changes size whenever the test says so.

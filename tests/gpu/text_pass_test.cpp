@@ -6,6 +6,7 @@
 #include "image/image.h"
 #include "image/image_io.h"
 #include "support/gpu_test.h"
+#include "support/test_scene.h"
 #include "text/text_pass.h"
 
 #include <fmt/format.h>
@@ -19,27 +20,16 @@
 namespace vitrine::test {
 namespace {
 
-struct NoSettings {
-  int unused = 0;
-};
-
-const params::Schema& noSchema() {
-  static const params::Schema schema = params::Schema::forStruct<NoSettings>();
-  return schema;
-}
-
 const text::Shaping kSmallCaps{0.08f};
 
 // Cormorant SC and Fraunces italic (or DejaVu Serif where they were not fetched), the words of the
 // bloom scene in the atlas from the start; the test sets the background and the draws.
-class TextScene final : public Scene {
+class TextScene final : public TestScene {
  public:
   explicit TextScene(const SceneContext& context)
       : cormorant(text::Font::fromAssets(context.assets, "CormorantSC")),
         italic(text::Font::fromAssets(context.assets, "FrauncesItalic")),
         pass(context, {{&cormorant, {"AMBER", "ROSE", "CRIMSON"}, kSmallCaps}, {&italic, {"CHROMA"}, {}}}) {}
-  void update(const FrameInput&) override {}
-  params::Bound parameters() override { return {&noSchema(), &settings_}; }
 
   void record(const FrameContext& frame) override {
     frame.transition(frame.target, gpu::use::TransferDst);
@@ -53,19 +43,10 @@ class TextScene final : public Scene {
   text::TextPass pass;
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
   std::vector<text::TextDraw> draws;
-
- private:
-  NoSettings settings_;
 };
 
 TextScene* lastScene = nullptr;
-const SceneInfo kTextScene{"text", "Text", 9,
-                           [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                             auto scene = std::make_unique<TextScene>(context);
-                             lastScene = scene.get();
-                             return scene;
-                           },
-                           &noSchema};
+const SceneInfo& kTextScene = testSceneInfo(lastScene);
 
 // One frame at a time through the host's scene renderer, the target read back once it is done.
 class TextFrames {
@@ -106,21 +87,6 @@ class TextFrames {
   uint64_t frames_ = 0;
 };
 
-// Bilinear, clamped, at texel centres: what the GPU's linear sampler returns.
-float sampleAtlas(const text::GlyphAtlas& atlas, glm::vec2 uv) {
-  const glm::vec2 at = uv * glm::vec2(float(atlas.width()), float(atlas.height())) - 0.5f;
-  const glm::vec2 base = glm::floor(at), f = at - base;
-  auto texel = [&](int x, int y) {
-    x = std::clamp(x, 0, int(atlas.width()) - 1);
-    y = std::clamp(y, 0, int(atlas.height()) - 1);
-    return float(atlas.texels()[size_t(y) * atlas.width() + size_t(x)]) / 255.0f;
-  };
-  const int x = int(base.x), y = int(base.y);
-  const float top = texel(x, y) * (1 - f.x) + texel(x + 1, y) * f.x;
-  const float bottom = texel(x, y + 1) * (1 - f.x) + texel(x + 1, y + 1) * f.x;
-  return top * (1 - f.y) + bottom * f.y;
-}
-
 // Signed distance in target pixels from pixel (x, y)'s centre to the draw's ink, positive inside
 // (the CPU's reading of the same field); far outside when no glyph's square holds the pixel.
 float inkDistancePx(const text::GlyphAtlas& atlas, const text::TextDraw& draw, VkExtent2D extent, int x, int y) {
@@ -131,7 +97,7 @@ float inkDistancePx(const text::GlyphAtlas& atlas, const text::TextDraw& draw, V
   for (const text::GlyphQuad& quad : draw.layout->quads) {
     if (em.x < quad.min.x || em.y < quad.min.y || em.x >= quad.max.x || em.y >= quad.max.y) continue;
     const glm::vec2 uv = glm::mix(quad.uvMin, quad.uvMax, (em - quad.min) / (quad.max - quad.min));
-    best = std::max(best, atlas.distanceEm(sampleAtlas(atlas, uv)) * draw.sizePx);
+    best = std::max(best, atlas.distanceEm(atlas.sampleLinear(uv)) * draw.sizePx);
   }
   return best;
 }

@@ -51,21 +51,6 @@ class Text : public test::TempFolderTest {
   }
 };
 
-// Bilinear, clamped, at texel centres: what the GPU's linear sampler returns.
-float sample(const GlyphAtlas& atlas, glm::vec2 uv) {
-  const glm::vec2 at = uv * glm::vec2(float(atlas.width()), float(atlas.height())) - 0.5f;
-  const glm::vec2 base = glm::floor(at), f = at - base;
-  auto texel = [&](int x, int y) {
-    x = std::clamp(x, 0, int(atlas.width()) - 1);
-    y = std::clamp(y, 0, int(atlas.height()) - 1);
-    return float(atlas.texels()[size_t(y) * atlas.width() + size_t(x)]) / 255.0f;
-  };
-  const int x = int(base.x), y = int(base.y);
-  const float top = texel(x, y) * (1 - f.x) + texel(x + 1, y) * f.x;
-  const float bottom = texel(x, y + 1) * (1 - f.x) + texel(x + 1, y + 1) * f.x;
-  return top * (1 - f.y) + bottom * f.y;
-}
-
 glm::vec2 uvAt(const GlyphQuad& quad, glm::vec2 em) {
   return glm::mix(quad.uvMin, quad.uvMax, (em - quad.min) / (quad.max - quad.min));
 }
@@ -189,7 +174,7 @@ TEST_F(Text, DistanceFieldIsHalfOnTheOutline) {
     for (int i = 0; i < outline.n_points; ++i) {
       if (!(outline.tags[i] & 1)) continue;  // off-curve control points are not on the outline
       const glm::vec2 em(float(outline.points[i].x) / upem, -float(outline.points[i].y) / upem);
-      errors.push_back(std::abs(sample(atlas, uvAt(quad, em)) - 0.5f));
+      errors.push_back(std::abs(atlas.sampleLinear(uvAt(quad, em)) - 0.5f));
     }
     ASSERT_GT(errors.size(), 3u);
     std::sort(errors.begin(), errors.end());
@@ -199,16 +184,16 @@ TEST_F(Text, DistanceFieldIsHalfOnTheOutline) {
     EXPECT_LT(errors[errors.size() / 2], 0.02f) << "'" << letter << "'";
     EXPECT_LT(errors.back(), 0.05f) << "'" << letter << "'";
 
-    const float outside = sample(atlas, uvAt(quad, quad.min + 0.01f));  // the padded corner
+    const float outside = atlas.sampleLinear(uvAt(quad, quad.min + 0.01f));  // the padded corner
     EXPECT_LT(outside, 0.05f) << "'" << letter << "'";
     EXPECT_LT(atlas.distanceEm(outside), -0.9f * atlas.reachEm());
     if (letter == 'I') {  // the middle of the stem is inside
-      const float inside = sample(atlas, uvAt(quad, layout.inkCentre()));
+      const float inside = atlas.sampleLinear(uvAt(quad, layout.inkCentre()));
       EXPECT_GT(inside, 0.55f);
       EXPECT_GT(atlas.distanceEm(inside), 0.01f);
     }
     if (letter == 'O') {  // the middle of the bowl is outside, in the counter
-      EXPECT_LT(sample(atlas, uvAt(quad, layout.inkCentre())), 0.45f);
+      EXPECT_LT(atlas.sampleLinear(uvAt(quad, layout.inkCentre())), 0.45f);
     }
   }
   FT_Done_Face(face);
@@ -243,7 +228,7 @@ TEST_F(Text, OverlappingContoursMakeOneShape) {
           if (covered != 0 && covered != 255) continue;  // on the edge
           const glm::vec2 em(float(face->glyph->bitmap_left + int(x)) + 0.5f,
                              -float(face->glyph->bitmap_top - int(y)) + 0.5f);
-          const float value = sample(atlas, uvAt(layout.quads[0], em / px));
+          const float value = atlas.sampleLinear(uvAt(layout.quads[0], em / px));
           if (covered == 255) ++full;
           if ((covered == 255) != (value > 0.5f)) ++wrong;
         }
