@@ -103,6 +103,17 @@ struct SceneInfo {
   const params::Schema& (*schema)();  // the parameter declarations, no instance or GPU needed
 };
 
+// A scene's SceneInfo: its factory makes a T from the context. constexpr, so every scene's info is
+// constant-initialised and the registry never sees one before it exists.
+template <typename T>
+constexpr SceneInfo sceneInfo(std::string_view name, std::string_view title, int key,
+                              const params::Schema& (*schema)()) {
+  return {name, title, key, [](const SceneContext& context) -> std::unique_ptr<Scene> {
+            return std::make_unique<T>(context);
+          },
+          schema};
+}
+
 std::span<const SceneInfo> sceneRegistry();
 const SceneInfo* findScene(std::string_view name);
 

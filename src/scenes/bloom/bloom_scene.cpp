@@ -420,10 +420,6 @@ class BloomScene final : public Scene {
 
 }  // namespace
 
-const SceneInfo kSceneInfo{"bloom", "The Bloom", 1,
-                           [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                             return std::make_unique<BloomScene>(context);
-                           },
-                           &schema};
+constinit const SceneInfo kSceneInfo = sceneInfo<BloomScene>("bloom", "The Bloom", 1, &schema);
 
 }  // namespace vitrine::bloom

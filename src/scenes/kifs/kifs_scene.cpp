@@ -119,10 +119,6 @@ class KifsScene final : public Scene {
 
 }  // namespace
 
-const SceneInfo kSceneInfo{"kifs", "Volumetric KIFS", 4,
-                           [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                             return std::make_unique<KifsScene>(context);
-                           },
-                           &schema};
+constinit const SceneInfo kSceneInfo = sceneInfo<KifsScene>("kifs", "Volumetric KIFS", 4, &schema);
 
 }  // namespace vitrine::kifs

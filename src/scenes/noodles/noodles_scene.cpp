@@ -155,10 +155,6 @@ void NoodlesScene::drawPanel() {
 
 }  // namespace
 
-const SceneInfo kSceneInfo{"noodles", "Curl-noise noodles", 5,
-                           [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                             return std::make_unique<NoodlesScene>(context);
-                           },
-                           &schema};
+constinit const SceneInfo kSceneInfo = sceneInfo<NoodlesScene>("noodles", "Curl-noise noodles", 5, &schema);
 
 }  // namespace vitrine::noodles
