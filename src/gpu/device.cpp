@@ -357,16 +357,18 @@ VkSampler Device::sampler(Filter filter, Address address, bool mipmaps) const {
 }
 
 uint64_t Device::submit(const Submit& work) const {
-  std::vector<VkSemaphoreSubmitInfo> signal = work.signal;
-  signal.push_back({VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, timeline_, submitted_ + 1,
-                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0});
+  if (work.signal.size() > kMaxSignals) throw Error("too many semaphores signalled by one submission");
+  std::array<VkSemaphoreSubmitInfo, kMaxSignals + 1> signal;  // no allocation per frame
+  std::copy(work.signal.begin(), work.signal.end(), signal.begin());
+  signal[work.signal.size()] = {VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, timeline_, submitted_ + 1,
+                                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0};
   const VkCommandBufferSubmitInfo commands{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, nullptr, work.cmd, 0};
   VkSubmitInfo2 info{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
   info.waitSemaphoreInfoCount = static_cast<uint32_t>(work.wait.size());
   info.pWaitSemaphoreInfos = work.wait.data();
   info.commandBufferInfoCount = work.cmd ? 1 : 0;
   info.pCommandBufferInfos = &commands;
-  info.signalSemaphoreInfoCount = static_cast<uint32_t>(signal.size());
+  info.signalSemaphoreInfoCount = static_cast<uint32_t>(work.signal.size() + 1);
   info.pSignalSemaphoreInfos = signal.data();
   VK_CHECK(vkQueueSubmit2(queue_, 1, &info, VK_NULL_HANDLE));
   return ++submitted_;

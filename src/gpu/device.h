@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -83,9 +84,10 @@ class Device {
   // timeline semaphore and returns it: its serial. Binary semaphores (swapchain) and a fence are optional.
   struct Submit {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
-    std::vector<VkSemaphoreSubmitInfo> wait;
-    std::vector<VkSemaphoreSubmitInfo> signal;
+    std::span<const VkSemaphoreSubmitInfo> wait;
+    std::span<const VkSemaphoreSubmitInfo> signal;  // at most kMaxSignals, besides the timeline
   };
+  static constexpr size_t kMaxSignals = 4;
   uint64_t submit(const Submit& work) const;
   uint64_t lastSubmitted() const { return submitted_; }
   uint64_t completed() const;            // the newest serial the GPU has finished

@@ -2,6 +2,8 @@
 
 #include "core/error.h"
 
+#include <array>
+
 namespace vitrine::gpu {
 
 Rendering::Rendering(VkCommandBuffer cmd, const RenderingDesc& desc) : cmd_(cmd) {
@@ -9,7 +11,10 @@ Rendering::Rendering(VkCommandBuffer cmd, const RenderingDesc& desc) : cmd_(cmd)
   if (!first) throw Error("a rendering pass needs at least one attachment");
   extent_ = first->extent2d();
 
-  std::vector<VkRenderingAttachmentInfo> colors;
+  constexpr size_t kMaxColors = 8;
+  if (desc.colors.size() > kMaxColors) throw Error("more colour attachments than a rendering pass takes");
+  std::array<VkRenderingAttachmentInfo, kMaxColors> colors{};
+  uint32_t colorCount = 0;
   for (const ColorAttachment& c : desc.colors) {
     if (c.clear) c.image->discard();  // cleared: the old contents are not read
     c.image->use(cmd, use::ColorAttachment);
@@ -27,7 +32,7 @@ Rendering::Rendering(VkCommandBuffer cmd, const RenderingDesc& desc) : cmd_(cmd)
       info.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
       extent_ = c.resolve->extent2d();
     }
-    colors.push_back(info);
+    colors[colorCount++] = info;
   }
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   if (desc.depth) {
@@ -43,7 +48,7 @@ Rendering::Rendering(VkCommandBuffer cmd, const RenderingDesc& desc) : cmd_(cmd)
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, extent_};
   rendering.layerCount = 1;
-  rendering.colorAttachmentCount = static_cast<uint32_t>(colors.size());
+  rendering.colorAttachmentCount = colorCount;
   rendering.pColorAttachments = colors.data();
   rendering.pDepthAttachment = desc.depth ? &depth : nullptr;
   vkCmdBeginRendering(cmd, &rendering);

@@ -31,10 +31,10 @@ VkCommandBuffer FrameSlot::begin() {
 
 void FrameSlot::submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished) {
   VK_CHECK(vkEndCommandBuffer(cmd_));
-  serial_ = device_->submit(
-      {cmd_,
-       {{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0}},
-       {{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0}}});
+  const VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0};
+  const VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0,
+                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0};
+  serial_ = device_->submit({cmd_, {&wait, 1}, {&signal, 1}});
 }
 
 }  // namespace vitrine::host
