@@ -1,0 +1,258 @@
+// The glass scene's shapes: distance fields, front hits and analytic back exits in object space; mirrors
+// src/scenes/glass/shapes.h function for function. Includes glass/diamond.glsl, so define DIAMOND_BINDING first.
+// The rotations are not here: the host computes them (cubeRotation & co.) and passes the matrices.
+#ifndef GLASS_SHAPES_GLSL
+#define GLASS_SHAPES_GLSL
+
+#include "glass/diamond.glsl"
+
+const int SHAPE_PILL = 0;
+const int SHAPE_PRISM = 1;
+const int SHAPE_CUBE = 2;
+const int SHAPE_PLATE = 3;
+const int SHAPE_DIAMOND = 4;
+
+const int MARCH_STEPS = 64;        // front sphere trace budget
+const float HIT_TOLERANCE = 1e-3;  // front trace stops within this × scale of the surface
+const float NORMAL_STEP = 1e-4;    // central-difference step × scale (normals, Newton slopes)
+const float SHAPE_FAR = 1e30;
+const float TWO_PI = 6.28318530718;
+
+// 48 bytes in std140 and std430 alike, as the C++ ShapeDims.
+struct ShapeDims {
+  vec4 sizeEdge;  // xyz: size along x, y, z; w: edge rounding radius (pill, cube, plate)
+  vec4 wave;      // plate: amplitude, wavelength, phase; w: 1 gives the pill a squircle rim
+  int kind;       // SHAPE_*
+  int pad0;
+  int pad1;
+  int pad2;
+};
+
+float shapeScale(ShapeDims s) { return max(s.sizeEdge.x, max(s.sizeEdge.y, s.sizeEdge.z)); }
+
+// Stadium slab, rim rounded by r = min(edge, T/2, H/2); the squircle rim measures the rounding in the L4 norm.
+float sdPill(vec3 p, vec3 size, float edge, bool squircle) {
+  float endRadius = 0.5 * size.y;
+  float r = min(edge, min(0.5 * size.z, endRadius));
+  float straight = max(0.5 * size.x - endRadius, 0.0);  // half the length between the end centres
+  float stadium = length(vec2(max(abs(p.x) - straight, 0.0), p.y)) - endRadius;
+  vec2 w = vec2(stadium + r, abs(p.z) - (0.5 * size.z - r));
+  vec2 o = max(w, 0.0);
+  float rim = squircle ? sqrt(sqrt(o.x * o.x * o.x * o.x + o.y * o.y * o.y * o.y)) : length(o);
+  return min(max(w.x, w.y), 0.0) + rim - r;
+}
+
+// Exact distance to an isosceles triangle in YZ (base size.y at z = -size.z/2, apex up), extruded along x.
+float sdPrism(vec3 p, vec3 size) {
+  float b = 0.5 * size.y, h = size.z;
+  vec2 q = vec2(abs(p.y), p.z);
+  vec2 corner = vec2(b, -0.5 * h), slant = vec2(-b, h);
+  vec2 toBase = q - vec2(clamp(q.x, 0.0, b), -0.5 * h);
+  vec2 fromCorner = q - corner;
+  vec2 toSlant = fromCorner - slant * clamp(dot(fromCorner, slant) / dot(slant, slant), 0.0, 1.0);
+  bool inside = q.y > -0.5 * h && slant.x * fromCorner.y - slant.y * fromCorner.x > 0.0;
+  float section = sqrt(min(dot(toBase, toBase), dot(toSlant, toSlant))) * (inside ? -1.0 : 1.0);
+  vec2 w = vec2(section, abs(p.x) - 0.5 * size.x);
+  return min(max(w.x, w.y), 0.0) + length(max(w, 0.0));
+}
+
+float sdRoundedBox(vec3 p, vec3 halfSize, float r) {
+  vec3 q = abs(p) - (halfSize - r);
+  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - r;
+}
+
+float plateHeight(vec2 xy, vec4 wave) {
+  float k = TWO_PI / wave.y;
+  return wave.x * sin(k * xy.x + wave.z) * sin(k * xy.y + wave.z);
+}
+
+vec2 plateSlope(vec2 xy, vec4 wave) {
+  float k = TWO_PI / wave.y;
+  float sx = sin(k * xy.x + wave.z), sy = sin(k * xy.y + wave.z);
+  return wave.x * k * vec2(cos(k * xy.x + wave.z) * sy, sx * cos(k * xy.y + wave.z));
+}
+
+// The sheared box's largest Jacobian singular value for slopes up to A·k: dividing by it keeps a Lipschitz-1 bound.
+float plateLipschitz(vec4 wave) {
+  float s = abs(wave.x) * TWO_PI / wave.y;
+  return sqrt(1.0 + 0.5 * s * s + s * sqrt(1.0 + 0.25 * s * s));
+}
+
+float sdPlate(vec3 p, vec4 sizeEdge, vec4 wave) {
+  vec3 halfSize = 0.5 * sizeEdge.xyz;
+  float r = min(sizeEdge.w, min(halfSize.z, min(halfSize.x, halfSize.y)));
+  vec3 q = vec3(p.xy, p.z - plateHeight(p.xy, wave));
+  return sdRoundedBox(q, halfSize, r) / plateLipschitz(wave);
+}
+
+float shapeSdf(ShapeDims s, vec3 p) {
+  if (s.kind == SHAPE_PILL) return sdPill(p, s.sizeEdge.xyz, s.sizeEdge.w, s.wave.w > 0.5);
+  if (s.kind == SHAPE_PRISM) return sdPrism(p, s.sizeEdge.xyz);
+  if (s.kind == SHAPE_CUBE) {
+    vec3 halfSize = 0.5 * s.sizeEdge.xyz;
+    return sdRoundedBox(p, halfSize, min(s.sizeEdge.w, min(halfSize.x, min(halfSize.y, halfSize.z))));
+  }
+  if (s.kind == SHAPE_PLATE) return sdPlate(p, s.sizeEdge, s.wave);
+  return diamondSdf(p);
+}
+
+// Outward unit normal: central differences; the diamond's exact facet normal.
+vec3 shapeNormal(ShapeDims s, vec3 p) {
+  if (s.kind == SHAPE_DIAMOND) {
+    int facet;
+    return diamondNormal(p, facet);
+  }
+  float h = NORMAL_STEP * shapeScale(s);
+  vec3 g = vec3(shapeSdf(s, p + vec3(h, 0.0, 0.0)) - shapeSdf(s, p - vec3(h, 0.0, 0.0)),
+                shapeSdf(s, p + vec3(0.0, h, 0.0)) - shapeSdf(s, p - vec3(0.0, h, 0.0)),
+                shapeSdf(s, p + vec3(0.0, 0.0, h)) - shapeSdf(s, p - vec3(0.0, 0.0, h)));
+  float size = length(g);
+  return size > 1e-20 ? g / size : vec3(0.0, 0.0, 1.0);  // the centre has no preferred normal
+}
+
+// Half size of the object-space box around the shape: the proxy box.
+vec3 shapeHalfExtent(ShapeDims s) {
+  vec3 halfSize = 0.5 * s.sizeEdge.xyz;
+  if (s.kind == SHAPE_PILL) return vec3(max(halfSize.x, halfSize.y), halfSize.y, halfSize.z);
+  if (s.kind == SHAPE_PLATE) return vec3(halfSize.xy, halfSize.z + abs(s.wave.x));
+  if (s.kind == SHAPE_DIAMOND) return vec3(diamondGirdle.xx, max(diamondGirdle.z, diamondGirdle.w));
+  return halfSize;
+}
+
+// 1 / v with zero components replaced by a tiny number, so slab tests need no special cases.
+vec3 shapeInverse(vec3 v) { return 1.0 / mix(v, vec3(1e-20), lessThan(abs(v), vec3(1e-20))); }
+
+// The stretch [t0, t1] of the ray inside the box |p| <= halfSize.
+bool shapeBoxRange(vec3 ro, vec3 rd, vec3 halfSize, out float t0, out float t1) {
+  vec3 inv = shapeInverse(rd);
+  vec3 a = (-halfSize - ro) * inv, b = (halfSize - ro) * inv;
+  vec3 lo = min(a, b), hi = max(a, b);
+  t0 = max(lo.x, max(lo.y, lo.z));
+  t1 = min(hi.x, min(hi.y, hi.z));
+  return t0 <= t1;
+}
+
+// Exit from inside the stadium in XY (end centres at x = ±a, radius rr); d.xy need not be unit.
+float stadiumExit(vec2 p, vec2 d, float a, float rr) {
+  if (dot(d, d) < 1e-12) return SHAPE_FAR;
+  float side = d.x;
+  if (abs(d.y) > 1e-12) {
+    float t = ((d.y > 0.0 ? rr : -rr) - p.y) / d.y;
+    float x = p.x + t * d.x;
+    if (abs(x) <= a) return t;  // through a straight side
+    side = x;
+  }
+  // Past the straight part, the ray is in the end disc on that side and leaves it at the far root.
+  vec2 o = p - vec2(side > 0.0 ? a : -a, 0.0);
+  float qa = dot(d, d), qb = dot(o, d), qc = dot(o, o) - rr * rr;
+  return (-qb + sqrt(max(qb * qb - qa * qc, 0.0))) / qa;
+}
+
+float slabExit(float p, float d, float halfSize) {
+  return abs(d) < 1e-12 ? SHAPE_FAR : ((d > 0.0 ? halfSize : -halfSize) - p) / d;
+}
+
+// Newton on f(t) = sdf(p + t·d) from a t at or past the surface: monotone onto the exit for a convex f.
+float refineExit(ShapeDims s, vec3 p, vec3 d, float t, int steps) {
+  float h = NORMAL_STEP * shapeScale(s);
+  for (int i = 0; i < steps; ++i) {
+    float f = shapeSdf(s, p + t * d);
+    float slope = (shapeSdf(s, p + (t + h) * d) - shapeSdf(s, p + (t - h) * d)) / (2.0 * h);
+    if (slope < 1e-3) break;  // grazing: a Newton step would fly off
+    t = max(t - f / slope, 0.0);
+  }
+  return t;
+}
+
+// The plate's face z = h(x, y) + offset along the ray: tangent-plane seed, then 3 Newton iterations.
+float plateFaceExit(vec3 p, vec3 d, vec4 wave, float offset, float tolerance) {
+  float t = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    vec3 q = p + t * d;
+    float g = q.z - plateHeight(q.xy, wave) - offset;
+    float slope = d.z - dot(plateSlope(q.xy, wave), d.xy);
+    if (abs(slope) < 1e-6) return SHAPE_FAR;
+    t -= g / slope;
+  }
+  vec3 q = p + t * d;
+  bool settled = abs(q.z - plateHeight(q.xy, wave) - offset) < tolerance;
+  return t > 0.0 && settled ? t : SHAPE_FAR;
+}
+
+vec4 prismPlane(vec3 size, int i) {
+  float b = 0.5 * size.y, h = size.z, slant = sqrt(h * h + b * b);
+  if (i == 0) return vec4(1.0, 0.0, 0.0, 0.5 * size.x);
+  if (i == 1) return vec4(-1.0, 0.0, 0.0, 0.5 * size.x);
+  if (i == 2) return vec4(0.0, 0.0, -1.0, 0.5 * h);
+  if (i == 3) return vec4(0.0, h / slant, b / slant, 0.5 * b * h / slant);
+  return vec4(0.0, -h / slant, b / slant, 0.5 * b * h / slant);
+}
+
+// Front hit from outside: sphere tracing from the bounding box (analytic for the diamond). facet: the
+// diamond's entry facet, -1 for the other shapes.
+bool shapeEnter(ShapeDims s, vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
+  if (s.kind == SHAPE_DIAMOND) return diamondEnter(ro, rd, t, n, facet);
+  facet = -1;
+  t = 0.0;
+  n = vec3(0.0, 0.0, 1.0);
+  float tolerance = HIT_TOLERANCE * shapeScale(s);
+  float t0, t1;
+  if (!shapeBoxRange(ro, rd, shapeHalfExtent(s) + tolerance, t0, t1) || t1 < 0.0) return false;
+  t = max(t0, 0.0);
+  for (int i = 0; i < MARCH_STEPS && t <= t1; ++i) {
+    float d = shapeSdf(s, ro + t * rd);
+    if (d < tolerance) {
+      n = shapeNormal(s, ro + t * rd);
+      return true;
+    }
+    t += d;
+  }
+  return false;
+}
+
+// Back exit from inside along unit d, analytic for every shape; n is the outward unit normal at the exit.
+bool shapeExit(ShapeDims s, vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
+  facet = -1;
+  n = vec3(0.0, 0.0, 1.0);
+  vec3 size = s.sizeEdge.xyz;
+  if (s.kind == SHAPE_DIAMOND) return diamondExit(p, d, t, n, facet);
+  if (s.kind == SHAPE_PRISM) {
+    t = SHAPE_FAR;
+    for (int i = 0; i < 5; ++i) {
+      vec4 plane = prismPlane(size, i);
+      float along = dot(plane.xyz, d);
+      if (along <= 1e-8) continue;
+      float ti = max((plane.w - dot(plane.xyz, p)) / along, 0.0);
+      if (ti < t) {
+        t = ti;
+        n = plane.xyz;
+      }
+    }
+    return t < SHAPE_FAR;
+  }
+  // A sharp shape holding this one gives the seed; Newton steps land it on the rounded surface.
+  float seed;
+  int steps;
+  if (s.kind == SHAPE_PILL) {
+    float a = max(0.5 * (size.x - size.y), 0.0);
+    seed = min(stadiumExit(p.xy, d.xy, a, 0.5 * size.y), slabExit(p.z, d.z, 0.5 * size.z));
+    steps = 4;
+  } else if (s.kind == SHAPE_CUBE) {
+    float t0;
+    shapeBoxRange(p, d, 0.5 * size, t0, seed);
+    steps = 4;
+  } else {  // plate: the vertical rim or a wavy face, then onto the rounded rim
+    float tolerance = 1e-4 * shapeScale(s);
+    float side = min(slabExit(p.x, d.x, 0.5 * size.x), slabExit(p.y, d.y, 0.5 * size.y));
+    float top = plateFaceExit(p, d, s.wave, 0.5 * size.z, tolerance);
+    float bottom = plateFaceExit(p, d, s.wave, -0.5 * size.z, tolerance);
+    seed = min(side, min(top, bottom));
+    steps = 2;
+  }
+  if (!(seed < SHAPE_FAR)) return false;
+  t = refineExit(s, p, d, seed, steps);
+  n = shapeNormal(s, p + t * d);
+  return true;
+}
+
+#endif
