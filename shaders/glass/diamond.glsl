@@ -48,19 +48,25 @@ vec3 diamondNormal(vec3 p, out int facet) {
   return facet == GIRDLE_FACET ? normalize(vec3(p.xy, 0.0)) : diamondPlanes[facet].xyz;
 }
 
-// The gap between the largest and second-largest facet terms: zero on an edge, for the wireframe view.
+// For a point on the stone's surface, the distance along its facet to the nearest edge (the wireframe
+// view): the gap between the largest and second-largest facet terms, over the sine of the angle
+// between those two facets, since the second term grows at that rate along the first facet.
 float diamondEdgeDistance(vec3 p) {
   float first = length(p.xy) - diamondGirdle.x, second = -DIAMOND_FAR;
+  vec3 n1 = vec3(normalize(p.xy + vec2(1e-20)), 0.0), n2 = n1;
   for (int i = 0; i < DIAMOND_PLANES; ++i) {
     float d = dot(diamondPlanes[i].xyz, p) - diamondPlanes[i].w;
     if (d > first) {
       second = first;
+      n2 = n1;
       first = d;
+      n1 = diamondPlanes[i].xyz;
     } else if (d > second) {
       second = d;
+      n2 = diamondPlanes[i].xyz;
     }
   }
-  return first - second;
+  return (first - second) / max(length(cross(n1, n2)), 1e-3);
 }
 
 // Front hit from outside: the last entering plane (or the girdle) before the first exiting one.

@@ -1,6 +1,7 @@
 #include "core/assets.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -21,15 +22,27 @@ std::optional<std::filesystem::path> Assets::font(const std::string& family) con
   return std::nullopt;
 }
 
-std::vector<std::filesystem::path> Assets::panoramas() const {
+std::vector<std::filesystem::path> filesIn(const std::filesystem::path& folder,
+                                           std::span<const std::string_view> extensions) {
   std::vector<std::filesystem::path> found;
   std::error_code ec;
-  for (auto it = std::filesystem::directory_iterator(root_ / "hdri", ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
-    if (it->path().extension() == ".exr") found.push_back(it->path());
+  for (auto it = std::filesystem::directory_iterator(folder, ec); !ec && it != std::filesystem::directory_iterator();
+       it.increment(ec)) {
+    std::string extension = it->path().extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (std::find(extensions.begin(), extensions.end(), extension) != extensions.end() && it->is_regular_file(ec))
+      found.push_back(it->path());
+  }
   std::sort(found.begin(), found.end());
   return found;
 }
+
+std::vector<std::filesystem::path> Assets::panoramas() const {
+  constexpr std::array<std::string_view, 1> kExr{".exr"};
+  return filesIn(root_ / "hdri", kExr);
+}
+
+std::vector<std::filesystem::path> Assets::photos() const { return filesIn(root_ / "photos", kPictureExtensions); }
 
 std::optional<std::filesystem::path> Assets::file(const std::filesystem::path& path, std::string_view fallback) const {
   std::error_code ec;
@@ -54,6 +67,9 @@ std::vector<std::string> Assets::missing() const {
     if (!font(family))
       lines.push_back(std::string("font ") + family + " (" + (root_ / "fonts").string() +
                       "): using a built-in face instead; run scripts/setup to fetch it");
+  if (photos().empty())
+    lines.push_back("photos (" + (root_ / "photos").string() +
+                    "): glass refracts a procedural gradient; run scripts/setup to fetch mate-backgrounds'");
   if (panoramas().empty())
     lines.push_back("HDR panoramas (" + (root_ / "hdri").string() +
                     "): scenes use a procedural sky; run scripts/setup to fetch blender-data's");

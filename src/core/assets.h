@@ -2,12 +2,23 @@
 // Where the fetched, optional assets are (scripts/setup puts them in assets/cache/), and which ones
 // are missing. Nothing here is required: every user has a built-in fallback and names what it lacks.
 #include <filesystem>
+#include <array>
+#include <span>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace vitrine {
+
+// The picture files a folder of backgrounds is searched for (lower case).
+inline constexpr std::array<std::string_view, 8> kPictureExtensions = {".jpg", ".jpeg", ".png", ".webp",
+                                                                       ".tif", ".tiff", ".bmp", ".exr"};
+
+// Regular files in `folder` with one of `extensions` (compared in lower case), sorted by name; none when
+// the folder cannot be read.
+std::vector<std::filesystem::path> filesIn(const std::filesystem::path& folder,
+                                           std::span<const std::string_view> extensions);
 
 class Assets {
  public:
@@ -18,6 +29,7 @@ class Assets {
   const std::filesystem::path& root() const { return root_; }
   std::optional<std::filesystem::path> font(const std::string& family) const;  // "Fraunces", "CormorantSC"
   std::vector<std::filesystem::path> panoramas() const;                       // HDR environment maps
+  std::vector<std::filesystem::path> photos() const;                          // pictures for backgrounds
   // A file a user named (a panorama or font given on the command line or in a parameter), relative
   // paths from the working directory: the path when it is a readable regular file; otherwise none, and
   // "PATH: WHY; using FALLBACK" joins missing() and is printed once, so the gallery shows it too.

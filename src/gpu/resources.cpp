@@ -55,7 +55,11 @@ uint32_t fullMipCount(VkExtent3D extent) {
 }
 
 void Buffer::use(VkCommandBuffer cmd, const BufferUse& next) {
-  if (readOnly(last_.access) && readOnly(next.access)) {  // reads after reads: widen, no barrier
+  if (readOnly(last_.access) && readOnly(next.access)) {
+    // A read after reads: the last write was made visible to the earlier readers' stages and accesses
+    // only. A read in another stage (or of another kind) chains one more dependency after them.
+    if ((next.stage & ~last_.stage) || (next.access & ~last_.access))
+      memoryBarrier(cmd, {last_.stage, VK_ACCESS_2_NONE}, next);
     last_.stage |= next.stage;
     last_.access |= next.access;
     return;
@@ -121,6 +125,11 @@ VkImageView Image::mipView(uint32_t level) const {
 void Image::use(VkCommandBuffer cmd, const ImageUse& next) {
   if (last_.layout == next.layout && readOnly(last_.access) && readOnly(next.access) &&
       last_.layout != VK_IMAGE_LAYOUT_UNDEFINED) {
+    // A read after reads in the same layout: the last write (or layout change) was made visible to the
+    // earlier readers only, so a read in another stage or of another kind chains one more dependency
+    // after theirs; reads already covered need nothing.
+    if ((next.stage & ~last_.stage) || (next.access & ~last_.access))
+      transition(cmd, image_, {last_.stage, VK_ACCESS_2_NONE, last_.layout}, next, desc_.aspect);
     last_.stage |= next.stage;
     last_.access |= next.access;
     return;

@@ -110,6 +110,7 @@ class Gallery {
   FixedStep steps_;   // after input_, whose dt it is built from
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
+  std::vector<std::string> drops_;  // files dropped since the last step
 
   bool vsync_;
   bool uiHidden_ = false;
@@ -223,6 +224,7 @@ void Gallery::handleKeys() {
     }
   }
   keys_.insert(keys_.end(), keys.begin(), keys.end());
+  for (std::string& path : window_.takeDrops()) drops_.push_back(std::move(path));
 }
 
 void Gallery::switchScene(const SceneInfo& info) {
@@ -294,6 +296,8 @@ void Gallery::simulate() {
   for (int due = steps_.advance(elapsed); due > 0; --due) {
     input_.cursor = cursor_.take();
     input_.keysPressed = std::exchange(keys_, {});
+    input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
+    input_.droppedFiles = std::exchange(drops_, {});
     renderer_.scene().update(input_);
     shown_ = input_;
     input_.time += input_.dt;

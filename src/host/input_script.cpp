@@ -177,7 +177,7 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       parse.fail(
           fmt::format("time {} is before the previous event's {}; times must not decrease", word[0], previousTime));
     previousTime = event.time;
-    if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel or key");
+    if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel, key, hold or release");
 
     const std::string_view verb = word[1];
     const size_t arguments = word.size() - 2;
@@ -195,14 +195,15 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       if (std::abs(steps) > std::numeric_limits<float>::max())
         parse.fail(fmt::format("wheel steps {} are out of range", word[2]));
       event.wheel = float(steps);
-    } else if (verb == "key") {
+    } else if (verb == "key" || verb == "hold" || verb == "release") {
       parse.expectArguments(verb, arguments, 1, " (NAME)");
-      event.kind = InputEvent::Kind::Key;
+      event.kind = verb == "key" ? InputEvent::Kind::Key : verb == "hold" ? InputEvent::Kind::Hold : InputEvent::Kind::Release;
       const std::optional<int> key = keyFromName(word[2]);
       if (!key) parse.fail(fmt::format("unknown key '{}'; {}", word[2], keyHint(lowercase(word[2]))));
       event.key = *key;
     } else {
-      parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel or key", word[1]));
+      parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel, key, hold or release",
+                             word[1]));
     }
     script.events.push_back(event);
   }
@@ -237,8 +238,15 @@ StepInput InputPlayer::step(double stepTime, VkExtent2D outputPixels) {
   StepInput input;
   for (; next_ < script_.events.size() && script_.events[next_].time <= stepTime + kTimeSlack; ++next_) {
     const InputEvent& event = script_.events[next_];
-    if (event.kind == InputEvent::Kind::Key) {  // keys go straight to the scene, not through the mouse
+    // Keys go straight to the scene, not through the mouse. A held key is pressed once, then held.
+    if (event.kind == InputEvent::Kind::Key || event.kind == InputEvent::Kind::Hold) {
       input.keysPressed.push_back(event.key);
+      if (event.kind == InputEvent::Kind::Hold && std::find(keysHeld_.begin(), keysHeld_.end(), event.key) == keysHeld_.end())
+        keysHeld_.push_back(event.key);
+      continue;
+    }
+    if (event.kind == InputEvent::Kind::Release) {
+      std::erase(keysHeld_, event.key);
       continue;
     }
     if (event.kind == InputEvent::Kind::Move) position_ = event.position, inside_ = true;
@@ -250,6 +258,7 @@ StepInput InputPlayer::step(double stepTime, VkExtent2D outputPixels) {
   }
   observe(outputPixels, false, 0.0f);  // a step with no events still sees the cursor, at this output size
   input.cursor = tracker_.take();
+  input.keysHeld = keysHeld_;
   return input;
 }
 

@@ -10,6 +10,8 @@
 //   key NAME      a key press: a-z, 0-9, f1-f12, space, enter, escape, tab, backspace, left, right,
 //                 up, down, minus, equal, comma, period, slash, semicolon, apostrophe, grave,
 //                 backslash, left_bracket, right_bracket (case-insensitive)
+//   hold NAME     the key goes down and stays down (glass' Z) until
+//   release NAME  it comes up
 // Times are finite, >= 0 and never decrease down the file. The cursor stays where the last move put it
 // (at the centre of the output before the first move).
 #include <vulkan/vulkan.h>
@@ -27,7 +29,7 @@
 namespace vitrine::host {
 
 struct InputEvent {
-  enum class Kind { Move, Down, Up, Wheel, Key, Leave };
+  enum class Kind { Move, Down, Up, Wheel, Key, Leave, Hold, Release };
   double time = 0.0;
   Kind kind = Kind::Move;
   glm::vec2 position{0.0f};  // Move: normalised, 0..1
@@ -51,6 +53,7 @@ std::optional<int> keyFromName(std::string_view name);
 struct StepInput {
   CursorInput cursor;
   std::vector<int> keysPressed;  // GLFW key codes, in file order
+  std::vector<int> keysHeld;     // keys down at the end of the step (hold ... release)
 };
 
 // Replays a script one fixed simulation step at a time.
@@ -81,6 +84,7 @@ class InputPlayer {
   glm::vec2 position_{0.5f};
   bool inside_ = false;  // over the view: from the first move until a leave
   bool held_ = false;
+  std::vector<int> keysHeld_;
   CursorTracker tracker_;
 };
 

@@ -52,6 +52,7 @@ FrameTimes Offscreen::renderFrame() {
     StepInput step = player_->step(input_.time, size_);
     input_.cursor = step.cursor;
     input_.keysPressed = std::move(step.keysPressed);
+    input_.keysHeld = std::move(step.keysHeld);
   }
   renderer_.scene().update(input_);
   VK_CHECK(vkResetCommandBuffer(cmd_, 0));

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <utility>
 
 namespace vitrine::host {
@@ -48,6 +49,7 @@ Window::Window(VkExtent2D size, bool fullscreen) {
   glfwSetKeyCallback(window_, &Window::onKey);
   glfwSetMouseButtonCallback(window_, &Window::onMouseButton);
   glfwSetScrollCallback(window_, &Window::onScroll);
+  glfwSetDropCallback(window_, &Window::onDrop);
   if (fullscreen) toggleFullscreen();
 }
 
@@ -102,6 +104,8 @@ void Window::toggleFullscreen() {
 
 std::vector<int> Window::takeKeys() { return std::exchange(keys_, {}); }
 
+std::vector<std::string> Window::takeDrops() { return std::exchange(drops_, {}); }
+
 Pointer Window::takePointer() {
   double x = 0.0, y = 0.0;
   int width = 0, height = 0;
@@ -118,7 +122,17 @@ Pointer Window::takePointer() {
 }
 
 void Window::onKey(GLFWwindow* window, int key, int, int action, int) {
-  if (action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) owner(window).keys_.push_back(key);
+  if (key == GLFW_KEY_UNKNOWN) return;
+  Window& self = owner(window);
+  if (action == GLFW_PRESS) {
+    self.keys_.push_back(key);
+    if (std::find(self.held_.begin(), self.held_.end(), key) == self.held_.end()) self.held_.push_back(key);
+  }
+  if (action == GLFW_RELEASE) std::erase(self.held_, key);
+}
+
+void Window::onDrop(GLFWwindow* window, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) owner(window).drops_.emplace_back(paths[i]);
 }
 
 void Window::onMouseButton(GLFWwindow* window, int button, int action, int) {

@@ -50,6 +50,8 @@ class Window {
   void toggleFullscreen();  // on the primary monitor; back to the windowed position and size
 
   std::vector<int> takeKeys();  // GLFW key codes pressed since the last take, in order
+  const std::vector<int>& keysHeld() const { return held_; }  // GLFW key codes down now
+  std::vector<std::string> takeDrops();  // paths of files dropped onto the window since the last take
   Pointer takePointer();
 
  private:
@@ -60,10 +62,13 @@ class Window {
   static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
   static void onScroll(GLFWwindow* window, double x, double y);
+  static void onDrop(GLFWwindow* window, int count, const char** paths);
 
   GLFWwindow* window_ = nullptr;
   int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
   std::vector<int> keys_;
+  std::vector<int> held_;
+  std::vector<std::string> drops_;
   bool leftPressed_ = false;
   float wheel_ = 0.0f;
 };

@@ -3,7 +3,9 @@
 // VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR alone (EXR only).
 #include "image/image.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace vitrine {
 
@@ -14,5 +16,16 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image);
 // anything but a regular file that starts like an EXR (a device, a folder, a PNG named .exr).
 ImageRgba readImage(const std::filesystem::path& path);
 bool canWritePng();
+
+// A picture for display (a photo, a wallpaper): 8-bit RGBA, sRGB-encoded, top row first.
+struct Picture {
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> rgba;
+};
+// Reads any format the image library knows (JPEG, PNG, WebP, TIFF, EXR, ...) scaled down, keeping its
+// aspect, so that neither side exceeds maxSide; grey and RGB gain opaque alpha. Throws vitrine::Error
+// naming the path and the reason, also when the build has no general image reader (EXR-only builds).
+Picture readPicture(const std::filesystem::path& path, uint32_t maxSide);
+bool canReadPictures();
 
 }  // namespace vitrine

@@ -50,4 +50,38 @@ ImageRgba readImage(const std::filesystem::path& path) {
   return image;
 }
 
+bool canReadPictures() { return true; }
+
+Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
+  OIIO::ImageBuf source(path.string());
+  if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), source.geterror()));
+  const OIIO::ImageSpec& spec = source.spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw Error(fmt::format("Cannot read {}: it has no pixels.", path.string()));
+  // HDR pictures (EXR) arrive linear; displayed pictures are sRGB-encoded from here on.
+  OIIO::ImageBuf image = spec.format.is_floating_point() ? OIIO::ImageBufAlgo::colorconvert(source, "linear", "sRGB")
+                                                         : source;
+  const float scale = std::min(1.0f, float(maxSide) / float(std::max(spec.width, spec.height)));
+  if (scale < 1.0f) {
+    const int w = std::max(1, int(spec.width * scale)), h = std::max(1, int(spec.height * scale));
+    image = OIIO::ImageBufAlgo::resize(image, "", 0.0f, OIIO::ROI(0, w, 0, h, 0, 1, 0, spec.nchannels));
+  }
+  const OIIO::ImageSpec& out = image.spec();
+  std::vector<uint8_t> channels(size_t(out.width) * out.height * out.nchannels);
+  if (!image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, channels.data()))
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), image.geterror()));
+  Picture picture{uint32_t(out.width), uint32_t(out.height), std::vector<uint8_t>(size_t(out.width) * out.height * 4, 255)};
+  const int n = out.nchannels;
+  for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
+    for (int c = 0; c < 4; ++c) {
+      if (c < 3) picture.rgba[i * 4 + c] = channels[i * n + (n >= 3 ? c : 0)];  // grey fills R, G and B
+      else if (n == 4 || n == 2) picture.rgba[i * 4 + 3] = channels[i * n + n - 1];
+    }
+  return picture;
+}
+
 }  // namespace vitrine

@@ -11,6 +11,13 @@ namespace vitrine {
 
 bool canWritePng() { return false; }
 
+bool canReadPictures() { return false; }
+
+Picture readPicture(const std::filesystem::path& path, uint32_t) {
+  throw Error(fmt::format("Cannot read {}: this build reads EXR only (built with VITRINE_WITH_OIIO=OFF).",
+                          path.string()));
+}
+
 void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
   if (path.extension() != ".exr" && path.extension() != ".EXR")
     throw Error(

@@ -1,4 +1,5 @@
 #include "scenes/bloom/bloom_scene.h"
+#include "scenes/glass/glass_scene.h"
 #include "scenes/kifs/kifs_scene.h"
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
@@ -8,6 +9,7 @@ namespace vitrine {
 std::span<const SceneInfo> sceneRegistry() {
   static const SceneInfo scenes[] = {
       bloom::kSceneInfo,
+      glass::kSceneInfo,
       kifs::kSceneInfo,
       noodles::kSceneInfo,
   };

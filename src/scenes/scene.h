@@ -14,6 +14,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <span>
 #include <string>
@@ -39,7 +40,12 @@ struct FrameInput {
   bool reducedMotion = false;  // --reduced-motion: freeze what moves on its own, and grain
   double lastGpuMs = 0.0;      // the previous frame's GPU time, for adaptive quality
   CursorInput cursor;
-  std::vector<int> keysPressed;  // GLFW key codes pressed this frame (gallery only)
+  std::vector<int> keysPressed;  // GLFW key codes pressed this frame (gallery and --input)
+  std::vector<int> keysHeld;     // GLFW key codes down now (glass: Z held)
+  std::vector<std::string> droppedFiles;  // paths dropped onto the window this frame (gallery only)
+
+  bool pressed(int key) const { return std::find(keysPressed.begin(), keysPressed.end(), key) != keysPressed.end(); }
+  bool held(int key) const { return std::find(keysHeld.begin(), keysHeld.end(), key) != keysHeld.end(); }
 };
 
 struct FrameContext {

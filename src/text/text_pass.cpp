@@ -137,7 +137,7 @@ void TextPass::record(const FrameContext& frame, gpu::Image& target, const std::
   const gpu::StreamSlice glyphSlice = frame.stream.write(bytes(glyphs));
   const gpu::Bindings bindings =
       gpu::Bindings()
-          .storageImage(target.view())
+          .storageImage(target.desc().mips > 1 ? target.mipView(0) : target.view())  // a chain: draw on level 0
           .sampledImage(atlas.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                         gpu::use::ComputeSample.layout)
           .storageBuffer(drawSlice.buffer, drawSlice.offset, drawSlice.size)

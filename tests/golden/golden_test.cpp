@@ -62,6 +62,10 @@ std::vector<GoldenCase> loadCases(bool mutations) {
       auto parameter = splitParameter(word);
       if (parameter.first == "reduced_motion")  // a host flag, not a scene parameter
         c.config.reducedMotion = parameter.second == "on";
+      else if (parameter.first == "preset")  // a scene preset, applied before the other values
+        c.config.presets.push_back(parameter.second);
+      else if (parameter.first == "input")  // an input script beside cases.txt (held keys, drags)
+        c.config.input = host::loadInputScript(kGoldenDir / parameter.second);
       else if (parameter.first == "fail_fraction")  // per-case metric overrides, see cases.txt
         c.thresholds.failFraction = std::stod(parameter.second);
       else if (parameter.first == "hard_limit")

@@ -12,13 +12,18 @@ TEST(Assets, ReportsEachMissingAssetAndFindsPresentOnes) {
   std::filesystem::remove_all(root);
   std::filesystem::create_directories(root / "fonts");
   Assets empty(root);
-  EXPECT_EQ(empty.missing().size(), 4u);  // three fonts and the panoramas
+  EXPECT_EQ(empty.missing().size(), 5u);  // three fonts, the photos and the panoramas
   EXPECT_FALSE(empty.font("Fraunces"));
 
   std::ofstream(root / "fonts" / "Fraunces.woff2") << "wOF2";
   std::filesystem::create_directories(root / "hdri");
   std::ofstream(root / "hdri" / "studio.exr") << "x";
+  std::filesystem::create_directories(root / "photos");
+  std::ofstream(root / "photos" / "01-dune.JPG") << "x";  // extensions in any case
+  std::ofstream(root / "photos" / "COPYRIGHT") << "x";    // not a picture
   Assets some(root);
+  ASSERT_EQ(some.photos().size(), 1u);
+  EXPECT_EQ(some.photos()[0].filename(), "01-dune.JPG");
   EXPECT_TRUE(some.font("Fraunces"));
   EXPECT_EQ(some.panoramas().size(), 1u);
   ASSERT_EQ(some.missing().size(), 2u);

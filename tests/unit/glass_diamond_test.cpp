@@ -303,6 +303,9 @@ TEST(Diamond, EdgeDistanceVanishesOnEdges) {
     EXPECT_NEAR(diamondEdgeDistance(g, 0.5f * (v.table[k] + v.table[(k + 1) % 8])), 0.0f, 1e-3f);  // table | star
   }
   EXPECT_GT(diamondEdgeDistance(g, {0.0f, 0.0f, g.tableHeight}), 10.0f);  // the table's middle
+  // A true distance along the facet: from the table's centre to its edges is the octagon's apothem.
+  const float apothem = glm::length(glm::vec2(v.table[0])) * std::cos(glm::pi<float>() / 8.0f);
+  EXPECT_NEAR(diamondEdgeDistance(g, {0.0f, 0.0f, g.tableHeight}), apothem, 1e-3f * g.diameter);
 }
 
 TEST(Diamond, BufferWordsMatchTheShaderBlock) {

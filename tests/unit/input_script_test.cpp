@@ -82,7 +82,7 @@ TEST(InputScript, RefusesMalformedLinesNamingFileAndLine) {
     const char* message;
   };
   const Case cases[] = {
-      {"0 click", "s.txt:1: unknown verb 'click'; expected move, leave, down, up, wheel or key"},
+      {"0 click", "s.txt:1: unknown verb 'click'; expected move, leave, down, up, wheel, key, hold or release"},
       {"# header\n\n0 Down", "s.txt:3: unknown verb 'Down'"},
       {"0.5", "s.txt:1: expected a verb after the time"},
       {"0 move 0.5", "s.txt:1: 'move' takes 2 arguments (X Y), got 1"},
@@ -141,7 +141,8 @@ class InputScriptFiles : public ::testing::Test {
 
 TEST_F(InputScriptFiles, LoadNamesTheFileInErrors) {
   const auto path = write("bad.txt", "0 down\n0.1 jump\n");
-  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, leave, down, up, wheel or key");
+  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, leave, down, up, wheel, key, hold or "
+                                 "release");
   EXPECT_EQ(loadInputScript(write("good.txt", "0 down\n")).events.size(), 1u);
 }
 
@@ -187,6 +188,21 @@ TEST(InputScript, PlayerAppliesAnEventAtTheFirstStepThatReachesIt) {
     }
     EXPECT_TRUE(player.finished());
   }
+}
+
+// glass' Z: a held key is pressed once, stays in keysHeld until its release, and a plain key press
+// never holds.
+TEST(InputScript, HeldKeysStayDownUntilReleased) {
+  InputPlayer player(parseInputScript("0.1 hold z\n0.1 key a\n0.5 release z\n0.6 release q\n", "s.txt"));
+  const auto first = player.step(0.1, kOutput);
+  EXPECT_EQ(first.keysPressed, (std::vector<int>{GLFW_KEY_Z, GLFW_KEY_A}));
+  EXPECT_EQ(first.keysHeld, std::vector<int>{GLFW_KEY_Z});
+  const auto middle = player.step(0.3, kOutput);
+  EXPECT_TRUE(middle.keysPressed.empty());
+  EXPECT_EQ(middle.keysHeld, std::vector<int>{GLFW_KEY_Z});
+  EXPECT_TRUE(player.step(0.5, kOutput).keysHeld.empty());
+  EXPECT_TRUE(player.step(0.6, kOutput).keysHeld.empty());  // releasing a key that is up changes nothing
+  EXPECT_TRUE(player.finished());
 }
 
 TEST(InputScript, PlayerPutsEarlyEventsInTheFirstStepAndKnowsWhenItIsDone) {

@@ -232,12 +232,14 @@ glm::vec3 diamondNormal(const DiamondGeometry& g, glm::vec3 p, int& facet) {
 
 float diamondEdgeDistance(const DiamondGeometry& g, glm::vec3 p) {
   float first = std::hypot(p.x, p.y) - g.girdleRadius, second = -kInf;
+  const float radius = std::max(std::hypot(p.x, p.y), 1e-20f);
+  glm::vec3 n1{p.x / radius, p.y / radius, 0.0f}, n2 = n1;
   for (const glm::vec4& plane : g.planes) {
     const float d = glm::dot(glm::vec3(plane), p) - plane.w;
-    if (d > first) second = first, first = d;
-    else if (d > second) second = d;
+    if (d > first) second = first, n2 = n1, first = d, n1 = glm::vec3(plane);
+    else if (d > second) second = d, n2 = glm::vec3(plane);
   }
-  return first - second;
+  return (first - second) / std::max(glm::length(glm::cross(n1, n2)), 1e-3f);
 }
 
 bool diamondEnter(const DiamondGeometry& g, glm::vec3 ro, glm::vec3 rd, float& t, glm::vec3& n, int& facet) {

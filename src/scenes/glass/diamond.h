@@ -76,9 +76,9 @@ std::vector<glm::vec3> diamondHullTriangles(const DiamondGeometry& g);
 float diamondSdf(const DiamondGeometry& g, glm::vec3 p);
 // The outward normal of the facet whose term is largest at p (exact on a facet, no finite differences).
 glm::vec3 diamondNormal(const DiamondGeometry& g, glm::vec3 p, int& facet);
-// The gap between the largest and the second-largest facet term (the girdle counts as one): zero on an edge,
-// growing with the distance from it times the sine of the angle between the two facets. The wireframe view
-// draws where it is small.
+// For a point on the surface, the distance along its facet to the nearest edge: the gap between the largest
+// and the second-largest facet term (the girdle counts as one) over the sine of the angle between those two
+// facets, the rate at which the gap grows along the first. The wireframe view draws where it is small.
 float diamondEdgeDistance(const DiamondGeometry& g, glm::vec3 p);
 // Front hit from outside: the last entering plane (or the girdle) before the first exiting one.
 bool diamondEnter(const DiamondGeometry& g, glm::vec3 ro, glm::vec3 rd, float& t, glm::vec3& n, int& facet);

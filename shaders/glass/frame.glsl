@@ -1,0 +1,56 @@
+// The glass scene's per-frame uniform block; mirrors src/scenes/glass/frame_block.h.
+#ifndef GLASS_FRAME_GLSL
+#define GLASS_FRAME_GLSL
+
+layout(std140, set = 0, binding = 0) uniform Frame {
+  mat4 viewProjection;
+  vec4 camera;
+  vec4 view;
+  vec4 glass;
+  ivec4 spectral;
+  vec4 spectralExtra;
+  vec4 sellmeierB;
+  vec4 sellmeierC;
+  ivec4 shape;
+  ivec4 frameInfo;
+  vec4 environment;
+  vec4 shapeSize;
+  vec4 shapeWave;
+  vec4 taa;
+  mat4 rotation;
+  mat4 previousRotation;
+  vec4 centres[4];
+} F;
+
+const float PI = 3.14159265358979;
+
+// The world position at the z = 0 plane under a pixel (origin top-left, y down), and the primary ray.
+vec3 pixelToWorld(vec2 pixel) {
+  vec2 ndc = pixel / F.view.zw * 2.0 - 1.0;
+  return vec3(ndc.x * 0.5 * F.view.x, -ndc.y * 0.5 * F.view.y, 0.0);
+}
+void primaryRay(vec2 pixel, out vec3 origin, out vec3 dir) {
+  vec3 p = pixelToWorld(pixel);
+  if (F.camera.w > 0.5) {
+    origin = vec3(p.xy, F.camera.z);
+    dir = vec3(0.0, 0.0, -1.0);
+  } else {
+    origin = F.camera.xyz;
+    dir = normalize(p - origin);
+  }
+}
+// Where a world point lands on the screen, in pixels.
+vec2 worldToPixel(vec3 p) {
+  vec4 clip = F.viewProjection * vec4(p, 1.0);
+  vec2 ndc = clip.xy / clip.w;
+  return (ndc * 0.5 + 0.5) * F.view.zw;
+}
+
+// Equirectangular lookup: +y up, the panorama turned by the environment rotation.
+vec2 equirectUv(vec3 d) {
+  float phi = atan(d.x, -d.z) + F.environment.y;
+  float theta = acos(clamp(d.y, -1.0, 1.0));
+  return vec2(fract(phi / (2.0 * PI) + 0.5), theta / PI);
+}
+
+#endif

@@ -1,0 +1,59 @@
+#pragma once
+// What the glass refracts, on the CPU side: the `background` parameter's value read as a built-in
+// source or as a file or folder of pictures, the folder cycled by R, and the pictures and panoramas
+// loaded into texels the scene uploads. Nothing here touches the GPU.
+#include "core/assets.h"
+#include "image/image_io.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vitrine::glass {
+
+enum class BackdropKind {
+  Page,      // the scene's own page of text over a photo (the original refracts its README)
+  Photo,     // a picture: the fetched photos, a file, or a folder cycled by R
+  Gradient,  // procedural fallbacks, always there
+  Checker,
+};
+
+// The `background` value, resolved: which kind, and for pictures the files to cycle through.
+struct BackdropSource {
+  BackdropKind kind = BackdropKind::Gradient;
+  std::vector<std::filesystem::path> pictures;  // Page and Photo: empty means "use the gradient"
+  std::string problem;                          // why a named file or folder could not serve, for the panel
+};
+
+// "page", "photo", "gradient", "checker", or a path to an image file or a folder of them.
+BackdropSource resolveBackdrop(std::string_view value, const Assets& assets);
+
+// The picture a backdrop shows now, cycling with next(); a picture that cannot be read is skipped and
+// its reason kept (problem()).
+class PictureCycle {
+ public:
+  void reset(std::vector<std::filesystem::path> pictures, size_t start = 0);
+  // Reads the current picture, or the next readable one; false when none is readable.
+  bool load(uint32_t maxSide, Picture& out);
+  void next() { if (!pictures_.empty()) index_ = (index_ + 1) % pictures_.size(); }
+  const std::string& problem() const { return problem_; }
+  std::string currentName() const;
+
+ private:
+  std::vector<std::filesystem::path> pictures_;
+  size_t index_ = 0;
+  std::string problem_;
+};
+
+// Equirectangular HDR panorama as half-float RGBA texels, from a fetched panorama's name ("studio") or an
+// EXR path; none (and `problem` says why) when neither serves.
+struct Panorama {
+  uint32_t width = 0, height = 0;
+  std::vector<uint16_t> halves;  // width * height * 4
+};
+bool loadPanorama(std::string_view nameOrPath, const Assets& assets, Panorama& out, std::string& problem);
+// The names of the fetched panoramas, for the panel's help.
+std::vector<std::string> panoramaNames(const Assets& assets);
+
+}  // namespace vitrine::glass

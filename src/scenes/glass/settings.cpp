@@ -1,0 +1,174 @@
+#include "scenes/glass/settings.h"
+
+#include "scenes/glass/materials.h"
+#include "scenes/glass/optics.h"
+
+namespace vitrine::glass {
+namespace {
+
+bool parseText(std::string_view text, std::string& out, std::string* error) {
+  if (text.empty()) {
+    if (error) *error = "expected a name or a path";
+    return false;
+  }
+  out = std::string(text);
+  return true;
+}
+
+std::string formatText(const std::string& value) { return value; }
+
+std::vector<std::string> materialNames() {
+  std::vector<std::string> names{"custom"};
+  for (const Material& material : kMaterials) names.emplace_back(material.key);
+  return names;
+}
+
+}  // namespace
+
+int sampleCount(const Settings& settings) { return kSampleCounts[size_t(settings.samplesIndex)]; }
+
+const params::Schema& schema() {
+  using S = Settings;
+  using params::kLogarithmic, params::kTransient;
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<S>();
+    // glass
+    s.add(params::choiceParam<S>({"n", "wavelengths", "Wavelengths traced per pixel, stratified over 380-700 nm.",
+                                  "glass"},
+                                 &S::samplesIndex, {"3", "8", "16", "32", "64"}));
+    s.add(params::choiceParam<S>({"material", "material", "A real or fantasy glass; custom uses ior and abbe. "
+                                  "Moving either slider makes it custom.", "glass"},
+                                 &S::material, materialNames()));
+    s.add(params::floatParam<S>({"ior", "IOR n_d", "Refractive index at the helium d line, 587.56 nm.", "glass"},
+                                &S::ior, 1.0, 3.5));
+    s.add(params::floatParam<S>({"abbe", "Abbe V_d", "Abbe number: lower disperses more.", "glass", kLogarithmic},
+                                &S::abbe, 1.0, 100.0));
+    s.add(params::floatParam<S>({"strength", "refraction strength", "Seed optics: how far the exit ray leans from "
+                                 "the view ray toward the refracted direction.", "glass"},
+                                &S::strength, 0.0, 1.0));
+    s.add(params::choiceParam<S>({"mode", "refraction", "exact: every wavelength finds its own exit; approx: one "
+                                  "exit at a hero wavelength per frame.", "glass"},
+                                 &S::mode, {"exact", "approx"}));
+    s.add(params::boolParam<S>({"jitter", "temporal jitter", "Per-pixel and per-frame wavelength jitter; off "
+                                "samples the stratum centres.", "glass"},
+                               &S::jitter));
+    s.add(params::choiceParam<S>({"optics", "optics", "seed: the original's (Schlick, all-or-nothing TIR, leaning "
+                                  "exit, clipped); physical: exact Fresnel with the split carried, true exit "
+                                  "directions, filmic tone map.", "glass"},
+                                 &S::optics, {"seed", "physical"}));
+    s.add(params::choiceParam<S>({"dispersion", "dispersion", "abbe: Cauchy from n_d and V_d; sellmeier: the "
+                                  "published coefficients of a real material (others keep abbe).", "glass"},
+                                 &S::dispersion, {"abbe", "sellmeier"}));
+    s.add(params::floatParam<S>({"depth", "photo depth", "Physical optics: how far behind the glass the photo "
+                                 "hangs, world units (the view is 1073 tall).", "glass", kLogarithmic},
+                                &S::depth, 20.0, 5000.0));
+    // shape
+    s.add(params::choiceParam<S>({"shape", "shape", "The glass: four of a shape, or one diamond.", "shape"},
+                                 &S::shape, {"pill", "prism", "cube", "plate", "diamond"}));
+    s.add(params::floatParam<S>({"pill_length", "pill length", "Pill length, world units.", "shape"},
+                                &S::pillLength, 40.0, 1000.0));
+    s.add(params::floatParam<S>({"pill_height", "pill height", "Pill height.", "shape"}, &S::pillHeight, 20.0, 600.0));
+    s.add(params::floatParam<S>({"pill_thickness", "pill thickness", "Pill thickness.", "shape"}, &S::pillThickness,
+                                4.0, 400.0));
+    s.add(params::floatParam<S>({"pill_edge", "pill edge", "Rim rounding radius (at most half the thickness).",
+                                 "shape"},
+                                &S::pillEdge, 0.0, 200.0));
+    s.add(params::boolParam<S>({"squircle", "squircle rim", "An L4 rim instead of a round one.", "shape"},
+                               &S::squircle));
+    s.add(params::floatParam<S>({"prism_length", "prism length", "Prism length along x.", "shape"}, &S::prismLength,
+                                40.0, 1000.0));
+    s.add(params::floatParam<S>({"prism_width", "prism width", "The triangle's base.", "shape"}, &S::prismWidth,
+                                20.0, 600.0));
+    s.add(params::floatParam<S>({"prism_depth", "prism depth", "Base to apex, toward the camera.", "shape"},
+                                &S::prismDepth, 10.0, 600.0));
+    s.add(params::floatParam<S>({"cube_size", "cube size", "Cube side.", "shape"}, &S::cubeSize, 20.0, 600.0));
+    s.add(params::floatParam<S>({"cube_edge", "cube edge", "Cube rounding radius.", "shape"}, &S::cubeEdge, 0.0,
+                                150.0));
+    s.add(params::floatParam<S>({"plate_size", "plate size", "Plate side.", "shape"}, &S::plateSize, 40.0, 800.0));
+    s.add(params::floatParam<S>({"plate_thickness", "plate thickness", "Uniform plate thickness.", "shape"},
+                                &S::plateThickness, 4.0, 200.0));
+    s.add(params::floatParam<S>({"plate_edge", "plate edge", "Plate rim rounding.", "shape"}, &S::plateEdge, 0.0,
+                                50.0));
+    s.add(params::floatParam<S>({"wave_amplitude", "wave amplitude", "Height of the plate's waves.", "shape"},
+                                &S::waveAmplitude, 0.0, 80.0));
+    s.add(params::floatParam<S>({"wave_length", "wavelength", "Length of the plate's waves.", "shape",
+                                 kLogarithmic},
+                                &S::waveLength, 50.0, 2000.0));
+    // diamond
+    s.add(params::floatParam<S>({"diamond_size", "diamond size", "Girdle diameter.", "diamond"}, &S::diamondSize,
+                                50.0, 900.0));
+    s.add(params::choiceParam<S>({"diamond_view", "view", "top (T), side (S), bottom (B) or a free tumble (F).",
+                                  "diamond"},
+                                 &S::diamondView, {"top", "side", "bottom", "free"}));
+    s.add(params::choiceParam<S>({"diamond_debug", "debug view", "wireframe, facet colours, or TIR (pink: bounce "
+                                  "budget spent, orange: exit missed).", "diamond", kTransient},
+                                 &S::diamondDebug, {"none", "wireframe", "facets", "tir"}));
+    s.add(params::intParam<S>({"bounces", "TIR bounces", "Internal reflections a ray may take before giving up.",
+                               "diamond"},
+                              &S::bounces, 1, 32));
+    // background
+    s.add(params::customParam<S, std::string>(
+        {"background", "background", "page (text over a photo), photo (R cycles), gradient, checker, or an image "
+         "file or folder (also: drop one on the window).", "background"},
+        &S::background, parseText, formatText));
+    s.add(params::boolParam<S>({"environment", "HDR environment", "An HDR panorama for background, refraction and "
+                                "reflection.", "background"},
+                               &S::environment));
+    s.add(params::customParam<S, std::string>(
+        {"panorama", "panorama", "A fetched panorama's name (studio, city, ...) or an equirectangular EXR.",
+         "background"},
+        &S::panorama, parseText, formatText));
+    s.add(params::floatParam<S>({"exposure", "exposure", "Multiplies the panorama.", "background", kLogarithmic},
+                                &S::exposure, 0.05, 8.0));
+    s.add(params::floatParam<S>({"env_rotation", "rotation", "Turns the panorama about the vertical, radians.",
+                                 "background"},
+                                &S::envRotation, -3.14159265, 3.14159265));
+    // camera and quality
+    s.add(params::choiceParam<S>({"projection", "projection", "Perspective or orthographic.", "camera"},
+                                 &S::projection, {"perspective", "orthographic"}));
+    s.add(params::floatParam<S>({"fov", "FOV", "Vertical field of view, degrees.", "camera"}, &S::fov, 10.0, 120.0));
+    s.add(params::boolParam<S>({"stop_world", "stop the world", "Freeze rotations and waves; the history turns "
+                                "into a progressive average.", "camera", kTransient},
+                               &S::stopWorld));
+    s.add(params::choiceParam<S>({"aa", "AA", "none, FXAA (spatial) or TAA (sub-pixel jitter, reprojection).",
+                                  "camera"},
+                                 &S::aa, {"none", "fxaa", "taa"}));
+    s.add(params::floatParam<S>({"history_alpha", "history alpha", "Weight of the new frame in the running "
+                                 "average.", "camera"},
+                                &S::historyAlpha, 0.02, 1.0));
+    s.add(params::boolParam<S>({"show_proxy", "show proxy", "Tint every proxy fragment pink.", "camera",
+                                kTransient},
+                               &S::showProxy));
+
+    // The original's presets, value for value; every preset also resets what the original's do.
+    const params::KeyValues common{{"material", "custom"}, {"fov", "45"}, {"projection", "perspective"},
+                                   {"mode", "exact"}, {"jitter", "on"}, {"aa", "none"}, {"history_alpha", "0.5"},
+                                   {"stop_world", "off"}, {"show_proxy", "off"}};
+    auto preset = [&](std::string name, std::string help, params::KeyValues values) {
+      values.insert(values.begin(), common.begin(), common.end());
+      s.preset({std::move(name), std::move(help), std::move(values)});
+    };
+    preset("subtle_pill", "Four pills of crown glass, barely dispersing.",
+           {{"shape", "pill"}, {"n", "8"}, {"ior", "1.517"}, {"abbe", "6.5"}, {"strength", "0.035"},
+            {"pill_length", "400"}, {"pill_height", "115"}, {"pill_thickness", "62"}, {"pill_edge", "100"},
+            {"environment", "off"}});
+    preset("prism_rainbow", "Four triangular prisms splitting the photo into bands.",
+           {{"shape", "prism"}, {"n", "16"}, {"ior", "1.6"}, {"abbe", "12"}, {"strength", "0.155"},
+            {"prism_length", "393"}, {"prism_width", "149"}, {"prism_depth", "117"}, {"environment", "off"}});
+    preset("rotating_cube", "The opening scene: four tumbling cubes of a strongly dispersing glass.",
+           {{"shape", "cube"}, {"n", "16"}, {"ior", "1.272"}, {"abbe", "2"}, {"strength", "0.15"},
+            {"cube_size", "230"}, {"cube_edge", "44"}, {"environment", "off"}});
+    preset("wavy_plate", "Four tumbling plates with waves running through them.",
+           {{"shape", "plate"}, {"n", "16"}, {"ior", "1.272"}, {"abbe", "2"}, {"strength", "0.2"},
+            {"plate_size", "346"}, {"plate_thickness", "60"}, {"plate_edge", "10.5"}, {"wave_amplitude", "17"},
+            {"wave_length", "535"}, {"environment", "off"}});
+    preset("diamond", "One round brilliant in a studio panorama.",
+           {{"shape", "diamond"}, {"n", "16"}, {"ior", "2.418"}, {"abbe", "55"}, {"strength", "0.2"},
+            {"diamond_size", "400"}, {"diamond_view", "free"}, {"bounces", "6"}, {"environment", "on"},
+            {"panorama", "studio"}, {"exposure", "0.75"}, {"env_rotation", "-1.0995"}});
+    return s;
+  }();
+  return table;
+}
+
+}  // namespace vitrine::glass

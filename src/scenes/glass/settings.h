@@ -1,0 +1,62 @@
+#pragma once
+// Everything the glass panel, --set, presets and the settings file can change, declared once
+// (params/schema.h), with the original's ranges and defaults (its "Rotating cube" opening scene).
+#include "params/schema.h"
+#include "scenes/glass/shapes.h"
+
+#include <string>
+
+namespace vitrine::glass {
+
+enum class RefractionMode { Exact, Approx };  // per-wavelength exits, or one at a hero wavelength
+enum class Optics { Seed, Physical };
+enum class Dispersion { Abbe, Sellmeier };
+enum class Projection { Perspective, Orthographic };
+enum class Antialiasing { None, Fxaa, Taa };
+enum class DiamondDebug { None, Wireframe, Facets, Tir };
+
+struct Settings {
+  int samplesIndex = 2;           // N = kSampleCounts[i] (optics.h): 16
+  int material = 0;               // 0: custom (ior and abbe below); else kMaterials[material - 1]
+  float ior = 1.272f;             // n_d
+  float abbe = 2.0f;              // V_d
+  float strength = 0.15f;         // seed optics: how far the exit ray leans from the view ray toward the refraction
+  RefractionMode mode = RefractionMode::Exact;
+  bool jitter = true;
+  Optics optics = Optics::Seed;
+  Dispersion dispersion = Dispersion::Abbe;
+  float depth = 400.0f;           // physical optics: the photo's distance behind the glass, world units
+
+  ShapeKind shape = ShapeKind::Cube;
+  float pillLength = 400.0f, pillHeight = 115.0f, pillThickness = 62.0f, pillEdge = 100.0f;
+  bool squircle = false;
+  float prismLength = 393.0f, prismWidth = 149.0f, prismDepth = 117.0f;
+  float cubeSize = 230.0f, cubeEdge = 44.0f;
+  float plateSize = 346.0f, plateThickness = 60.0f, plateEdge = 10.5f;
+  float waveAmplitude = 17.0f, waveLength = 535.0f;
+  float diamondSize = 400.0f;
+  DiamondView diamondView = DiamondView::Free;
+  DiamondDebug diamondDebug = DiamondDebug::None;
+  int bounces = 6;
+
+  std::string background = "page";  // page | photo | gradient | checker | an image file or a folder of them
+  bool environment = false;
+  std::string panorama = "studio";  // a fetched panorama's name, or an equirectangular EXR file
+  float exposure = 1.0f;
+  float envRotation = 0.0f;         // radians about the vertical axis
+
+  Projection projection = Projection::Perspective;
+  float fov = 45.0f;                // degrees, vertical
+  bool stopWorld = false;           // freeze rotation and waves; accumulation turns progressive
+  Antialiasing aa = Antialiasing::None;
+  float historyAlpha = 0.5f;
+  bool showProxy = false;
+
+  bool operator==(const Settings&) const = default;
+};
+
+int sampleCount(const Settings& settings);
+
+const params::Schema& schema();
+
+}  // namespace vitrine::glass
