@@ -20,6 +20,7 @@ layout(std140, set = 0, binding = 0) uniform Frame {
   mat4 rotation;
   mat4 previousRotation;
   vec4 centres[4];
+  vec4 rects[4];  // each instance's pixels on screen: x0, y0, x1, y1 (the compute path's quick test)
 } F;
 
 const float PI = 3.14159265358979;

@@ -1,190 +1,23 @@
 #version 460
-// The spectral work, only where a proxy covers the screen: the primary ray meets the glass (sphere
-// trace, analytic for the diamond), and each of N stratified wavelengths refracts in with its own IOR,
-// finds its own exit (or the hero wavelength's, in approx mode; the diamond walks its TIR bounce
-// chain), refracts out and fetches what it sees. Each wavelength's fetch is weighted by the sRGB
-// colour of its CIE matching functions and the sums are normalised per channel, so glass that does
-// not disperse passes the background through unchanged.
+// The render-pass path: the instanced proxy's fragments, each shading its own pixel through its own
+// instance (shade.glsl), so only covered pixels pay; the surface's own depth sorts overlapping instances.
 #extension GL_GOOGLE_include_directive : require
-#include "common/hash.glsl"
-#include "glass/instance.glsl"
-#include "glass/optics.glsl"
-
-layout(set = 0, binding = 1) uniform sampler2D backdrop;
-layout(set = 0, binding = 2) uniform sampler2D panorama;
+#include "glass/shade.glsl"
 
 layout(location = 0) flat in int instance;
 layout(location = 0) out vec4 colour;  // a = 1: covered by glass (the resolve pass fills the rest)
-layout(location = 1) out vec2 motion;  // pixels from here to where this point was last frame
+layout(location = 1) out vec2 motion;
 
-const int OPTICS_PHYSICAL = 1;
-
-bool physical() { return F.spectral.w == OPTICS_PHYSICAL; }
-
-float iorAt(float lambda) {
-  if (F.spectralExtra.z > 0.5) return sellmeierIor(lambda, F.sellmeierB.xyz, F.sellmeierC.xyz);
-  return cauchyIor(lambda, F.glass.x, F.glass.y);
-}
-
-// What a ray leaving the glass at world point o along world direction d sees.
-vec3 sceneAlong(vec3 o, vec3 d, float lod) {
-  if (F.frameInfo.w != 0) return textureLod(panorama, equirectUv(d), 0.0).rgb * F.environment.x;
-  // The photo hangs `depth` behind the glass, screen-aligned: a ray that does not bend lands on the
-  // texel of its own pixel. Rays heading back toward the camera see its mirror image.
-  d.z = -max(abs(d.z), 1e-3);
-  float t = (-F.glass.w - o.z) / d.z;
-  vec2 pixel = worldToPixel(o + d * t);
-  return textureLod(backdrop, pixel / F.view.zw, lod).rgb;
-}
-
-// The seed's exit: the refracted direction leaned back toward the view ray by `strength`.
-vec3 seen(vec3 view, vec3 exitDir) { return physical() ? exitDir : normalize(mix(view, exitDir, F.glass.z)); }
-
-// The original's LOD: grazing-angle minification plus the turn of a rounded rim's normal.
-float exitLod(float cosT, vec3 normal) {
-  float rim = (F.shape.x == SHAPE_CUBE || F.shape.x == SHAPE_PLATE)
-                  ? (1.0 - max(max(abs(normal.x), abs(normal.y)), abs(normal.z))) * 8.0 : 0.0;
-  return clamp(-log2(max(cosT, 1e-4)) - 1.0 + rim, 0.0, 6.0);
-}
+const vec3 PROXY_TINT = vec3(1.0, 0.2, 0.6);
 
 void main() {
-  const ShapeDims dims = glassDims();
-  const mat3 toObject = mat3(F.rotation);
-  const mat3 toWorld = transpose(toObject);
-  const vec3 centre = vec3(F.centres[instance].xy, 0.0);
-  const uvec2 pixel = uvec2(gl_FragCoord.xy);
-
-  vec2 sub = gl_FragCoord.xy;
-  if (F.frameInfo.z == 2)  // TAA: a per-pixel, per-frame sub-pixel offset, undone by the resolve's reprojection
-    sub += vec2(hash01(uvec3(pixel, uint(F.frameInfo.x) * 2u)), hash01(uvec3(pixel, uint(F.frameInfo.x) * 2u + 1u))) - 0.5;
-  vec3 rayOrigin, rayDir;
-  primaryRay(sub, rayOrigin, rayDir);
-  const vec3 ro = toObject * (rayOrigin - centre);
-  const vec3 rd = toObject * rayDir;
-
-  float tHit;
-  vec3 n1;
-  int facet;
-  if (!shapeEnter(dims, ro, rd, tHit, n1, facet)) {
-    if (F.environment.w > 0.5) {  // show proxy: the rasterised silhouette, tinted
-      colour = vec4(1.0, 0.2, 0.6, 1.0);
-      motion = vec2(0.0);
-      gl_FragDepth = 0.0;
-      return;
-    }
-    discard;
+  Shaded shaded;
+  const bool showProxy = F.environment.w > 0.5;
+  if (!shadeGlass(gl_FragCoord.xy, instance, shaded)) {
+    if (!showProxy) discard;
+    shaded = Shaded(PROXY_TINT, vec2(0.0), 1e9);  // the rasterised silhouette around the glass
   }
-  const vec3 p1 = ro + rd * tHit;
-  const vec3 hitWorld = centre + toWorld * p1;
-  // Reverse depth from the hit itself, so overlapping instances sort by their surfaces, not their boxes.
-  gl_FragDepth = 1.0 / (1.0 + distance(rayOrigin, hitWorld) * 1e-3);
-
-  // Where this surface point was a frame ago: last frame's rotation and centre.
-  const vec3 previousWorld = vec3(F.centres[instance].zw, 0.0) + transpose(mat3(F.previousRotation)) * p1;
-  motion = worldToPixel(previousWorld) - worldToPixel(hitWorld);
-
-  if (F.shape.x == SHAPE_DIAMOND && F.shape.w == 2) {
-    colour = vec4(facetColour(facet), 1.0);
-    return;
-  }
-
-  const int n = F.spectral.x;
-  const bool approx = F.spectral.y == 1;
-  const float phase = spectralPhase(pixel, uint(F.frameInfo.x), uint(F.frameInfo.y), F.spectral.z != 0);
-  const float cosI = -dot(rd, n1);
-  const vec3 reflected = toWorld * reflectDir(rd, n1);
-
-  // Approx: one back exit, found at the frame's hero wavelength, shared by every wavelength.
-  vec3 heroPoint = vec3(0.0), heroNormal = vec3(0.0);
-  bool heroExit = false;
-  if (approx) {
-    bool ok;
-    float t;
-    int exitFacet;
-    const vec3 heroDir = refractDir(rd, n1, iorAt(F.spectralExtra.x), ok);
-    heroExit = ok && shapeExit(dims, p1, heroDir, t, heroNormal, exitFacet);
-    heroPoint = p1 + heroDir * t;
-  }
-
-  vec3 sum = vec3(0.0), weights = vec3(0.0);
-  bool exhausted = false, missed = false;
-  for (int i = 0; i < n; ++i) {
-    const float lambda = stratifiedLambda(i, n, phase);
-    const float eta = iorAt(lambda);
-    const vec3 w = spectralWeight(lambda);
-    const float fresnel = physical() ? fresnelDielectric(cosI, eta) : fresnelSchlick(cosI, eta);
-    vec3 reflection = sceneAlong(hitWorld, reflected, 0.0);
-    bool ok;
-    const vec3 inside = refractDir(rd, n1, eta, ok);
-    vec3 transmitted = reflection;  // a ray that cannot enter (never for eta > 1) shows the reflection
-
-    if (ok && F.shape.x == SHAPE_DIAMOND && !approx) {
-      DiamondWalk walk = diamondWalkStart(p1, inside, 1.0, F.shape.z);
-      vec3 exitDir;
-      float exitWeight;
-      vec3 light = vec3(0.0);
-      float emitted = 0.0;
-      while (diamondStep(walk, eta, physical(), exitDir, exitWeight)) {
-        light += exitWeight * sceneAlong(centre + toWorld * walk.p, seen(rayDir, toWorld * exitDir), 0.0);
-        emitted += exitWeight;
-      }
-      exhausted = exhausted || walk.status == WALK_EXHAUSTED;
-      missed = missed || walk.status == WALK_MISSED;
-      // Light still trapped when the budget runs out: the seed shows the silhouette's background (or
-      // the environment's reflection); physical optics lets the rest leave along its last direction.
-      float trapped = max(1.0 - emitted, 0.0);
-      if (trapped > 0.0) {
-        vec3 fallback = physical() ? sceneAlong(centre + toWorld * walk.p, toWorld * walk.d, 0.0)
-                                   : (F.frameInfo.w != 0 ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
-        light += trapped * fallback;
-      }
-      transmitted = light;
-    } else if (ok) {
-      float t;
-      vec3 n2;
-      int exitFacet;
-      vec3 p2;
-      bool found;
-      if (approx) {
-        found = heroExit;
-        p2 = heroPoint;
-        n2 = heroNormal;
-      } else {
-        found = shapeExit(dims, p1, inside, t, n2, exitFacet);
-        p2 = p1 + inside * t;
-      }
-      if (found) {
-        bool leaves;
-        const vec3 outside = refractDir(inside, -n2, 1.0 / eta, leaves);
-        const float cosT = dot(inside, n2);
-        if (leaves) {
-          const vec3 exitWorld = centre + toWorld * p2;
-          vec3 through = sceneAlong(exitWorld, seen(rayDir, toWorld * outside), exitLod(abs(dot(outside, n2)), n2));
-          if (physical()) {  // the back face reflects its share inward; it leaves roughly along the mirror
-            const float back = fresnelDielectric(cosT, 1.0 / eta);
-            through = mix(through, sceneAlong(exitWorld, toWorld * reflectDir(inside, -n2), 2.0), back);
-          }
-          transmitted = through;
-        } else if (physical()) {  // total internal reflection at the back: it leaves by the mirror path
-          transmitted = sceneAlong(centre + toWorld * p2, toWorld * reflectDir(inside, -n2), 2.0);
-        }  // the seed's TIR fallback: the external reflection
-      } else {
-        missed = true;
-      }
-    }
-    sum += w * mix(transmitted, reflection, fresnel);
-    weights += w;
-  }
-  vec3 result = sum / max(weights, vec3(1e-6));
-
-  if (F.shape.x == SHAPE_DIAMOND && F.shape.w == 1) {  // facet edges about a pixel and a half wide
-    const float worldPerPixel = F.view.x / F.view.z;
-    result = mix(result, vec3(1.0), 1.0 - smoothstep(0.5, 1.5, diamondEdgeDistance(p1) / worldPerPixel));
-  }
-  if (F.shape.x == SHAPE_DIAMOND && F.shape.w == 3) {
-    if (missed) result = vec3(1.0, 0.55, 0.0);
-    else if (exhausted) result = vec3(1.0, 0.3, 0.75);
-  }
-  if (F.environment.w > 0.5) result = mix(result, vec3(1.0, 0.2, 0.6), 0.25);
-  colour = vec4(result, 1.0);
+  colour = vec4(showProxy ? mix(shaded.colour, PROXY_TINT, 0.25) : shaded.colour, 1.0);
+  motion = shaded.motion;
+  gl_FragDepth = 1.0 / (1.0 + shaded.eyeDistance * 1e-3);  // reverse depth: nearer is larger
 }

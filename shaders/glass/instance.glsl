@@ -5,6 +5,9 @@
 #include "glass/frame.glsl"
 #include "glass/shapes.glsl"
 
-ShapeDims glassDims() { return ShapeDims(F.shapeSize, F.shapeWave, F.shape.x, 0, 0, 0); }
+// The shape is a specialization constant: each shape's pipeline keeps only its own code paths.
+layout(constant_id = 0) const int GLASS_SHAPE = SHAPE_CUBE;
+
+ShapeDims glassDims() { return ShapeDims(F.shapeSize, F.shapeWave, GLASS_SHAPE, 0, 0, 0); }
 
 #endif

@@ -13,7 +13,7 @@ void main() {
                                 1, 3, 5, 3, 7, 5);
   instance = gl_InstanceIndex;
   vec3 local;
-  if (F.shape.x == SHAPE_DIAMOND) {
+  if (GLASS_SHAPE == SHAPE_DIAMOND) {
     local = hull[gl_VertexIndex].xyz;
   } else {
     const int corner = faces[gl_VertexIndex];

@@ -112,8 +112,13 @@ Bindings& Bindings::uniformBuffer(VkBuffer buffer, VkDeviceSize offset, VkDevice
 
 Program::Program(ProgramLibrary& library, std::string label, std::vector<std::string> shaders,
                  const ProgramLayout& layout, VkPipelineBindPoint bindPoint)
-    : library_(library), label_(std::move(label)), shaders_(std::move(shaders)), bindPoint_(bindPoint) {
+    : library_(library), label_(std::move(label)), shaders_(std::move(shaders)), bindPoint_(bindPoint),
+      specializationValues_(layout.specialization) {
   const Device& dev = library.device();
+  for (uint32_t i = 0; i < specializationValues_.size(); ++i)
+    specializationEntries_.push_back({i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)});
+  specializationInfo_ = {uint32_t(specializationEntries_.size()), specializationEntries_.data(),
+                         specializationValues_.size() * sizeof(int32_t), specializationValues_.data()};
   stages_ = bindPoint == VK_PIPELINE_BIND_POINT_COMPUTE ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_ALL_GRAPHICS;
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (uint32_t i = 0; i < layout.bindings.size(); ++i)
@@ -189,7 +194,7 @@ VkPipeline ComputeProgram::build() const {
   const auto shaderModule = module(shaders()[0]);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT,
-                shaderModule, "main", nullptr};
+                shaderModule, "main", specialization()};
   info.layout = layout();
   VkPipeline pipeline;
   VK_CHECK(vkCreateComputePipelines(device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -217,9 +222,10 @@ VkPipeline GraphicsProgram::build() const {
   const auto vertex = module(state_.vertex);
   const auto fragment = module(state_.fragment);
   const VkPipelineShaderStageCreateInfo stages[] = {
-      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertex, "main"},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertex, "main",
+       specialization()},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragment,
-       "main"}};
+       "main", specialization()}};
   // Geometry comes from storage buffers indexed by gl_VertexIndex / gl_InstanceIndex: no vertex input.
   const VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   const VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,

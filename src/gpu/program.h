@@ -18,6 +18,9 @@ class Program;
 struct ProgramLayout {
   std::vector<VkDescriptorType> bindings;  // binding i of set 0 has type bindings[i]
   uint32_t pushConstantBytes = 0;
+  // Specialization constant i (layout(constant_id = i) in every stage) takes specialization[i]: one
+  // shader source compiled into variants whose unused paths the driver removes (glass' shapes).
+  std::vector<int32_t> specialization;
 };
 
 class ProgramLibrary {
@@ -93,6 +96,8 @@ class Program {
           VkPipelineBindPoint bindPoint);
   virtual VkPipeline build() const = 0;
   Unique<VkShaderModule> module(const std::string& shader) const;
+  // The specialization constants of every stage; valid while the program lives.
+  const VkSpecializationInfo* specialization() const { return specializationInfo_.mapEntryCount ? &specializationInfo_ : nullptr; }
   const Device& device() const { return library_.device(); }
   const std::string& label() const { return label_; }
 
@@ -103,6 +108,9 @@ class Program {
   std::vector<std::string> shaders_;
   VkPipelineBindPoint bindPoint_;
   VkShaderStageFlags stages_;
+  std::vector<int32_t> specializationValues_;
+  std::vector<VkSpecializationMapEntry> specializationEntries_;
+  VkSpecializationInfo specializationInfo_{};
   Unique<VkDescriptorSetLayout> setLayout_;
   Unique<VkPipelineLayout> layout_;
   Unique<VkPipeline> pipeline_;

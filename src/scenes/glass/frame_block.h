@@ -27,8 +27,9 @@ struct FrameBlock {
   glm::mat4 rotation;             // world -> object, in the upper 3x3
   glm::mat4 previousRotation;
   glm::vec4 centres[kMaxInstances];  // xy: this frame's centre, zw: last frame's (world units)
+  glm::vec4 rects[kMaxInstances];    // each instance's pixels on screen: x0, y0, x1, y1
 };
 static_assert(offsetof(FrameBlock, camera) == 64 && offsetof(FrameBlock, rotation) == 272 &&
-              offsetof(FrameBlock, centres) == 400 && sizeof(FrameBlock) == 464);
+              offsetof(FrameBlock, centres) == 400 && sizeof(FrameBlock) == 528);
 
 }  // namespace vitrine::glass

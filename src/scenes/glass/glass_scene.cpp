@@ -56,6 +56,19 @@ struct PostPush {
   uint32_t pad0, pad1;
 };
 
+const gpu::ProgramLayout kComposeLayout{
+    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ComposePush)};
+
+// The spectral programs' bindings: the frame block, the backdrop and the panorama, the diamond's planes,
+// then the hull (raster) or the colour and motion outputs (compute). The shape is specialised.
+gpu::ProgramLayout spectralLayout(ShapeKind shape, bool compute) {
+  std::vector<VkDescriptorType> bindings{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+  if (compute) bindings.insert(bindings.end(), {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+  else bindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  return {bindings, 0, {int32_t(shape)}};
+}
+
 gpu::GraphicsState glassState() {
   gpu::GraphicsState state;
   state.vertex = "glass/proxy.vert";
@@ -91,13 +104,8 @@ class GlassScene final : public Scene {
       : device_(context.device),
         resources_(context.resources),
         assets_(context.assets),
-        compose_(context.programs, "glass/compose.comp",
-                 {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ComposePush)}),
-        glass_(context.programs, glassState(),
-               {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                0}),
+        programs_(context.programs),
+        compose_(context.programs, "glass/compose.comp", kComposeLayout),
         resolve_(context.programs, "glass/resolve.comp",
                  {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                    VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
@@ -173,11 +181,28 @@ class GlassScene final : public Scene {
   FrameBlock frameBlock() const;
   void composeBackdrop(const FrameContext& frame);
 
+  // This shape's spectral program for the chosen path, built the first time it is needed.
+  const gpu::GraphicsProgram& rasterProgram() {
+    auto& program = raster_[size_t(settings_.shape)];
+    if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, glassState(),
+                                                                   spectralLayout(settings_.shape, false));
+    return *program;
+  }
+  const gpu::ComputeProgram& computeProgram() {
+    auto& program = compute_[size_t(settings_.shape)];
+    if (!program) program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp",
+                                                                  spectralLayout(settings_.shape, true));
+    return *program;
+  }
+  void recordSpectral(const FrameContext& frame, const gpu::StreamSlice& block);
+
   const gpu::Device& device_;
   gpu::FrameResources& resources_;
   const Assets& assets_;
+  gpu::ProgramLibrary& programs_;
   gpu::ComputeProgram compose_;
-  gpu::GraphicsProgram glass_;
+  std::array<std::unique_ptr<gpu::GraphicsProgram>, 5> raster_;
+  std::array<std::unique_ptr<gpu::ComputeProgram>, 5> compute_;
   gpu::ComputeProgram resolve_;
   gpu::ComputeProgram post_;
   text::Font bodyFont_, titleFont_;
@@ -434,6 +459,21 @@ FrameBlock GlassScene::frameBlock() const {
   b.rotation = padded(rotationAt(time_));
   b.previousRotation = padded(rotationAt(previousTime_));
   for (int i = 0; i < kMaxInstances; ++i) b.centres[i] = {instances_[i].centre, instances_[i].previous};
+  // Each instance's pixels: its turned proxy box's corners projected, as the raster path's proxy covers.
+  const glm::vec3 half = shapeHalfExtent(d) + 1.0f;
+  const glm::mat3 toWorld = glm::transpose(glm::mat3(b.rotation));
+  const glm::vec2 pixels{float(extent_.width), float(extent_.height)};
+  for (int i = 0; i < kMaxInstances; ++i) {
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 local = half * glm::vec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+      const glm::vec4 clip = b.viewProjection * glm::vec4(glm::vec3(instances_[i].centre, 0.0f) + toWorld * local, 1.0f);
+      const glm::vec2 pixel = (glm::vec2(clip) / std::max(clip.w, 1e-3f) * 0.5f + 0.5f) * pixels;
+      lo = glm::min(lo, pixel);
+      hi = glm::max(hi, pixel);
+    }
+    b.rects[i] = {lo, hi};
+  }
   return b;
 }
 
@@ -512,21 +552,7 @@ void GlassScene::record(const FrameContext& frame) {
         .sampledImage(backdrop.view(), mipped, kSampled)
         .sampledImage(panorama.view(), wrapped, kSampled);
   };
-  {
-    const auto pass = frame.pass("glass spectral");
-    frame.transition(backdrop, gpu::use::FragmentSample);
-    frame.transition(panorama, gpu::use::FragmentSample);
-    frame.transition(*diamondPlanes_, gpu::use::FragmentReadBuffer);
-    frame.transition(*diamondHull_, gpu::use::VertexReadBuffer);
-    gpu::RenderingDesc desc;
-    desc.colors = {{&frame.image(colour_), VkClearColorValue{}}, {&frame.image(motion_), VkClearColorValue{}}};
-    desc.depth = gpu::DepthAttachment{&frame.image(depth_)};
-    const auto rendering = frame.rendering(desc);
-    glass_.bind(frame.cmd);
-    glass_.push(frame.cmd, sources(gpu::Bindings()).storageBuffer(diamondPlanes_->handle()).storageBuffer(diamondHull_->handle()));
-    const bool diamond = settings_.shape == ShapeKind::Diamond;
-    vkCmdDraw(frame.cmd, diamond ? hullVertices_ : 36u, uint32_t(instanceCount()), 0, 0);
-  }
+  recordSpectral(frame, block);
   {
     const auto pass = frame.pass("glass resolve");
     gpu::Image& current = frame.image(history_);
@@ -570,6 +596,48 @@ void GlassScene::record(const FrameContext& frame) {
                               .storageImage(frame.target.view()));
     post_.dispatchOver(frame.cmd, extent_, {8, 8});
   }
+}
+
+void GlassScene::recordSpectral(const FrameContext& frame, const gpu::StreamSlice& block) {
+  const auto pass = frame.pass("glass spectral");
+  gpu::Image& backdrop = frame.image(backdrop_);
+  gpu::Image& panorama = frame.image(panorama_);
+  const bool compute = settings_.pass == SpectralPass::Compute;
+  const gpu::ImageUse sampled = compute ? gpu::use::ComputeSample : gpu::use::FragmentSample;
+  frame.transition(backdrop, sampled);
+  frame.transition(panorama, sampled);
+  frame.transition(*diamondPlanes_, compute ? gpu::use::ComputeReadBuffer : gpu::use::FragmentReadBuffer);
+  constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  const auto bindings = gpu::Bindings()
+                            .uniformBuffer(block.buffer, block.offset, sizeof(FrameBlock))
+                            .sampledImage(backdrop.view(), device_.sampler(gpu::Device::Filter::Linear,
+                                                                           gpu::Device::Address::Clamp, true),
+                                          kSampled)
+                            .sampledImage(panorama.view(), device_.sampler(gpu::Device::Filter::Linear,
+                                                                           gpu::Device::Address::Repeat, true),
+                                          kSampled)
+                            .storageBuffer(diamondPlanes_->handle());
+  if (compute) {
+    gpu::Image& colour = frame.image(colour_);
+    gpu::Image& motion = frame.image(motion_);
+    frame.transition(colour, gpu::use::ComputeWrite);
+    frame.transition(motion, gpu::use::ComputeWrite);
+    const gpu::ComputeProgram& program = computeProgram();
+    program.bind(frame.cmd);
+    program.push(frame.cmd, gpu::Bindings(bindings).storageImage(colour.view()).storageImage(motion.view()));
+    program.dispatchOver(frame.cmd, extent_, {8, 8});
+    return;
+  }
+  frame.transition(*diamondHull_, gpu::use::VertexReadBuffer);
+  gpu::RenderingDesc desc;
+  desc.colors = {{&frame.image(colour_), VkClearColorValue{}}, {&frame.image(motion_), VkClearColorValue{}}};
+  desc.depth = gpu::DepthAttachment{&frame.image(depth_)};
+  const auto rendering = frame.rendering(desc);
+  const gpu::GraphicsProgram& program = rasterProgram();
+  program.bind(frame.cmd);
+  program.push(frame.cmd, gpu::Bindings(bindings).storageBuffer(diamondHull_->handle()));
+  const bool diamond = settings_.shape == ShapeKind::Diamond;
+  vkCmdDraw(frame.cmd, diamond ? hullVertices_ : 36u, uint32_t(instanceCount()), 0, 0);
 }
 
 void GlassScene::drawPanel() {

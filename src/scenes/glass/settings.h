@@ -14,6 +14,7 @@ enum class Dispersion { Abbe, Sellmeier };
 enum class Projection { Perspective, Orthographic };
 enum class Antialiasing { None, Fxaa, Taa };
 enum class DiamondDebug { None, Wireframe, Facets, Tir };
+enum class SpectralPass { Raster, Compute };  // proxies' fragments, or a compute pass over the screen
 
 struct Settings {
   int samplesIndex = 2;           // N = kSampleCounts[i] (optics.h): 16
@@ -51,6 +52,7 @@ struct Settings {
   Antialiasing aa = Antialiasing::None;
   float historyAlpha = 0.5f;
   bool showProxy = false;
+  SpectralPass pass = SpectralPass::Compute;
 
   bool operator==(const Settings&) const = default;
 };
