@@ -1,4 +1,5 @@
 // The glass scene as a whole, rendered headless: the physics it promises, measured on its pictures.
+#include "host/input_script.h"
 #include "host/offscreen.h"
 #include "support/gpu_test.h"
 
@@ -9,8 +10,9 @@ namespace {
 
 class GlassScene : public GpuTest {
  protected:
-  ImageRgba render(params::KeyValues values, uint32_t frames = 4) {
+  ImageRgba render(params::KeyValues values, uint32_t frames = 4, const char* script = nullptr) {
     host::OffscreenConfig config;
+    if (script) config.input = host::parseInputScript(script, "test script");
     config.scene = "glass";
     config.size = {240, 200};
     config.startTime = 0.5;
@@ -21,6 +23,17 @@ class GlassScene : public GpuTest {
     return offscreen.readback();
   }
 };
+
+// The mean absolute difference over a square of pixels around a normalised point.
+double patchDifference(const ImageRgba& a, const ImageRgba& b, float x, float y, int half = 12) {
+  double sum = 0.0;
+  int count = 0;
+  const int cx = int(x * float(a.width)), cy = int(y * float(a.height));
+  for (int py = cy - half; py < cy + half; ++py)
+    for (int px = cx - half; px < cx + half; ++px)
+      for (int c = 0; c < 3; ++c, ++count) sum += std::abs(a.at(px, py)[c] - b.at(px, py)[c]);
+  return sum / count;
+}
 
 // How coloured the picture is: over a grey checker, every bit of chroma is dispersion.
 double meanChroma(const ImageRgba& image) {
@@ -53,6 +66,40 @@ TEST_F(GlassScene, GlassOfIndexOneIsInvisible) {
   EXPECT_LT(meanDifference(cubes, pills), 2e-4);
   const ImageRgba glass = render({{"optics", "physical"}, {"ior", "1.5"}, {"shape", "cube"}, {"background", "gradient"}});
   EXPECT_GT(meanDifference(cubes, glass), 2e-3) << "real glass must change the picture";
+}
+
+TEST_F(GlassScene, DraggingMovesTheShapeUnderTheCursor) {
+  // The top-left cube sits at (0.28, 0.30) of a 240x200 view; drag it to the middle.
+  const char* drag = "0.5 move 0.28 0.30\n0.52 down\n0.55 move 0.4 0.4\n0.57 move 0.5 0.5\n0.6 up\n";
+  const ImageRgba still = render({{"stop_world", "on"}}, 8);
+  const ImageRgba dragged = render({{"stop_world", "on"}}, 8, drag);
+  EXPECT_GT(patchDifference(still, dragged, 0.5f, 0.5f), 0.02) << "no glass arrived in the middle";
+  EXPECT_GT(patchDifference(still, dragged, 0.28f, 0.30f), 0.02) << "the cube did not leave its place";
+  EXPECT_LT(patchDifference(still, dragged, 0.72f, 0.70f), 1e-4) << "another cube moved";
+}
+
+TEST_F(GlassScene, HoldingZShowsThreeBandsAndReleasingRestores) {
+  // Each frame stands alone (alpha 1), so a frame depends only on the settings it was drawn with.
+  const params::KeyValues alone{{"history_alpha", "1"}, {"jitter", "on"}};
+  const ImageRgba held = render(alone, 3, "0.5 hold z\n");
+  params::KeyValues bands = alone;
+  bands.push_back({"n", "3"});
+  bands.push_back({"jitter", "off"});
+  EXPECT_LT(meanDifference(held, render(bands, 3)), 1e-6);
+  const ImageRgba released = render(alone, 3, "0.5 hold z\n0.52 release z\n");
+  EXPECT_LT(meanDifference(released, render(alone, 3)), 1e-6);
+  EXPECT_GT(meanDifference(held, released), 1e-3);
+}
+
+// The compute path shades with the same function as the proxies' fragments: the same picture, for
+// the turning cubes and for the diamond behind its hull.
+TEST_F(GlassScene, TheRasterAndComputePathsAgree) {
+  for (const char* shape : {"cube", "diamond"}) {
+    const ImageRgba raster = render({{"shape", shape}, {"pass", "raster"}}, 2);
+    const ImageRgba compute = render({{"shape", shape}, {"pass", "compute"}}, 2);
+    EXPECT_LT(meanDifference(raster, compute), 1e-5) << shape;
+    EXPECT_GT(meanChroma(compute), 0.0) << shape;
+  }
 }
 
 }  // namespace

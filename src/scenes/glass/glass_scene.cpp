@@ -376,6 +376,10 @@ void GlassScene::update(const FrameInput& input) {
   if (settings_.environment && (!panoramaLoaded_ || settings_.panorama != appliedPanorama_)) loadPanorama();
 
   if (!(settings_ == applied_)) resetHistory_ = true;
+  // A drag while the world stands still restarts the progressive average; in motion the reprojected
+  // EMA lets go of the old place within a few frames anyway.
+  if (settings_.stopWorld)
+    for (const Instance& instance : instances_) resetHistory_ = resetHistory_ || instance.centre != instance.previous;
   applied_ = settings_;
   if (settings_.stopWorld) pausedFrames_ = resetHistory_ ? 1 : pausedFrames_ + 1;
   else pausedFrames_ = 0;
