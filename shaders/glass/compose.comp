@@ -3,7 +3,7 @@
 // a gradient or checker; for the page, paper for the text that the text pass sets next.
 #extension GL_GOOGLE_include_directive : require
 #include "common/color.glsl"
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D photo;
 layout(set = 0, binding = 1, rgba16f) uniform writeonly image2D backdrop;

@@ -180,6 +180,22 @@ class GlassScene final : public Scene {
   void loadPanorama();
   FrameBlock frameBlock() const;
   void composeBackdrop(const FrameContext& frame);
+  // A compute pass over the view that samples `source` (linear, clamped) and writes `target` through
+  // `targetView`, with `push` as its constants.
+  template <typename Push>
+  void sampleInto(const FrameContext& frame, const gpu::ComputeProgram& program, gpu::Image& source,
+                  gpu::Image& target, VkImageView targetView, const Push& push) const {
+    frame.transition(source, gpu::use::ComputeSample);
+    frame.transition(target, gpu::use::ComputeWrite);
+    program.bind(frame.cmd);
+    program.constants(frame.cmd, push);
+    program.push(frame.cmd, gpu::Bindings()
+                                .sampledImage(source.view(), device_.sampler(gpu::Device::Filter::Linear,
+                                                                             gpu::Device::Address::Clamp),
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                                .storageImage(targetView));
+    program.dispatchOver(frame.cmd, extent_, {8, 8});
+  }
 
   // This shape's spectral program for the chosen path, built the first time it is needed.
   const gpu::GraphicsProgram& rasterProgram() {
@@ -282,8 +298,11 @@ void GlassScene::layoutInstances() {
 // Random places inside the view, kept apart where the view has room; the same for the same seed.
 void GlassScene::shuffle() {
   const glm::vec2 view = viewSize();
+  // A turning shape reaches as far as its box's half diagonal; pill and prism keep their box.
   const glm::vec3 half = shapeHalfExtent(dims());
-  const glm::vec2 room = glm::max(view * 0.5f - glm::vec2(half), glm::vec2(0.0f));
+  const bool turns = settings_.shape != ShapeKind::Pill && settings_.shape != ShapeKind::Prism;
+  const glm::vec2 reach = turns ? glm::vec2(glm::length(half)) : glm::vec2(half);
+  const glm::vec2 room = glm::max(view * 0.5f - reach, glm::vec2(0.0f));
   ++shuffles_;
   for (int i = 0; i < instanceCount(); ++i) {
     glm::vec2 best{0.0f};
@@ -292,7 +311,7 @@ void GlassScene::shuffle() {
       best = (glm::vec2(maths::hash01(key), maths::hash01(key + glm::uvec3(0, 0, 7919u))) * 2.0f - 1.0f) * room;
       bool apart = true;
       for (int j = 0; j < i; ++j)
-        apart = apart && glm::length(best - instances_[j].centre) > 1.6f * std::max(half.x, half.y);
+        apart = apart && glm::length(best - instances_[j].centre) > 2.0f * std::max(reach.x, reach.y);
       if (apart) break;
     }
     instances_[i].centre = best;
@@ -497,16 +516,7 @@ void GlassScene::composeBackdrop(const FrameContext& frame) {
   const glm::vec4 panel{0.5f * (view.x - columnPx) - 1.5f * em, 0.0f, 0.5f * (view.x + columnPx) + 1.5f * em, view.y};
   const int kind = backdropSource_.kind == BackdropKind::Checker ? 1 : hasPhoto ? 2 : 0;
   ComposePush push{{scale, hasPhoto ? 1.0f : 0.0f, 0.0f}, {kind, page ? 1 : 0, 0, 0}, panel};
-  frame.transition(photo, gpu::use::ComputeSample);
-  frame.transition(backdrop, gpu::use::ComputeWrite);
-  compose_.bind(frame.cmd);
-  compose_.constants(frame.cmd, push);
-  compose_.push(frame.cmd, gpu::Bindings()
-                               .sampledImage(photo.view(), device_.sampler(gpu::Device::Filter::Linear,
-                                                                           gpu::Device::Address::Clamp),
-                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                               .storageImage(backdrop.mipView(0)));
-  compose_.dispatchOver(frame.cmd, extent_, {16, 16});
+  sampleInto(frame, compose_, photo, backdrop, backdrop.mipView(0), push);
   if (page) {
     std::vector<text::TextDraw> draws;
     const float top = 2.5f * em;
@@ -588,17 +598,9 @@ void GlassScene::record(const FrameContext& frame) {
   {
     const auto pass = frame.pass("glass post");
     gpu::Image& current = frame.image(history_);
-    frame.transition(current, gpu::use::ComputeSample);
-    frame.transition(frame.target, gpu::use::ComputeWrite);
-    PostPush push{settings_.aa == Antialiasing::Fxaa ? 1u : 0u, settings_.optics == Optics::Physical ? 1u : 0u, 0, 0};
-    post_.bind(frame.cmd);
-    post_.constants(frame.cmd, push);
-    post_.push(frame.cmd, gpu::Bindings()
-                              .sampledImage(current.view(), device_.sampler(gpu::Device::Filter::Linear,
-                                                                            gpu::Device::Address::Clamp),
-                                            kSampled)
-                              .storageImage(frame.target.view()));
-    post_.dispatchOver(frame.cmd, extent_, {8, 8});
+    const PostPush push{settings_.aa == Antialiasing::Fxaa ? 1u : 0u, settings_.optics == Optics::Physical ? 1u : 0u,
+                        0, 0};
+    sampleInto(frame, post_, current, frame.target, frame.target.view(), push);
   }
 }
 
