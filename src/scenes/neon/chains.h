@@ -1,0 +1,100 @@
+#pragma once
+// One frame of the neon tubes' particle chains, in plain C++: the reference that
+// shaders/neon/chains.comp mirrors line for line. Particles are stored chain-major as vec4s
+// (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
+// tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
+// particle depends only on the previous frame and the order of the invocations cannot matter.
+#include "scenes/neon/head_state.h"
+#include "scenes/noodles/field.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+
+namespace vitrine::neon {
+
+struct ChainParams {
+  float dt;             // seconds this frame
+  float lerp;           // the share of the gap to the particle ahead that a follower closes each frame
+  float fieldStrength;  // world units per second per unit of curl
+  float fieldScale;     // world -> noise coordinates
+  double noiseTime;     // how far the potentials have drifted, in noise units (see noodles::driftOffset)
+};
+
+// The heads swim in the noodles scene's curl noise (no lift): divergence free, so the tubes neither
+// bunch into sinks nor spray out of sources. The drift is computed in double here, on the CPU.
+inline noodles::FieldSettings chainField(const ChainParams& p) {
+  return noodles::fieldAtTime(noodles::FieldKind::Curl, p.fieldScale, 0.0f, p.noiseTime);
+}
+
+// Particle `index`'s position next frame. `field` is chainField(p), hoisted out of the loop.
+inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t particlesPerChain,
+                               std::span<const glm::vec4> previous, uint32_t index, const noodles::FieldSettings& field,
+                               const ChainParams& p) {
+  const HeadState& head = heads[index / particlesPerChain];
+  const uint32_t k = index % particlesPerChain;
+  glm::vec3 position = glm::vec3(previous[index]);
+  const ChainState state = chainState(head);
+  if (state == ChainState::Initialising) {
+    position = glm::vec3(head.originLife);  // the whole chain collapses onto the release point
+  } else if (state == ChainState::Alive) {
+    if (k == 0)
+      position += noodles::flowVelocity(position, field) * (p.fieldStrength * p.dt);
+    else  // chase where the particle ahead was last frame
+      position += (glm::vec3(previous[index - 1]) - position) * p.lerp;
+  }
+  // Inactive: stays put, so a recycled tube does not jump before it fades (its life is 0).
+  return {position, head.originLife.w};
+}
+
+inline void stepChains(std::span<const HeadState> heads, uint32_t particlesPerChain,
+                       std::span<const glm::vec4> previous, std::span<glm::vec4> next, const ChainParams& p) {
+  const size_t count = heads.size() * particlesPerChain;
+  if (particlesPerChain == 0 || previous.size() < count || next.size() < count)
+    throw std::invalid_argument("stepChains: the position buffers hold fewer than chains x particlesPerChain");
+  const noodles::FieldSettings field = chainField(p);
+  for (size_t i = 0; i < count; ++i) next[i] = chainParticle(heads, particlesPerChain, previous, uint32_t(i), field, p);
+}
+
+// The push block of shaders/neon/chains.comp (std430: each vec3 starts a 16-byte slot and the float
+// after it fills the slot's last 4 bytes).
+struct ChainPush {
+  glm::vec3 offsetY;  // second potential, drift included
+  float dt;
+  glm::vec3 offsetZ;  // third potential, drift included
+  float lerp;
+  uint32_t chainCount;
+  uint32_t particlesPerChain;
+  float fieldStrength;
+  float noiseScale;
+};
+static_assert(offsetof(ChainPush, offsetY) == 0 && offsetof(ChainPush, dt) == 12 &&
+              offsetof(ChainPush, offsetZ) == 16 && offsetof(ChainPush, lerp) == 28 &&
+              offsetof(ChainPush, chainCount) == 32 && offsetof(ChainPush, particlesPerChain) == 36 &&
+              offsetof(ChainPush, fieldStrength) == 40 && offsetof(ChainPush, noiseScale) == 44 &&
+              sizeof(ChainPush) == 48);
+
+inline ChainPush chainPush(uint32_t chainCount, uint32_t particlesPerChain, const ChainParams& p) {
+  const noodles::FieldSettings field = chainField(p);
+  return {field.offsetY, p.dt, field.offsetZ, p.lerp, chainCount, particlesPerChain, p.fieldStrength, field.noiseScale};
+}
+
+inline constexpr uint32_t kChainGroupSize = 64;  // local_size_x of chains.comp
+
+// Workgroups for `particles` invocations. One row while it fits the 65535 groups every device allows
+// in x; beyond that (65536 chains of 64 particles need 65536 groups) rows are stacked in y, and the
+// shader numbers invocations row by row, skipping the overhang.
+inline glm::uvec2 chainGroups(uint64_t particles) {
+  constexpr uint64_t kMaxGroups = 65535;
+  const uint64_t groups = (particles + kChainGroupSize - 1) / kChainGroupSize;
+  const uint64_t rows = (groups + kMaxGroups - 1) / kMaxGroups;
+  if (rows == 0) return {0u, 0u};
+  return {uint32_t((groups + rows - 1) / rows), uint32_t(rows)};
+}
+
+}  // namespace vitrine::neon

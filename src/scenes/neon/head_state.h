@@ -1,0 +1,32 @@
+#pragma once
+// What the CPU particle engine tells the GPU about one chain's head each step: where it was released,
+// how much life it has left and which state it is in. Uploaded as-is into a std430 storage buffer;
+// mirrored by shaders/neon/head_state.glsl.
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <type_traits>
+
+namespace vitrine::neon {
+
+// info.x of a HeadState.
+enum class ChainState : uint32_t {
+  Inactive = 0,      // a free slot: the GPU leaves the chain where it is
+  Initialising = 1,  // the first two steps after a release: the GPU places the whole chain at the origin
+  Alive = 2,         // life falls; the head moves through the field and the followers chase it
+};
+
+// Steps a released head spends initialising before its life starts to fall. Two, so that a renderer
+// that shows the previous step's snapshot still sees one initialising state and places the chain.
+inline constexpr uint32_t kInitialisingSteps = 2;
+
+struct HeadState {
+  glm::vec4 originLife{0.0f};  // xyz: release position (world), w: life, 1 at release down to 0
+  glm::uvec4 info{0u};         // x: ChainState, y: release serial (1, 2, ...), z: steps since release, w: 0
+};
+static_assert(sizeof(HeadState) == 32 && alignof(HeadState) <= 16, "two std430 vec4s, no padding");
+static_assert(std::is_trivially_copyable_v<HeadState>, "copied between threads and into mapped memory");
+
+inline ChainState chainState(const HeadState& head) { return ChainState(head.info.x); }
+
+}  // namespace vitrine::neon

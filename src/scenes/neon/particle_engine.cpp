@@ -1,0 +1,196 @@
+#include "scenes/neon/particle_engine.h"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace vitrine::neon {
+namespace {
+
+uint32_t checkedMaxChains(uint32_t maxChains) {
+  if (maxChains == 0 || maxChains > kMaxChainsLimit)
+    throw std::invalid_argument("neon: max chains must be 1.." + std::to_string(kMaxChainsLimit));
+  return maxChains;
+}
+
+float checkedRate(float value, const char* what) {
+  if (!std::isfinite(value) || value < 0.0f)
+    throw std::invalid_argument(std::string("neon: ") + what + " must be finite and >= 0");
+  return value;
+}
+
+std::vector<uint32_t> allSlots(uint32_t count) {
+  std::vector<uint32_t> slots(count);
+  std::iota(slots.begin(), slots.end(), 0u);  // ascending: already a valid min-heap
+  return slots;
+}
+
+}  // namespace
+
+ParticleEngine::ParticleEngine(const EngineSettings& settings, EngineMode mode)
+    : maxChains_(checkedMaxChains(settings.maxChains)),
+      mode_(mode),
+      decayPerSecond_(checkedRate(settings.decayPerSecond, "decay per second")),
+      heads_(maxChains_),
+      free_(std::greater<>(), allSlots(maxChains_)),
+      snapshots_(Snapshot{0, 0, std::vector<HeadState>(maxChains_)}) {
+  if (mode_ == EngineMode::Worker) worker_ = std::thread([this] { run(); });
+}
+
+ParticleEngine::~ParticleEngine() {
+  {
+    std::lock_guard lock(inboxMutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+  if (worker_.joinable()) worker_.join();
+}
+
+void ParticleEngine::release(glm::vec3 position) {
+  std::lock_guard lock(inboxMutex_);
+  inbox_.push_back({position, 0.0f, 0.0f, false});  // no wake-up: releases wait for the next step
+}
+
+void ParticleEngine::setDecayPerSecond(float decayPerSecond) {
+  decayPerSecond_ = checkedRate(decayPerSecond, "decay per second");
+}
+
+void ParticleEngine::step(float dt) {
+  const Command command{{}, checkedRate(dt, "dt"), decayPerSecond_, true};
+  if (mode_ == EngineMode::LockStep) {
+    // This thread is the simulation thread: take what was released so far, then step, here and now.
+    {
+      std::lock_guard lock(inboxMutex_);
+      batch_.swap(inbox_);
+    }
+    batch_.push_back(command);
+    apply(batch_);
+    batch_.clear();
+    return;
+  }
+  {
+    std::lock_guard lock(inboxMutex_);
+    inbox_.push_back(command);
+    stepPosted_ = true;
+    ++stepsPosted_;
+  }
+  wake_.notify_one();
+}
+
+void ParticleEngine::flush() {
+  if (mode_ == EngineMode::LockStep) return;
+  std::unique_lock lock(inboxMutex_);
+  idle_.wait(lock, [this] { return stepsPublished_ == stepsPosted_; });
+}
+
+void ParticleEngine::run() {
+  for (;;) {
+    {
+      std::unique_lock lock(inboxMutex_);
+      wake_.wait(lock, [this] { return stepPosted_ || stopping_; });
+      if (stopping_) return;
+      // The whole inbox in one swap: the posters get back the (cleared) vector of the last batch, so
+      // neither side allocates in the steady state, and the lock is held for O(1).
+      batch_.swap(inbox_);
+      stepPosted_ = false;
+    }
+    apply(batch_);  // without the lock: posters keep queueing into the other vector meanwhile
+    uint64_t steps = 0;
+    for (const Command& command : batch_) steps += command.isStep;
+    batch_.clear();
+    {
+      std::lock_guard lock(inboxMutex_);
+      stepsPublished_ += steps;
+    }
+    idle_.notify_all();
+  }
+}
+
+// Releases queued after the last step of a batch are applied now rather than at the start of the
+// next step: nothing else touches the heads in between, so the result is the same.
+void ParticleEngine::apply(const std::vector<Command>& commands) {
+  for (const Command& command : commands) {
+    if (!command.isStep) {
+      spawn(command.position);
+      continue;
+    }
+    advance(command.dt, command.decayPerSecond);
+    publish();
+  }
+}
+
+void ParticleEngine::spawn(glm::vec3 position) {
+  uint32_t slot;
+  if (!free_.empty()) {
+    slot = free_.top();
+    free_.pop();
+  } else {
+    // Every slot is taken, so every slot has a live entry in occupants_ and the front live one is the
+    // oldest release. It also has the lowest life: all alive heads lose the same amount each step,
+    // and float subtraction of the same amount keeps their order, so an older head's life is lower
+    // or equal (equal lives, e.g. all still initialising at 1, go to the older release).
+    dropStaleOccupants();
+    slot = occupants_.front().slot;
+    occupants_.pop_front();
+  }
+  ++serial_;
+  heads_[slot] = {glm::vec4(position, 1.0f), glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u, 0u)};
+  occupants_.push_back({slot, uint32_t(serial_)});
+  releasesApplied_.store(serial_, std::memory_order_relaxed);
+}
+
+// The write-up's behaviour: count the steps since release; after two, the head is alive and its life
+// falls; at zero the slot is freed for the next release.
+void ParticleEngine::advance(float dt, float decayPerSecond) {
+  for (uint32_t slot = 0; slot < maxChains_; ++slot) {
+    HeadState& head = heads_[slot];
+    if (chainState(head) == ChainState::Inactive) continue;
+    if (++head.info.z <= kInitialisingSteps) continue;
+    head.info.x = uint32_t(ChainState::Alive);
+    head.originLife.w -= decayPerSecond * dt;
+    if (head.originLife.w <= 0.0f) {
+      head = HeadState{};  // inactive, life 0: the GPU leaves the tube where it is, and it draws nothing
+      free_.push(slot);
+    }
+  }
+  ++steps_;
+  // Heads die in release order (see spawn), so the entries of freed slots gather at the front.
+  dropStaleOccupants();
+}
+
+void ParticleEngine::dropStaleOccupants() {
+  while (!occupants_.empty()) {
+    const Occupant& o = occupants_.front();
+    const HeadState& head = heads_[o.slot];
+    if (chainState(head) != ChainState::Inactive && head.info.y == o.serial) return;
+    occupants_.pop_front();
+  }
+}
+
+void ParticleEngine::publish() {
+  Snapshot& back = snapshots_.back();
+  back.steps = steps_;
+  back.releases = serial_;
+  std::copy(heads_.begin(), heads_.end(), back.heads.begin());  // same size: no allocation
+  snapshots_.publish();
+}
+
+uint32_t PlacementGuard::copy(std::span<const HeadState> heads, std::span<HeadState> out) {
+  if (heads.size() != placed_.size() || out.size() != heads.size())
+    throw std::invalid_argument("neon: the placement guard, the snapshot and the upload disagree on max chains");
+  uint32_t fixed = 0;
+  for (size_t i = 0; i < heads.size(); ++i) {
+    out[i] = heads[i];
+    const ChainState state = chainState(heads[i]);
+    if (state == ChainState::Inactive || placed_[i] == heads[i].info.y) continue;
+    if (state == ChainState::Alive) {
+      out[i].info.x = uint32_t(ChainState::Initialising);  // skipped: place it now, move it from next frame
+      ++fixed;
+    }
+    placed_[i] = heads[i].info.y;
+  }
+  return fixed;
+}
+
+}  // namespace vitrine::neon

@@ -1,0 +1,501 @@
+// The neon scene's CPU side: the particle engine's life cycle, slot choice, determinism and threading
+// (src/scenes/neon/particle_engine.h), and the chain update's CPU reference (src/scenes/neon/chains.h).
+#include "maths/hash.h"
+#include "scenes/neon/chains.h"
+#include "scenes/neon/particle_engine.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace vitrine::neon {
+namespace {
+
+using namespace std::chrono_literals;
+
+glm::vec3 scatter(uint32_t i, uint32_t seed) {
+  return {maths::hash01({i, 1u, seed}) * 8.0f - 4.0f, maths::hash01({i, 2u, seed}) * 8.0f - 4.0f,
+          maths::hash01({i, 3u, seed}) * 8.0f - 4.0f};
+}
+
+bool sameHeads(const std::vector<HeadState>& a, const std::vector<HeadState>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(HeadState)) == 0;
+}
+
+// ---------------------------------------------------------------------------------------- layout
+
+TEST(NeonHeadState, IsTwoStd430Vec4s) {
+  EXPECT_EQ(sizeof(HeadState), 32u);
+  EXPECT_EQ(offsetof(HeadState, originLife), 0u);
+  EXPECT_EQ(offsetof(HeadState, info), 16u);
+  const HeadState zero{};
+  EXPECT_EQ(chainState(zero), ChainState::Inactive);
+  EXPECT_EQ(zero.originLife.w, 0.0f);
+}
+
+// ------------------------------------------------------------------------------------- life cycle
+
+TEST(NeonEngine, StartsEmpty) {
+  ParticleEngine engine({8, 1.0f}, EngineMode::LockStep);
+  const Snapshot& s = engine.latest();
+  EXPECT_EQ(s.steps, 0u);
+  EXPECT_EQ(s.heads.size(), 8u);
+  for (const HeadState& h : s.heads) EXPECT_EQ(chainState(h), ChainState::Inactive);
+}
+
+TEST(NeonEngine, WaitsTwoStepsThenDecaysThenRecycles) {
+  // 0.5 per second x 0.25 s = 0.125 per step: every life below is exact in float.
+  ParticleEngine engine({4, 0.5f}, EngineMode::LockStep);
+  engine.release({1.0f, 2.0f, 3.0f});
+  for (uint32_t step = 1; step <= 2; ++step) {
+    engine.step(0.25f);
+    const HeadState h = engine.latest().heads[0];
+    EXPECT_EQ(chainState(h), ChainState::Initialising) << "step " << step;
+    EXPECT_EQ(h.originLife, glm::vec4(1.0f, 2.0f, 3.0f, 1.0f)) << "step " << step;
+    EXPECT_EQ(h.info, glm::uvec4(1u, 1u, step, 0u)) << "step " << step;
+  }
+  for (uint32_t step = 3; step <= 9; ++step) {
+    engine.step(0.25f);
+    const HeadState h = engine.latest().heads[0];
+    EXPECT_EQ(chainState(h), ChainState::Alive) << "step " << step;
+    EXPECT_EQ(h.originLife.w, 1.0f - 0.125f * float(step - 2)) << "step " << step;
+    EXPECT_EQ(h.info.z, step);
+    EXPECT_EQ(glm::vec3(h.originLife), glm::vec3(1.0f, 2.0f, 3.0f));  // the origin never moves
+  }
+  engine.step(0.25f);  // life reaches 0: the slot is free again
+  EXPECT_EQ(chainState(engine.latest().heads[0]), ChainState::Inactive);
+  EXPECT_EQ(engine.latest().heads[0].originLife.w, 0.0f);
+  for (const HeadState& h : engine.latest().heads) EXPECT_EQ(chainState(h), ChainState::Inactive);
+
+  engine.release({-1.0f, 0.0f, 0.0f});
+  engine.step(0.25f);
+  const Snapshot& s = engine.latest();
+  EXPECT_EQ(s.steps, 11u);
+  EXPECT_EQ(s.releases, 2u);
+  EXPECT_EQ(s.heads[0].info, glm::uvec4(1u, 2u, 1u, 0u));  // slot 0 again, second serial
+  EXPECT_EQ(s.heads[0].originLife, glm::vec4(-1.0f, 0.0f, 0.0f, 1.0f));
+}
+
+TEST(NeonEngine, DecayIsRatePerSecondTimesDt) {
+  ParticleEngine engine({1, 2.0f}, EngineMode::LockStep);
+  engine.release({});
+  for (int i = 0; i < 3; ++i) engine.step(0.0625f);  // the third step is the first alive one
+  EXPECT_EQ(engine.latest().heads[0].originLife.w, 1.0f - 2.0f * 0.0625f);
+  engine.setDecayPerSecond(4.0f);
+  engine.step(0.0625f);
+  EXPECT_EQ(engine.latest().heads[0].originLife.w, 1.0f - 2.0f * 0.0625f - 4.0f * 0.0625f);
+}
+
+TEST(NeonEngine, ARecycledSlotIsTheFirstFreeOne) {
+  // Slot 0 dies while slot 1 still lives: the next release takes slot 0, not slot 2.
+  ParticleEngine engine({4, 1.0f}, EngineMode::LockStep);  // 0.25 per alive step at dt 0.25
+  engine.release({0.0f, 0.0f, 0.0f});
+  for (int i = 0; i < 4; ++i) engine.step(0.25f);
+  engine.release({1.0f, 0.0f, 0.0f});
+  for (int i = 0; i < 2; ++i) engine.step(0.25f);  // the first head's sixth step: life 0
+  ASSERT_EQ(chainState(engine.latest().heads[0]), ChainState::Inactive);
+  ASSERT_EQ(chainState(engine.latest().heads[1]), ChainState::Initialising);
+  engine.release({2.0f, 0.0f, 0.0f});
+  engine.step(0.25f);
+  const Snapshot& s = engine.latest();
+  EXPECT_EQ(s.heads[0].info.y, 3u);
+  EXPECT_EQ(s.heads[0].originLife.x, 2.0f);
+  EXPECT_EQ(s.heads[1].info.y, 2u);
+  EXPECT_EQ(chainState(s.heads[1]), ChainState::Alive);
+  EXPECT_EQ(chainState(s.heads[2]), ChainState::Inactive);
+}
+
+uint32_t lowestLife(const std::vector<HeadState>& heads) {
+  uint32_t lowest = 0;
+  for (uint32_t i = 1; i < heads.size(); ++i)
+    if (heads[i].originLife.w < heads[lowest].originLife.w) lowest = i;
+  return lowest;
+}
+
+TEST(NeonEngine, WhenFullTheLowestLifeIsReplaced) {
+  // 0.25 per alive step. A recycled slot 0 is refilled first, so the oldest head ends up in slot 1:
+  // a rule of "lowest index" or "last slot" would pick differently from "lowest life".
+  ParticleEngine engine({3, 1.0f}, EngineMode::LockStep);
+  engine.release({0.0f, 0.0f, 0.0f});  // serial 1 -> slot 0, dies in step 6
+  for (int i = 0; i < 3; ++i) engine.step(0.25f);
+  engine.release({1.0f, 0.0f, 0.0f});  // serial 2 -> slot 1
+  engine.step(0.25f);
+  engine.release({2.0f, 0.0f, 0.0f});  // serial 3 -> slot 2
+  for (int i = 0; i < 2; ++i) engine.step(0.25f);
+  ASSERT_EQ(chainState(engine.latest().heads[0]), ChainState::Inactive);
+  engine.release({3.0f, 0.0f, 0.0f});  // serial 4 -> slot 0, the first free one
+  engine.step(0.25f);
+
+  // Full: lives 1 (slot 0, initialising), 0.5 (slot 1), 0.75 (slot 2).
+  for (uint32_t serial = 5; uint32_t expectedSlot : {1u, 2u, 0u}) {
+    const std::vector<HeadState> before = engine.latest().heads;
+    for (const HeadState& h : before) ASSERT_NE(chainState(h), ChainState::Inactive);
+    ASSERT_EQ(lowestLife(before), expectedSlot);
+    engine.release({float(serial), 0.0f, 0.0f});
+    engine.step(0.25f);
+    const std::vector<HeadState>& after = engine.latest().heads;
+    EXPECT_EQ(after[expectedSlot].info, glm::uvec4(1u, serial, 1u, 0u)) << "serial " << serial;
+    EXPECT_EQ(after[expectedSlot].originLife, glm::vec4(float(serial), 0.0f, 0.0f, 1.0f));
+    for (uint32_t slot = 0; slot < 3; ++slot) {
+      if (slot == expectedSlot) continue;
+      EXPECT_EQ(after[slot].info.y, before[slot].info.y) << "slot " << slot << " kept";
+    }
+    ++serial;
+  }
+}
+
+TEST(NeonEngine, MoreReleasesInOneStepThanSlotsKeepTheNewest) {
+  ParticleEngine engine({2, 0.5f}, EngineMode::LockStep);
+  for (int i = 1; i <= 5; ++i) engine.release({float(i), 0.0f, 0.0f});
+  engine.step(0.1f);
+  const Snapshot& s = engine.latest();
+  EXPECT_EQ(s.releases, 5u);
+  EXPECT_EQ(engine.releasesApplied(), 5u);
+  // 1 -> slot 0, 2 -> slot 1, 3 replaces 1, 4 replaces 2, 5 replaces 3.
+  EXPECT_EQ(s.heads[0].info.y, 5u);
+  EXPECT_EQ(s.heads[1].info.y, 4u);
+}
+
+TEST(NeonEngine, RejectsBadSettings) {
+  EXPECT_THROW(ParticleEngine({0, 1.0f}, EngineMode::LockStep), std::invalid_argument);
+  EXPECT_THROW(ParticleEngine({kMaxChainsLimit + 1, 1.0f}, EngineMode::LockStep), std::invalid_argument);
+  EXPECT_THROW(ParticleEngine({4, -1.0f}, EngineMode::Worker), std::invalid_argument);
+  ParticleEngine engine({kMaxChainsLimit, 1.0f}, EngineMode::LockStep);
+  EXPECT_THROW(engine.step(-0.1f), std::invalid_argument);
+  EXPECT_THROW(engine.step(std::nanf("")), std::invalid_argument);
+  EXPECT_THROW(engine.setDecayPerSecond(INFINITY), std::invalid_argument);
+  engine.step(0.0f);
+  EXPECT_EQ(engine.latest().steps, 1u);
+}
+
+// ---------------------------------------------------------------------------------- determinism
+
+// A script of releases: a few per step at hashed positions, enough to fill 64 slots and replace.
+void feed(ParticleEngine& engine, uint32_t step) {
+  const uint32_t count = maths::pcg3d({step, 7u, 7u}).x % 4u;
+  for (uint32_t i = 0; i < count; ++i) engine.release(scatter(step * 4u + i, 11u));
+}
+
+TEST(NeonEngine, LockStepIsDeterministic) {
+  ParticleEngine a({64, 0.7f}, EngineMode::LockStep), b({64, 0.7f}, EngineMode::LockStep);
+  bool sawFull = false;
+  for (uint32_t step = 0; step < 400; ++step) {
+    feed(a, step);
+    feed(b, step);
+    const float dt = 1.0f / 60.0f + 0.001f * float(step % 5);
+    a.step(dt);
+    b.step(dt);
+    const Snapshot &sa = a.latest(), &sb = b.latest();
+    ASSERT_EQ(sa.steps, sb.steps);
+    ASSERT_EQ(sa.releases, sb.releases);
+    ASSERT_TRUE(sameHeads(sa.heads, sb.heads)) << "step " << step;
+    sawFull |= sa.releases > 64 && std::all_of(sa.heads.begin(), sa.heads.end(), [](const HeadState& h) {
+                 return chainState(h) != ChainState::Inactive;
+               });
+  }
+  EXPECT_TRUE(sawFull) << "the script should also exercise replacement";
+}
+
+TEST(NeonEngine, WorkerWithOnePosterMatchesLockStep) {
+  // The worker applies commands in the order they were posted, so with one posting thread it computes
+  // exactly what lock-step does.
+  ParticleEngine lockStep({64, 0.7f}, EngineMode::LockStep), worker({64, 0.7f}, EngineMode::Worker);
+  for (uint32_t step = 0; step < 300; ++step) {
+    feed(lockStep, step);
+    feed(worker, step);
+    lockStep.step(1.0f / 60.0f);
+    worker.step(1.0f / 60.0f);
+    if (step % 7 == 0 || step == 299) {  // let the worker run ahead over several steps in between
+      worker.flush();
+      const Snapshot &l = lockStep.latest(), &w = worker.latest();
+      ASSERT_EQ(w.steps, l.steps);
+      ASSERT_TRUE(sameHeads(l.heads, w.heads)) << "step " << step;
+    }
+  }
+}
+
+// ------------------------------------------------------------------------------------ threading
+
+TEST(NeonTripleBuffer, ReaderGetsTheNewestAndKeepsItUntilItsNextCall) {
+  TripleBuffer<int> buffer(0);
+  EXPECT_EQ(buffer.latest(), 0);
+  buffer.back() = 1;
+  buffer.publish();
+  buffer.back() = 2;
+  buffer.publish();  // 1 is overwritten, never seen
+  const int& held = buffer.latest();
+  EXPECT_EQ(held, 2);
+  buffer.back() = 3;  // writing the next value must not touch the one the reader holds
+  EXPECT_EQ(held, 2);
+  buffer.publish();
+  buffer.back() = 4;
+  EXPECT_EQ(held, 2);
+  EXPECT_EQ(buffer.latest(), 3);
+  EXPECT_EQ(buffer.latest(), 3);  // nothing new: the same value again
+}
+
+TEST(NeonTripleBuffer, ConcurrentReaderNeverSeesATornOrOlderValue) {
+  constexpr size_t kWords = 256;
+  constexpr uint64_t kValues = 200000;
+  using Block = std::array<uint64_t, kWords>;
+  TripleBuffer<Block> buffer(Block{});
+  std::atomic<bool> done{false};
+  std::thread writer([&] {
+    for (uint64_t value = 1; value <= kValues; ++value) {
+      buffer.back().fill(value);
+      buffer.publish();
+    }
+    done = true;
+  });
+  uint64_t last = 0, distinct = 0, torn = 0, backwards = 0;
+  for (bool stop = false; !stop;) {
+    stop = done.load();  // one more read after the writer finished, to see its last value
+    const Block& block = buffer.latest();
+    const uint64_t value = block[0];
+    torn += std::any_of(block.begin(), block.end(), [&](uint64_t word) { return word != value; });
+    backwards += value < last;
+    distinct += value != last;
+    last = value;
+  }
+  writer.join();
+  EXPECT_EQ(torn, 0u);
+  EXPECT_EQ(backwards, 0u);
+  EXPECT_EQ(last, kValues);
+  EXPECT_GT(distinct, 1u);
+}
+
+TEST(NeonEngine, ReleasesFromEightThreadsAreAllApplied) {
+  constexpr uint32_t kThreads = 8, kPerThread = 10000, kTotal = kThreads * kPerThread;
+  ParticleEngine engine({4096, 0.01f}, EngineMode::Worker);  // 6000 steps of life: nothing dies here
+  std::atomic<uint32_t> finished{0};
+  std::vector<std::thread> threads;
+  for (uint32_t t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (uint32_t i = 0; i < kPerThread; ++i) engine.release(scatter(i, t));
+      ++finished;
+    });
+  // Meanwhile this thread is the frame loop: it posts steps and reads snapshots, as the gallery does.
+  uint64_t frames = 0, lastSteps = 0, backwards = 0;
+  while (finished.load() < kThreads) {
+    engine.step(1.0f / 60.0f);
+    const Snapshot& s = engine.latest();
+    backwards += s.steps < lastSteps;
+    lastSteps = s.steps;
+    ++frames;
+    std::this_thread::sleep_for(100us);  // a frame; keeps the worker's inbox from growing without bound
+  }
+  for (std::thread& thread : threads) thread.join();
+  engine.step(1.0f / 60.0f);  // releases wait for a step
+  engine.flush();
+  const Snapshot& s = engine.latest();
+  EXPECT_EQ(backwards, 0u);
+  EXPECT_EQ(s.steps, frames + 1);
+  EXPECT_EQ(s.releases, kTotal);
+  EXPECT_EQ(engine.releasesApplied(), kTotal);
+  // Every slot is taken (80,000 releases, none dead), each by its own serial, the last one included.
+  std::set<uint32_t> serials;
+  for (const HeadState& h : s.heads) {
+    EXPECT_NE(chainState(h), ChainState::Inactive);
+    EXPECT_LE(h.info.y, kTotal);
+    serials.insert(h.info.y);
+  }
+  EXPECT_EQ(serials.size(), 4096u);
+  EXPECT_TRUE(serials.count(kTotal));
+  RecordProperty("frames", std::to_string(frames));
+}
+
+TEST(NeonEngine, ReaderNeverWaitsAndNeverSeesAHalfWrittenStep) {
+  // One release per step, at x = the number of the step that applies it, so every snapshot can be
+  // checked against its own step count: a head released in step r has been stepped (steps - r + 1)
+  // times. A snapshot mixing two steps would break that for some head.
+  ParticleEngine engine({512, 1.0f}, EngineMode::Worker);
+  std::atomic<bool> readerDone{false};
+  uint64_t distinctSteps = 0, backwards = 0, wrongReleases = 0, torn = 0;
+  std::thread reader([&] {
+    uint64_t last = 0;
+    for (int read = 0; read < 100000; ++read) {
+      const Snapshot& s = engine.latest();  // lock-free: one atomic exchange when there is news
+      backwards += s.steps < last;
+      distinctSteps += s.steps != last;
+      last = s.steps;
+      wrongReleases += s.releases != s.steps;
+      for (const HeadState& h : s.heads) {
+        if (chainState(h) == ChainState::Inactive) continue;
+        const auto releasedIn = uint64_t(h.originLife.x);
+        const auto expectedState = h.info.z <= kInitialisingSteps ? ChainState::Initialising : ChainState::Alive;
+        torn += h.info.y != releasedIn || h.info.z != s.steps - releasedIn + 1 || chainState(h) != expectedState;
+      }
+    }
+    readerDone = true;
+  });
+  uint32_t step = 0;
+  while (!readerDone.load()) {
+    engine.release({float(++step), 0.0f, 0.0f});
+    engine.step(1.0f / 60.0f);
+    std::this_thread::sleep_for(20us);
+  }
+  reader.join();
+  engine.flush();
+  EXPECT_EQ(engine.latest().steps, step);
+  EXPECT_EQ(backwards, 0u);
+  EXPECT_EQ(wrongReleases, 0u);
+  EXPECT_EQ(torn, 0u);
+  EXPECT_GT(distinctSteps, 1u) << "the reader should have read while the worker published";
+  RecordProperty("steps", std::to_string(step));
+  RecordProperty("distinct_steps_seen", std::to_string(distinctSteps));
+}
+
+TEST(NeonEngine, DestroyedWithStepsStillQueued) {
+  ParticleEngine engine({1024, 1.0f}, EngineMode::Worker);
+  for (int i = 0; i < 1000; ++i) {
+    engine.release(scatter(uint32_t(i), 5u));
+    engine.step(0.01f);
+  }
+  // No flush: the destructor must stop and join the worker without deadlocking.
+}
+
+TEST(NeonPlacementGuard, ChangesNothingWhenEverySnapshotIsRead) {
+  ParticleEngine engine({64, 0.7f}, EngineMode::LockStep);
+  PlacementGuard guard(64);
+  std::vector<HeadState> upload(64);
+  for (uint32_t step = 0; step < 400; ++step) {
+    feed(engine, step);  // replaces heads too: a new serial in a slot is seen initialising first
+    engine.step(1.0f / 60.0f);
+    ASSERT_EQ(guard.copy(engine.latest().heads, upload), 0u) << "step " << step;
+    ASSERT_TRUE(sameHeads(upload, engine.latest().heads)) << "step " << step;
+  }
+}
+
+TEST(NeonPlacementGuard, PlacesAChainWhoseInitialisationWasSkipped) {
+  ParticleEngine engine({2, 0.5f}, EngineMode::LockStep);
+  PlacementGuard guard(2);
+  std::vector<HeadState> upload(2);
+  engine.release({1.0f, 2.0f, 3.0f});
+  for (int i = 0; i < 3; ++i) engine.step(0.1f);  // three steps unread: the reader meets it alive
+  std::vector<HeadState> heads = engine.latest().heads;
+  ASSERT_EQ(chainState(heads[0]), ChainState::Alive);
+  EXPECT_EQ(guard.copy(heads, upload), 1u);
+  EXPECT_EQ(chainState(upload[0]), ChainState::Initialising);
+  EXPECT_EQ(upload[0].originLife, heads[0].originLife);
+  EXPECT_EQ(glm::uvec3(upload[0].info.y, upload[0].info.z, upload[0].info.w),
+            glm::uvec3(heads[0].info.y, heads[0].info.z, heads[0].info.w));
+  engine.step(0.1f);
+  EXPECT_EQ(guard.copy(engine.latest().heads, upload), 0u);  // placed once; from now on it moves
+  EXPECT_EQ(chainState(upload[0]), ChainState::Alive);
+
+  // Slot 0 taken over by a new release that the reader again meets only once it is alive.
+  engine.release({5.0f, 0.0f, 0.0f});  // slot 1
+  engine.release({6.0f, 0.0f, 0.0f});  // full: replaces slot 0
+  for (int i = 0; i < 3; ++i) engine.step(0.1f);
+  heads = engine.latest().heads;
+  ASSERT_EQ(heads[0].info.y, 3u);
+  EXPECT_EQ(guard.copy(heads, upload), 2u);
+  EXPECT_EQ(chainState(upload[0]), ChainState::Initialising);
+  EXPECT_EQ(chainState(upload[1]), ChainState::Initialising);
+  EXPECT_THROW(guard.copy(heads, std::span<HeadState>(upload).first(1)), std::invalid_argument);
+}
+
+// -------------------------------------------------------------------------------- chain reference
+
+ChainParams stillField(float lerp) { return {1.0f / 60.0f, lerp, 0.0f, 0.5f, 0.0}; }
+
+HeadState headIn(ChainState state, glm::vec3 origin, float life) {
+  return {glm::vec4(origin, life), glm::uvec4(uint32_t(state), 1u, 0u, 0u)};
+}
+
+TEST(NeonChains, AFollowerConvergesGeometricallyToAStillHead) {
+  constexpr uint32_t P = 3;
+  const std::vector<HeadState> heads{headIn(ChainState::Alive, {}, 0.75f)};
+  const glm::vec3 head{1.0f, 2.0f, 3.0f}, start{5.0f, -1.0f, 0.5f};
+  std::vector<glm::vec4> previous{glm::vec4(head, 0.0f), glm::vec4(start, 0.0f), glm::vec4(start, 0.0f)}, next(P);
+  const float lerp = 0.2f;
+  for (int n = 1; n <= 30; ++n) {
+    stepChains(heads, P, previous, next, stillField(lerp));  // strength 0: the head stays put
+    ASSERT_EQ(glm::vec3(next[0]), head);
+    const float expected = std::pow(1.0f - lerp, float(n)) * glm::length(start - head);
+    ASSERT_NEAR(glm::length(glm::vec3(next[1]) - head), expected, 1e-5f + 1e-5f * expected) << "frame " << n;
+    // Straight in: the follower stays on the segment from its start to the head.
+    ASSERT_NEAR(glm::length(glm::cross(glm::vec3(next[1]) - head, start - head)), 0.0f, 1e-4f);
+    ASSERT_EQ(next[1].w, 0.75f);  // life copied from the head, for tapering
+    std::swap(previous, next);
+  }
+  // The second follower chases the first: it lags, but it gets there too.
+  EXPECT_GT(glm::length(glm::vec3(previous[2]) - head), glm::length(glm::vec3(previous[1]) - head));
+  EXPECT_LT(glm::length(glm::vec3(previous[2]) - head), 0.1f);
+}
+
+TEST(NeonChains, FollowersChaseLastFramesPositions) {
+  // lerp = 1 closes the whole gap: every follower lands exactly where the one ahead was last frame,
+  // not where it is now, so the chain shifts by one.
+  constexpr uint32_t P = 4;
+  const std::vector<HeadState> heads{headIn(ChainState::Alive, {}, 1.0f)};
+  std::vector<glm::vec4> previous(P), next(P);
+  for (uint32_t k = 0; k < P; ++k) previous[k] = glm::vec4(scatter(k, 3u), 0.0f);
+  const ChainParams p{0.1f, 1.0f, 2.0f, 0.5f, 1.5};
+  stepChains(heads, P, previous, next, p);
+  const glm::vec3 velocity = noodles::flowVelocity(glm::vec3(previous[0]), chainField(p));
+  const glm::vec3 moved = glm::vec3(previous[0]) + velocity * (p.fieldStrength * p.dt);
+  EXPECT_EQ(glm::vec3(next[0]), moved);
+  EXPECT_GT(glm::length(moved - glm::vec3(previous[0])), 1e-3f);  // the field is not zero there
+  for (uint32_t k = 1; k < P; ++k) EXPECT_EQ(glm::vec3(next[k]), glm::vec3(previous[k - 1])) << k;
+}
+
+TEST(NeonChains, InitialisingPlacesTheChainAndInactiveLeavesIt) {
+  constexpr uint32_t P = 4;
+  const std::vector<HeadState> heads{headIn(ChainState::Initialising, {7.0f, 8.0f, 9.0f}, 1.0f),
+                                     headIn(ChainState::Inactive, {7.0f, 8.0f, 9.0f}, 0.0f)};
+  std::vector<glm::vec4> previous(2 * P), next(2 * P);
+  for (uint32_t i = 0; i < 2 * P; ++i) previous[i] = glm::vec4(scatter(i, 4u), 0.5f);
+  stepChains(heads, P, previous, next, {0.1f, 0.3f, 1.0f, 0.5f, 0.0});
+  for (uint32_t k = 0; k < P; ++k) {
+    EXPECT_EQ(next[k], glm::vec4(7.0f, 8.0f, 9.0f, 1.0f)) << k;
+    EXPECT_EQ(next[P + k], glm::vec4(glm::vec3(previous[P + k]), 0.0f)) << k;  // stays, life 0: invisible
+  }
+}
+
+TEST(NeonChains, RejectsShortBuffers) {
+  const std::vector<HeadState> heads(2);
+  std::vector<glm::vec4> previous(7), next(8);
+  EXPECT_THROW(stepChains(heads, 4, previous, next, stillField(0.5f)), std::invalid_argument);
+}
+
+TEST(NeonChains, PushBlockCarriesTheDriftComputedInDouble) {
+  const ChainParams p{0.02f, 0.3f, 1.5f, 0.4f, 1234.5};
+  const ChainPush push = chainPush(16, 32, p);
+  const noodles::FieldSettings field = noodles::fieldAtTime(noodles::FieldKind::Curl, 0.4f, 0.0f, 1234.5);
+  EXPECT_EQ(push.offsetY, field.offsetY);
+  EXPECT_EQ(push.offsetZ, field.offsetZ);
+  EXPECT_NE(push.offsetY, noodles::kPotentialOffsetY);  // the drift is in
+  EXPECT_EQ(push.chainCount, 16u);
+  EXPECT_EQ(push.particlesPerChain, 32u);
+  EXPECT_EQ(push.dt, 0.02f);
+  EXPECT_EQ(push.lerp, 0.3f);
+  EXPECT_EQ(push.fieldStrength, 1.5f);
+  EXPECT_EQ(push.noiseScale, 0.4f);
+}
+
+TEST(NeonChains, WorkgroupsCoverEveryParticleWithinDeviceLimits) {
+  for (uint64_t particles : {1ull, 64ull, 65ull, 512ull, 65535ull * 64, 65536ull * 64, 65536ull * 64 + 1}) {
+    const glm::uvec2 groups = chainGroups(particles);
+    const uint64_t invocations = uint64_t(groups.x) * groups.y * kChainGroupSize;
+    EXPECT_LE(groups.x, 65535u) << particles;
+    EXPECT_GE(invocations, particles) << particles;
+    EXPECT_LT(invocations - particles, uint64_t(groups.y + 1) * kChainGroupSize) << "few spare groups";
+  }
+  EXPECT_EQ(chainGroups(16 * 32), glm::uvec2(8u, 1u));
+  EXPECT_EQ(chainGroups(65536ull * 64).y, 2u);
+  EXPECT_EQ(chainGroups(0), glm::uvec2(0u, 0u));
+}
+
+}  // namespace
+}  // namespace vitrine::neon
