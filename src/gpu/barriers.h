@@ -29,6 +29,11 @@ inline constexpr ImageUse ComputeRead{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK
 inline constexpr ImageUse ComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                                            VK_IMAGE_LAYOUT_GENERAL};
+// An image whose mips compute passes read and write in turn (a mip-chain bloom: sample level L - 1,
+// store level L): both accesses, in GENERAL, so each step's barrier covers the next step's reads.
+inline constexpr ImageUse ComputeSampleWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                             VK_IMAGE_LAYOUT_GENERAL};
 inline constexpr ImageUse ComputeSample{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 inline constexpr ImageUse FragmentSample{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,

@@ -142,6 +142,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       vsync_(options.vsync) {
   overlay_.attach(swapchain_);
   renderer_.setAudioSink(&audio_);
+  renderer_.setRealtime(true);
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;

@@ -99,6 +99,12 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
         }
         break;
       }
+      case params::Kind::Colour: {
+        glm::vec3 colour{0.0f};
+        params::parseColourText(current, colour, nullptr);
+        if (ImGui::ColorEdit3(param.label.c_str(), &colour.x)) set(param.key, params::formatColour(colour));
+        break;
+      }
       case params::Kind::Custom: {  // typed text, applied when the field is left (Enter, Tab, a click)
         const auto typed = typing_.find(param.key);
         char buffer[128];

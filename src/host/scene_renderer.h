@@ -44,12 +44,16 @@ class SceneRenderer {
   void setEventSink(EventSink* sink) { events_ = sink; }
   // Where scenes created from now on play their sound (null: silence). It must outlive this renderer.
   void setAudioSink(audio::AudioSink* sink) { audio_ = sink ? sink : &silence_; }
+  // Whether scenes created from now on run in real time (the gallery) or step by step (headless,
+  // bench, tests), where anything they do on other threads must run in lock-step to stay reproducible.
+  void setRealtime(bool realtime) { realtime_ = realtime; }
   gpu::PassTimer& timer() { return timer_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst);
   gpu::Image& target() { return target_; }
 
  private:
+  bool realtime_ = false;
   void ensureTarget(VkExtent2D output);
   void blit(VkCommandBuffer cmd, const BlitDestination& dst);
   void present(VkCommandBuffer cmd, const BlitDestination& dst);

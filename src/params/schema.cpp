@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -67,12 +68,36 @@ bool parseBoolText(std::string_view text, bool& out, std::string* error) {
   return false;
 }
 
+bool parseColourText(std::string_view text, glm::vec3& out, std::string* error) {
+  const auto hex = [](char c) {
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+  };
+  if (text.size() == 7 && text[0] == '#') {
+    glm::vec3 colour;
+    bool ok = true;
+    for (int c = 0; c < 3; ++c) {
+      const int hi = hex(text[size_t(1 + 2 * c)]), lo = hex(text[size_t(2 + 2 * c)]);
+      ok = ok && hi >= 0 && lo >= 0;
+      colour[c] = float(hi * 16 + lo) / 255.0f;
+    }
+    if (ok) return out = colour, true;
+  }
+  if (error) *error = "expected a colour as #rrggbb";
+  return false;
+}
+
+std::string formatColour(glm::vec3 colour) {
+  const auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  return fmt::format("#{:02x}{:02x}{:02x}", byte(colour.r), byte(colour.g), byte(colour.b));
+}
+
 std::string Param::typeName() const {
   switch (kind) {
     case Kind::Float: return fmt::format("float {}..{}", formatFloat(float(min)), formatFloat(float(max)));
     case Kind::Int: return fmt::format("int {}..{}", int(min), int(max));
     case Kind::Bool: return "bool";
     case Kind::Choice: return "choice " + joined(choices, "|");
+    case Kind::Colour: return "colour #rrggbb";
     case Kind::Custom: return "custom";
   }
   return "?";

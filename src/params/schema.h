@@ -20,6 +20,7 @@
 //     return schema;
 //   }
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <functional>
 #include <memory>
 #include <string>
@@ -30,7 +31,7 @@
 
 namespace vitrine::params {
 
-enum class Kind { Float, Int, Bool, Choice, Custom };
+enum class Kind { Float, Int, Bool, Choice, Colour, Custom };
 
 enum Flag : uint32_t {
   kLogarithmic = 1u << 0,     // the panel's slider is logarithmic
@@ -57,7 +58,7 @@ struct Param {
   std::function<bool(void* settings, std::string_view text, std::string* error)> parse;
   // The field's current value as canonical text.
   std::function<std::string(const void* settings)> format;
-  // Float/Int: the value; Bool: 0/1; Choice: the index. Empty for Custom. For the panel's widgets.
+  // Float/Int: the value; Bool: 0/1; Choice: the index. Empty for Colour and Custom. For the panel's widgets.
   std::function<double(const void* settings)> number;
   // Copies this field from one struct to another: exact save and restore, whatever the formatter.
   std::function<void(void* to, const void* from)> copy;
@@ -122,6 +123,9 @@ template <typename S> Param intParam(Meta meta, int S::*field, int min, int max)
 template <typename S> Param boolParam(Meta meta, bool S::*field);
 // An enum (or integer, or bool) field whose values are 0..names.size()-1.
 template <typename S, typename E> Param choiceParam(Meta meta, E S::*field, std::vector<std::string> names);
+// A colour as the panel's colour picker edits it and text spells it: "#rrggbb", sRGB-encoded values
+// 0..1 in the field (a shader decodes them). Defaults are best written with hexColour(0xrrggbb).
+template <typename S> Param colourParam(Meta meta, glm::vec3 S::*field);
 // Any field with its own parser and formatter (noodles' "grid" = "32x32x8"). The parser may write
 // `value` even when it fails: the field itself is only assigned on success.
 template <typename S, typename T>
@@ -161,6 +165,12 @@ std::string formatFloat(float value);
 bool parseFloatText(std::string_view text, float min, float max, float& out, std::string* error);
 bool parseIntText(std::string_view text, int min, int max, int& out, std::string* error);
 bool parseBoolText(std::string_view text, bool& out, std::string* error);  // on/off, true/false, 1/0
+bool parseColourText(std::string_view text, glm::vec3& out, std::string* error);  // "#rrggbb"
+std::string formatColour(glm::vec3 colour);                                       // "#rrggbb", lower case
+// 0xrrggbb as the field holds it: each channel / 255.
+constexpr glm::vec3 hexColour(uint32_t rgb) {
+  return {float((rgb >> 16) & 255u) / 255.0f, float((rgb >> 8) & 255u) / 255.0f, float(rgb & 255u) / 255.0f};
+}
 
 }  // namespace vitrine::params
 

@@ -130,6 +130,13 @@ template <typename S, typename E> Param choiceParam(Meta meta, E S::*field, std:
   return param;
 }
 
+template <typename S> Param colourParam(Meta meta, glm::vec3 S::*field) {
+  return detail::bindField<S, glm::vec3>(
+      std::move(meta), Kind::Colour, field,
+      [](std::string_view text, glm::vec3& value, std::string* error) { return parseColourText(text, value, error); },
+      [](const glm::vec3& value) { return formatColour(value); });
+}
+
 template <typename S, typename T>
 Param customParam(Meta meta, T S::*field, std::function<bool(std::string_view, T&, std::string*)> parse,
                   std::function<std::string(const T&)> format) {

@@ -61,6 +61,7 @@ std::string_view expected(Kind kind) {
     case Kind::Int: return "a whole number";
     case Kind::Bool: return "true or false";
     case Kind::Choice:
+    case Kind::Colour:
     case Kind::Custom: return "a string";
   }
   return "?";

@@ -1,6 +1,7 @@
 #include "scenes/bloom/bloom_scene.h"
 #include "scenes/glass/glass_scene.h"
 #include "scenes/kifs/kifs_scene.h"
+#include "scenes/neon/neon_scene.h"
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
 
@@ -10,6 +11,7 @@ std::span<const SceneInfo> sceneRegistry() {
   static const SceneInfo scenes[] = {
       bloom::kSceneInfo,
       glass::kSceneInfo,
+      neon::kSceneInfo,
       kifs::kSceneInfo,
       noodles::kSceneInfo,
   };

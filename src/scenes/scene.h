@@ -84,6 +84,9 @@ struct SceneContext {
   SceneEvents events;              // what happened, for tests and recordings (--events)
   audio::AudioSink& audio;         // the sound device, a WAV being rendered (--audio-out), or silence
   uint32_t framesInFlight = 1;
+  // The gallery: real time, worker threads may run free. Headless, bench and tests: every step is
+  // reproducible, so a scene's worker runs in lock-step with update().
+  bool realtime = false;
 };
 
 class Scene {

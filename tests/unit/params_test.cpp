@@ -200,6 +200,27 @@ TEST(ParamsSchema, CustomUsesItsParserAndLeavesTheFieldOnFailure) {
   EXPECT_EQ(demo.grid, (Grid{32, 32, 8}));
 }
 
+TEST(ParamsSchema, ColourIsHashRrGgBbAndRoundTrips) {
+  struct Paint {
+    glm::vec3 colour = params::hexColour(0xff3399);
+  };
+  auto schema = params::Schema::forStruct<Paint>();
+  schema.add(params::colourParam<Paint>({"colour", "colour", "A colour.", ""}, &Paint::colour));
+  Paint paint;
+  const params::Param& param = *schema.find("colour");
+  EXPECT_EQ(param.defaultText, "#ff3399");
+  EXPECT_EQ(param.typeName(), "colour #rrggbb");
+  EXPECT_TRUE(param.parse(&paint, "#00FF80", nullptr));
+  EXPECT_EQ(param.format(&paint), "#00ff80");
+  EXPECT_FLOAT_EQ(paint.colour.g, 1.0f);
+  std::string error;
+  for (const char* bad : {"00ff80", "#00ff8", "#00ff800", "#00gg80", "red", ""}) {
+    EXPECT_FALSE(param.parse(&paint, bad, &error)) << bad;
+    EXPECT_EQ(param.format(&paint), "#00ff80") << "a refused colour must leave the field";
+  }
+  EXPECT_EQ(error, "expected a colour as #rrggbb");
+}
+
 TEST(ParamsSchema, TypeNames) {
   EXPECT_EQ(schema().find("scale")->typeName(), "float 0.001..10");
   EXPECT_EQ(schema().find("steps")->typeName(), "int 1..9");

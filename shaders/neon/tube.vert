@@ -1,0 +1,32 @@
+#version 460
+// One whole chain per instance, drawn as a tube impostor: a ribbon through the chain's particles
+// that always faces the eye (two vertices a particle, one triangle strip), shaded in the fragment
+// shader as the cylinder it stands for. A few pixels wide, it reads as a tube at a fraction of a real
+// tube's vertices. The radius tapers with life and toward the tail.
+#extension GL_GOOGLE_include_directive : require
+#include "neon/camera.glsl"
+
+layout(std430, set = 0, binding = 1) readonly buffer Particles { vec4 particles[]; };  // xyz, w life
+layout(location = 0) out float across;  // -1..1 over the ribbon
+layout(location = 1) flat out float hue;
+layout(location = 2) out float along;   // 0 at the head, 1 at the tail
+
+void main() {
+  const uint chain = gl_InstanceIndex, perChain = F.counts.y;
+  const uint k = gl_VertexIndex / 2;
+  const uint base = chain * perChain;
+  const vec4 p = particles[base + k];
+  const vec3 ahead = particles[base + (k == 0 ? 0 : k - 1)].xyz;
+  const vec3 behind = particles[base + min(k + 1, perChain - 1)].xyz;
+  vec3 tangent = ahead - behind;
+  const vec3 toEye = normalize(F.eye.xyz - p.xyz);
+  vec3 side = cross(tangent, toEye);
+  const float sideLength = length(side);
+  side = sideLength > 1e-6 ? side / sideLength : vec3(0.0);  // a chain still gathered at its origin: no width
+  along = float(k) / float(max(perChain - 1, 1u));
+  const float life = clamp(p.w, 0.0, 1.0);
+  const float radius = F.colourB.w * sqrt(life) * (1.0 - 0.6 * along);
+  across = (gl_VertexIndex & 1) == 0 ? -1.0 : 1.0;
+  hue = fract(float(chain) * 0.618034);
+  gl_Position = F.viewProjection * vec4(p.xyz + side * across * radius, 1.0);
+}

@@ -1,0 +1,47 @@
+#pragma once
+// The neon scene's fixed camera: in front of the facade, a little above the ground, looking up at it;
+// a reverse-Z projection with an infinitely far plane (depth = near / distance along the view).
+#include "scenes/neon/facade.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace vitrine::neon {
+
+inline constexpr glm::vec3 kEye = kCameraEye;     // facade.h frames the facade with these
+inline constexpr glm::vec3 kLookAt = kCameraTarget;
+inline constexpr float kFovY = kCameraFovY;
+inline constexpr float kNear = 0.1f;
+inline constexpr float kReleasePlaneZ = 4.0f;  // heads are released on this plane, in front of the facade
+
+inline glm::mat4 viewMatrix() { return glm::lookAtRH(kEye, kLookAt, glm::vec3(0.0f, 1.0f, 0.0f)); }
+
+// Reverse-Z, infinite far plane, Vulkan's y down: clip = (x f / aspect, -y f, near, -z).
+inline glm::mat4 projectionMatrix(float aspect) {
+  const float f = 1.0f / std::tan(0.5f * kFovY);
+  glm::mat4 p(0.0f);
+  p[0][0] = f / aspect;
+  p[1][1] = -f;
+  p[2][3] = -1.0f;
+  p[3][2] = kNear;
+  return p;
+}
+
+// The cursor's ray (normalised coordinates, origin top-left) met with the release plane.
+inline std::optional<glm::vec3> cursorOnReleasePlane(glm::vec2 normalized, float aspect) {
+  const float f = std::tan(0.5f * kFovY);
+  const glm::vec2 ndc = normalized * 2.0f - 1.0f;
+  const glm::mat4 view = viewMatrix();
+  const glm::mat3 toWorld = glm::transpose(glm::mat3(view));
+  const glm::vec3 dir = glm::normalize(toWorld * glm::vec3(ndc.x * f * aspect, -ndc.y * f, -1.0f));
+  if (std::abs(dir.z) < 1e-6f) return std::nullopt;
+  const float t = (kReleasePlaneZ - kEye.z) / dir.z;
+  if (t <= 0.0f) return std::nullopt;
+  return kEye + dir * t;
+}
+
+}  // namespace vitrine::neon

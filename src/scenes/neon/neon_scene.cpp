@@ -1,0 +1,335 @@
+// neon: CPU-controlled GPU particle chains drawn as neon tubes over a facade (seed 002, "Neon").
+// A particle engine on its own thread owns each tube's life (released by the cursor or the autopilot,
+// two steps initialising, then decaying); its heads stream to the GPU every frame through the host's
+// upload ring, where a compute pass moves every chain: heads through curl noise, followers toward the
+// particle ahead. The facade and the tubes are drawn in render passes; the tubes also go to a glow
+// target that a mip-chain bloom blurs; depth of field, the tint, vignette, grain, aberration and the
+// ground's mirror are compute passes.
+#include "scenes/neon/neon_scene.h"
+
+#include "scenes/neon/camera.h"
+#include "scenes/neon/chains.h"
+#include "scenes/neon/facade.h"
+#include "scenes/neon/look.h"
+#include "scenes/neon/look_passes.h"
+#include "scenes/neon/particle_engine.h"
+#include "scenes/neon/settings.h"
+#include "maths/color.h"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace vitrine::neon {
+namespace {
+
+constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr uint32_t kLightingSize = 512;
+constexpr glm::vec3 kNightSky{0.004f, 0.005f, 0.012f};
+constexpr uint32_t kAutopilotPens = 3;
+
+// Mirrors shaders/neon/camera.glsl.
+struct NeonFrame {
+  glm::mat4 viewProjection;
+  glm::vec4 eye;
+  glm::vec4 colourA;
+  glm::vec4 colourB;
+  glm::uvec4 counts;
+};
+static_assert(sizeof(NeonFrame) == 128);
+
+gpu::ImageDecl screenImage(std::string name, VkFormat format, VkImageUsageFlags usage, uint32_t mips = 1) {
+  return {std::move(name), format, usage, gpu::ImageSize::relative(1.0f), mips};
+}
+
+gpu::GraphicsState facadeState() {
+  gpu::GraphicsState state;
+  state.vertex = "neon/facade.vert";
+  state.fragment = "neon/facade.frag";
+  state.colorFormats = {kColourFormat};
+  state.depthFormat = kDepthFormat;
+  state.cull = VK_CULL_MODE_BACK_BIT;
+  return state;
+}
+
+gpu::GraphicsState tubeState() {
+  gpu::GraphicsState state;
+  state.vertex = "neon/tube.vert";
+  state.fragment = "neon/tube.frag";
+  state.colorFormats = {kColourFormat, kColourFormat};  // the scene, and the glow the bloom blurs
+  state.depthFormat = kDepthFormat;
+  state.depthWrite = false;  // light adds up in any order; only the facade hides it
+  state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+  state.blend = gpu::GraphicsState::Blend::Additive;
+  return state;
+}
+
+glm::vec3 linear(glm::vec3 srgb) { return maths::srgbToLinear(srgb); }
+
+}  // namespace
+
+class NeonScene final : public Scene {
+ public:
+  explicit NeonScene(const SceneContext& context)
+      : device_(context.device),
+        resources_(context.resources),
+        events_(context.events),
+        mode_(context.realtime ? EngineMode::Worker : EngineMode::LockStep),
+        chains_(context.programs, "neon/chains.comp",
+                {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                  VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                 sizeof(ChainPush)}),
+        facade_(context.programs, facadeState(),
+                {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                 0}),
+        tubes_(context.programs, tubeState(),
+               {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0}),
+        look_(context) {
+    colour_ = resources_.declare(screenImage("neon scene", kColourFormat,
+                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                                 VK_IMAGE_USAGE_STORAGE_BIT));
+    depth_ = resources_.declare(screenImage("neon depth", kDepthFormat,
+                                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT));
+    glow_ = resources_.declare(screenImage("neon glow", kColourFormat,
+                                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                               VK_IMAGE_USAGE_STORAGE_BIT));
+    const std::vector<uint8_t> texels = facadeLightingTexture(kLightingSize);
+    gpu::ImageDecl lighting{"neon facade lighting", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_SAMPLED_BIT,
+                            gpu::ImageSize::absolute(kLightingSize, kLightingSize), 0};
+    lighting.initial.resize(texels.size());
+    std::memcpy(lighting.initial.data(), texels.data(), texels.size());
+    lighting.initialUse = gpu::use::FragmentSample;
+    lighting_ = resources_.declare(std::move(lighting));
+    boxes_ = facadeBoxes();
+    boxBuffer_.emplace(device_, boxes_.size() * sizeof(Box),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Device,
+                       "neon facade boxes");
+    rebuild();
+  }
+
+  void resize(VkExtent2D target) override {
+    extent_ = target;
+    aspect_ = float(target.width) / float(std::max(target.height, 1u));
+  }
+
+  void update(const FrameInput& input) override;
+  void record(const FrameContext& frame) override;
+  params::Bound parameters() override { return {&schema(), &settings_}; }
+  void drawPanel() override;
+
+ private:
+  void rebuild();
+  void release(double time, glm::vec3 position, const char* by);
+  void handleCursor(const FrameInput& input);
+  void autopilot(const FrameInput& input);
+  void recordChains(const FrameContext& frame);
+  void recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block);
+
+  const gpu::Device& device_;
+  gpu::FrameResources& resources_;
+  SceneEvents events_;
+  EngineMode mode_;
+  gpu::ComputeProgram chains_;
+  gpu::GraphicsProgram facade_;
+  gpu::GraphicsProgram tubes_;
+  LookPasses look_;
+  Settings settings_;
+  std::unique_ptr<ParticleEngine> engine_;
+  std::optional<PlacementGuard> placement_;
+  std::vector<HeadState> uploadHeads_;
+  int builtChains_ = 0, builtParticles_ = 0;
+  std::optional<gpu::Buffer> heads_, particles_[2], boxBuffer_;
+  uint32_t current_ = 0;  // which particle buffer holds this frame's positions
+  bool placed_ = false;   // the particle buffers have been filled once
+  bool boxesUploaded_ = false;
+  std::vector<Box> boxes_;
+  gpu::ImageHandle colour_, depth_, glow_, lighting_;
+  VkExtent2D extent_{1, 1};
+  float aspect_ = 16.0f / 9.0f;
+
+  double time_ = 0.0;
+  float dt_ = 1.0f / 60.0f;
+  double lastInput_ = -1e9;         // when the cursor last released a head
+  std::optional<glm::vec3> dragFrom_;  // where the drag last released
+  double autopilotNext_ = 0.0;
+  uint64_t releases_ = 0;
+};
+
+// The engine and the particle buffers for the current sizes; the old ones are retired, not waited for.
+void NeonScene::rebuild() {
+  builtChains_ = settings_.chains;
+  builtParticles_ = settings_.particles;
+  engine_ = std::make_unique<ParticleEngine>(EngineSettings{uint32_t(settings_.chains), settings_.decay}, mode_);
+  placement_.emplace(uint32_t(settings_.chains));
+  const VkDeviceSize headBytes = VkDeviceSize(settings_.chains) * sizeof(HeadState);
+  const VkDeviceSize particleBytes = VkDeviceSize(settings_.chains) * settings_.particles * sizeof(glm::vec4);
+  if (heads_) device_.retire(std::move(*heads_));
+  heads_.emplace(device_, headBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 gpu::MemoryUse::Device, "neon heads");
+  for (auto& buffer : particles_) {
+    if (buffer) device_.retire(std::move(*buffer));
+    buffer.emplace(device_, particleBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   gpu::MemoryUse::Device, "neon particles");
+  }
+  placed_ = false;
+}
+
+void NeonScene::release(double time, glm::vec3 position, const char* by) {
+  engine_->release(position);
+  ++releases_;
+  events_.emit(time, {"release", {{"x", position.x}, {"y", position.y}, {"z", position.z}, {"by", by}}});
+}
+
+// Dragging releases heads along the cursor's path on the release plane, one every `spacing` metres,
+// so the rate follows the drag's speed.
+void NeonScene::handleCursor(const FrameInput& input) {
+  if (!input.cursor.dragging) {
+    dragFrom_.reset();
+    return;
+  }
+  const auto at = cursorOnReleasePlane(input.cursor.normalized, aspect_);
+  if (!at) return;
+  lastInput_ = input.time;
+  if (!dragFrom_) {
+    release(input.time, *at, "cursor");
+    dragFrom_ = *at;
+    return;
+  }
+  const glm::vec3 path = *at - *dragFrom_;
+  const float length = glm::length(path);
+  const int count = int(length / settings_.spacing);
+  for (int i = 1; i <= count; ++i) release(input.time, *dragFrom_ + path * (float(i) * settings_.spacing / length), "cursor");
+  if (count > 0) dragFrom_ = *dragFrom_ + path * (float(count) * settings_.spacing / length);
+}
+
+// When nobody plays, three pens wander slow Lissajous paths over the release plane and release heads
+// as they go; the first drag takes over at once.
+void NeonScene::autopilot(const FrameInput& input) {
+  if (input.time - lastInput_ < settings_.autopilotIdle) {
+    autopilotNext_ = input.time;
+    return;
+  }
+  while (autopilotNext_ <= input.time) {
+    const double t = autopilotNext_;
+    for (uint32_t pen = 0; pen < kAutopilotPens; ++pen) {
+      const double phase = double(pen) * 2.1;
+      const glm::vec3 at{float(7.5 * std::sin(0.23 * t + phase)), float(7.0 + 5.0 * std::sin(0.31 * t + 1.7 * phase)),
+                         kReleasePlaneZ + float(1.5 * std::sin(0.17 * t + phase))};
+      release(t, at, "autopilot");
+    }
+    autopilotNext_ += double(kAutopilotPens) / double(settings_.autopilotRate);
+  }
+}
+
+void NeonScene::update(const FrameInput& input) {
+  time_ = input.time;
+  dt_ = input.dt;
+  if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) rebuild();
+  engine_->setDecayPerSecond(settings_.decay);
+  handleCursor(input);
+  autopilot(input);
+  engine_->step(input.dt);
+}
+
+void NeonScene::recordChains(const FrameContext& frame) {
+  const auto pass = frame.pass("neon chains");
+  // A head the GPU never saw initialising (the worker ran ahead of the frames) is sent as initialising
+  // once, so its chain starts at its origin instead of streaking in from the slot's last tube.
+  const Snapshot& snapshot = engine_->latest();
+  uploadHeads_.resize(snapshot.heads.size());
+  placement_->copy(snapshot.heads, uploadHeads_);
+  frame.upload(*heads_, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
+  gpu::Buffer& previous = *particles_[current_];
+  gpu::Buffer& next = *particles_[current_ ^ 1u];
+  if (!placed_) {  // the first frame: every particle where its chain's head would start
+    const std::vector<glm::vec4> zeros(size_t(builtChains_) * builtParticles_, glm::vec4(0.0f, -100.0f, 0.0f, 0.0f));
+    frame.upload(previous, 0, std::as_bytes(std::span(zeros)), gpu::use::ComputeReadBuffer);
+    placed_ = true;
+  }
+  frame.transition(previous, gpu::use::ComputeReadBuffer);
+  frame.transition(next, gpu::use::ComputeWriteBuffer);
+  // The potentials drift slowly through noise space, so the flow the heads ride keeps changing.
+  const ChainParams params{dt_, settings_.lerp, settings_.fieldStrength, settings_.fieldScale, time_ * 0.05};
+  const ChainPush push = chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params);
+  chains_.bind(frame.cmd);
+  chains_.constants(frame.cmd, push);
+  chains_.push(frame.cmd,
+               gpu::Bindings().storageBuffer(heads_->handle()).storageBuffer(previous.handle()).storageBuffer(next.handle()));
+  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_));
+  vkCmdDispatch(frame.cmd, groups.x, groups.y, 1);
+  current_ ^= 1u;
+}
+
+void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block) {
+  gpu::Image& colour = frame.image(colour_);
+  gpu::Image& depth = frame.image(depth_);
+  gpu::Image& lighting = frame.image(lighting_);
+  if (!boxesUploaded_) {
+    frame.upload(*boxBuffer_, 0, std::as_bytes(std::span(boxes_)), gpu::use::VertexReadBuffer);
+    boxesUploaded_ = true;
+  }
+  {
+    const auto pass = frame.pass("neon facade");
+    frame.transition(*boxBuffer_, gpu::use::VertexReadBuffer);
+    frame.transition(lighting, gpu::use::FragmentSample);
+    gpu::RenderingDesc desc;
+    desc.colors = {{&colour, VkClearColorValue{{kNightSky.r, kNightSky.g, kNightSky.b, 1.0f}}}};
+    desc.depth = gpu::DepthAttachment{&depth, 0.0f, true};
+    const auto rendering = frame.rendering(desc);
+    facade_.bind(frame.cmd);
+    facade_.push(frame.cmd, gpu::Bindings()
+                                .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
+                                .storageBuffer(boxBuffer_->handle())
+                                .sampledImage(lighting.view(),
+                                              device_.sampler(gpu::Device::Filter::Linear,
+                                                              gpu::Device::Address::Clamp, true),
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+    vkCmdDraw(frame.cmd, 36, uint32_t(boxes_.size()), 0, 0);
+  }
+  {
+    const auto pass = frame.pass("neon tubes");
+    gpu::Buffer& positions = *particles_[current_];
+    frame.transition(positions, gpu::use::VertexReadBuffer);
+    gpu::RenderingDesc desc;
+    desc.colors = {{&colour, std::nullopt}, {&frame.image(glow_), VkClearColorValue{}}};
+    desc.depth = gpu::DepthAttachment{&depth, std::nullopt, true};
+    const auto rendering = frame.rendering(desc);
+    if (settings_.stage == Stage::Base) return;  // the facade alone: the glow stays black
+    tubes_.bind(frame.cmd);
+    tubes_.push(frame.cmd, gpu::Bindings()
+                               .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
+                               .storageBuffer(positions.handle()));
+    vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
+  }
+}
+
+void NeonScene::record(const FrameContext& frame) {
+  recordChains(frame);
+  const glm::mat4 viewProjection = projectionMatrix(aspect_) * viewMatrix();
+  const NeonFrame block{viewProjection, glm::vec4(kEye, kNear),
+                        glm::vec4(linear(settings_.colourA), settings_.glow),
+                        glm::vec4(linear(settings_.colourB), settings_.radius),
+                        glm::uvec4(uint32_t(builtChains_), uint32_t(builtParticles_), 0u, 0u)};
+  recordFacadeAndTubes(frame, frame.uniform(block));
+  // The ground mirrors about the facade's foot, where it meets the ground straight ahead.
+  const float footY = projectedRow(viewProjection, glm::vec3(0.0f), float(extent_.height));
+  look_.record(frame, settings_, {frame.image(colour_), frame.image(depth_), frame.image(glow_), footY, kNear,
+                                  float(time_)});
+}
+
+void NeonScene::drawPanel() {
+  const Snapshot& snapshot = engine_->latest();
+  uint32_t alive = 0;
+  for (const HeadState& head : snapshot.heads) alive += chainState(head) != ChainState::Inactive;
+  ImGui::Text("%u of %d chains alive, %llu released", alive, builtChains_, (unsigned long long)releases_);
+  ImGui::Text("particle engine: %s", mode_ == EngineMode::Worker ? "worker thread" : "lock-step");
+  if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
+}
+
+const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema);
+
+}  // namespace vitrine::neon

@@ -1,0 +1,80 @@
+#include "scenes/neon/settings.h"
+
+namespace vitrine::neon {
+
+const params::Schema& schema() {
+  using S = Settings;
+  using params::kLogarithmic, params::kRebuilds, params::kTransient;
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<S>();
+    s.add(params::intParam<S>({"chains", "chains", "Tubes alive at once at most.", "tubes", kRebuilds | kLogarithmic},
+                              &S::chains, 16, 16384));
+    s.add(params::intParam<S>({"particles", "particles per chain", "Particles in each tube's chain.", "tubes",
+                               kRebuilds},
+                              &S::particles, 4, 64));
+    s.add(params::floatParam<S>({"decay", "decay", "Life lost per second once a tube is alive.", "tubes",
+                                 kLogarithmic},
+                                &S::decay, 0.02, 4.0));
+    s.add(params::floatParam<S>({"lerp", "follower lerp", "How far each particle moves toward the one ahead, per "
+                                 "step.", "tubes"},
+                                &S::lerp, 0.01, 1.0));
+    s.add(params::floatParam<S>({"field_strength", "field strength", "Speed of the curl-noise flow the heads ride, "
+                                 "m/s.", "tubes"},
+                                &S::fieldStrength, 0.0, 10.0));
+    s.add(params::floatParam<S>({"field_scale", "field scale", "Noise cells per metre: larger makes tighter "
+                                 "swirls.", "tubes", kLogarithmic},
+                                &S::fieldScale, 0.01, 2.0));
+    s.add(params::floatParam<S>({"radius", "tube radius", "Radius at full life, m; it tapers as life falls.",
+                                 "tubes"},
+                                &S::radius, 0.005, 0.5));
+    s.add(params::colourParam<S>({"colour_a", "colour A", "One end of the tubes' palette.", "tubes"}, &S::colourA));
+    s.add(params::colourParam<S>({"colour_b", "colour B", "The other end.", "tubes"}, &S::colourB));
+    s.add(params::floatParam<S>({"glow", "glow", "Emissive intensity of the gas.", "tubes", kLogarithmic},
+                                &S::glow, 0.1, 50.0));
+    s.add(params::floatParam<S>({"spacing", "release spacing", "A head is released every this many metres the "
+                                 "cursor drags.", "input", kLogarithmic},
+                                &S::spacing, 0.02, 5.0));
+    s.add(params::floatParam<S>({"autopilot_idle", "autopilot after", "Seconds without input before the "
+                                 "autopilot plays; input takes over at once.", "input"},
+                                &S::autopilotIdle, 0.0, 60.0));
+    s.add(params::floatParam<S>({"autopilot_rate", "autopilot rate", "Heads the autopilot releases per second.",
+                                 "input", kLogarithmic},
+                                &S::autopilotRate, 1.0, 5000.0));
+    s.add(params::floatParam<S>({"bloom_strength", "bloom strength", "How much of the blurred tubes is added "
+                                 "back.", "look"},
+                                &S::bloomStrength, 0.0, 4.0));
+    s.add(params::floatParam<S>({"bloom_radius", "bloom radius", "Spread of the upsampling tent.", "look"},
+                                &S::bloomRadius, 0.2, 3.0));
+    s.add(params::floatParam<S>({"focal_distance", "focal distance", "Distance in focus, m from the camera.",
+                                 "look", kLogarithmic},
+                                &S::focalDistance, 1.0, 100.0));
+    s.add(params::floatParam<S>({"aperture", "aperture", "Circle-of-confusion scale: 0 keeps all in focus.",
+                                 "look"},
+                                &S::aperture, 0.0, 4.0));
+    s.add(params::colourParam<S>({"tint_a", "tint A", "One colour of the noise-driven tint.", "look"}, &S::tintA));
+    s.add(params::colourParam<S>({"tint_b", "tint B", "The other.", "look"}, &S::tintB));
+    s.add(params::floatParam<S>({"tint_strength", "tint strength", "How much of the linear-burn tint is mixed "
+                                 "in.", "look"},
+                                &S::tintStrength, 0.0, 1.0));
+    s.add(params::floatParam<S>({"vignette", "vignette", "Darkening toward the corners.", "look"}, &S::vignette,
+                                0.0, 1.0));
+    s.add(params::floatParam<S>({"grain", "grain", "Film grain.", "look"}, &S::grain, 0.0, 0.3));
+    s.add(params::floatParam<S>({"aberration", "aberration", "RGB shift at the corners, pixels.", "look"},
+                                &S::aberration, 0.0, 8.0));
+    s.add(params::floatParam<S>({"mirror", "mirror", "Strength of the ground's reflection.", "look"}, &S::mirror,
+                                0.0, 1.0));
+    s.add(params::floatParam<S>({"distortion", "mirror distortion", "How far the ground's normal map bends the "
+                                 "reflection.", "look"},
+                                &S::distortion, 0.0, 2.0));
+    s.add(params::choiceParam<S>({"stage", "stage", "Show the frame after this stage: base, tubes, bloom, dof, "
+                                  "tint, final.", "look", kTransient},
+                                 &S::stage, {"base", "tubes", "bloom", "dof", "tint", "final"}));
+    s.preset({"dense", "4096 chains of 32.", {{"chains", "4096"}}});
+    s.preset({"clean", "No post effects: the tubes and their bloom.",
+              {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
+    return s;
+  }();
+  return table;
+}
+
+}  // namespace vitrine::neon

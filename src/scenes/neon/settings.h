@@ -1,0 +1,47 @@
+#pragma once
+// Everything the neon panel, --set, presets and the settings file can change, declared once
+// (params/schema.h). Lengths are metres in front of a facade about 20 m wide.
+#include "params/schema.h"
+
+#include <glm/vec3.hpp>
+
+namespace vitrine::neon {
+
+// What the frame shows: the facade alone, then each stage of the composite added (the seed's closing
+// figure, stage by stage).
+enum class Stage { Base, Tubes, Bloom, Dof, Tint, Final };
+
+struct Settings {
+  int chains = 1024;               // tubes alive at once at most
+  int particles = 32;              // particles per chain: the tube's length in steps
+  float decay = 0.35f;             // life lost per second once alive
+  float lerp = 0.3f;               // how far a follower moves toward the particle ahead, per step
+  float fieldStrength = 1.6f;      // the curl-noise flow's speed, m/s
+  float fieldScale = 0.22f;        // noise cells per metre
+  float radius = 0.07f;            // tube radius at full life, m
+  glm::vec3 colourA = params::hexColour(0xff2a6d);  // neon pink
+  glm::vec3 colourB = params::hexColour(0x05d9e8);  // neon cyan
+  float glow = 3.0f;               // emissive intensity
+  float spacing = 0.3f;            // a head is released every this many metres of drag
+  float autopilotIdle = 3.0f;      // seconds without input before the autopilot plays
+  float autopilotRate = 25.0f;     // heads the autopilot releases per second
+  float bloomStrength = 2.0f;
+  float bloomRadius = 1.0f;
+  float focalDistance = 16.0f;     // m from the camera
+  float aperture = 0.6f;           // circle-of-confusion scale
+  glm::vec3 tintA = params::hexColour(0xf7c6ff);
+  glm::vec3 tintB = params::hexColour(0x9ad7ff);
+  float tintStrength = 0.35f;
+  float vignette = 0.45f;
+  float grain = 0.04f;
+  float aberration = 0.6f;         // pixels at the corners
+  float mirror = 0.45f;
+  float distortion = 0.35f;
+  Stage stage = Stage::Final;
+
+  bool operator==(const Settings&) const = default;
+};
+
+const params::Schema& schema();
+
+}  // namespace vitrine::neon
