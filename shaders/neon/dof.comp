@@ -17,7 +17,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D colour;                   // linear HDR; read with texelFetch
-layout(set = 0, binding = 1) uniform sampler2D depth;                    // D32 reverse-Z; read with texelFetch
+layout(set = 0, binding = 1) uniform sampler2D depth;                    // r32f reverse-Z; read with texelFetch
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D target;  // same size as colour
 layout(push_constant) uniform Push {
   vec2 frameSize;       // pixels, of colour, depth and target

@@ -246,7 +246,8 @@ VkPipeline GraphicsProgram::build() const {
   VkPipelineColorBlendAttachmentState blend{};
   blend.colorWriteMask = 0xF;
   if (state_.blend != GraphicsState::Blend::None) {
-    const bool additive = state_.blend == GraphicsState::Blend::Additive;
+    const bool additive = state_.blend == GraphicsState::Blend::Additive ||
+                          state_.blend == GraphicsState::Blend::AdditiveMaxAlpha;
     const bool premultiplied = state_.blend == GraphicsState::Blend::Premultiplied;
     blend.blendEnable = VK_TRUE;
     blend.srcColorBlendFactor = additive || premultiplied ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA;
@@ -254,7 +255,7 @@ VkPipeline GraphicsProgram::build() const {
     blend.colorBlendOp = VK_BLEND_OP_ADD;
     blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
     blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend.alphaBlendOp = VK_BLEND_OP_ADD;
+    blend.alphaBlendOp = state_.blend == GraphicsState::Blend::AdditiveMaxAlpha ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD;
   }
   const std::vector<VkPipelineColorBlendAttachmentState> blends(state_.colorFormats.size(), blend);
   VkPipelineColorBlendStateCreateInfo colorBlend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

@@ -137,7 +137,9 @@ struct GraphicsState {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
-  enum class Blend { None, Additive, Alpha, Premultiplied } blend = Blend::None;
+  // AdditiveMaxAlpha: colours add, alpha keeps the largest (light that sums, plus the nearest reverse-Z
+  // depth of what added it, in one attachment).
+  enum class Blend { None, Additive, AdditiveMaxAlpha, Alpha, Premultiplied } blend = Blend::None;
 };
 
 class GraphicsProgram final : public Program {

@@ -91,7 +91,7 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
   if (dofOn) {
     const auto pass = frame.pass("neon dof");
     frame.transition(in.scene, gpu::use::ComputeSample);
-    frame.transition(in.depth, gpu::use::DepthRead);
+    frame.transition(in.depth, gpu::use::ComputeSample);
     frame.transition(focused, gpu::use::ComputeWrite);
     const float pixels = float(extent.height) / 1080.0f;  // circles of confusion scale with the frame
     const DofPush push{glm::vec2(extent.width, extent.height), in.near, settings.focalDistance,
@@ -103,7 +103,7 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
                   .sampledImage(in.scene.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                                 kSampled)
                   .sampledImage(in.depth.view(), device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
-                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+                                kSampled)
                   .storageImage(focused.view()));
     dof_.dispatchOver(frame.cmd, extent, {8, 8});
   }

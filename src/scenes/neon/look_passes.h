@@ -9,7 +9,7 @@ namespace vitrine::neon {
 
 struct LookInputs {
   gpu::Image& scene;  // the facade and the tubes, HDR
-  gpu::Image& depth;  // reverse-Z, infinitely far
+  gpu::Image& depth;  // r32f, reverse-Z (near / distance), 0 for the sky
   gpu::Image& glow;   // the tubes alone, HDR: what blooms
   float mirrorRow;    // pixels from the top: the ground mirrors about this row
   float near;         // the projection's near distance

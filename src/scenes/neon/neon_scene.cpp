@@ -26,7 +26,6 @@ namespace vitrine::neon {
 namespace {
 
 constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr uint32_t kLightingSize = 512;
 constexpr glm::vec3 kNightSky{0.004f, 0.005f, 0.012f};
 constexpr uint32_t kAutopilotPens = 3;
@@ -35,35 +34,28 @@ constexpr uint32_t kAutopilotPens = 3;
 struct NeonFrame {
   glm::mat4 viewProjection;
   glm::vec4 eye;
+  glm::vec4 right;
+  glm::vec4 up;
+  glm::vec4 forward;
   glm::vec4 colourA;
   glm::vec4 colourB;
   glm::uvec4 counts;
 };
-static_assert(sizeof(NeonFrame) == 128);
+static_assert(sizeof(NeonFrame) == 176);
+
+constexpr VkFormat kDepthCopyFormat = VK_FORMAT_R32_SFLOAT;  // the facade's depth, written by compute
 
 gpu::ImageDecl screenImage(std::string name, VkFormat format, VkImageUsageFlags usage, uint32_t mips = 1) {
   return {std::move(name), format, usage, gpu::ImageSize::relative(1.0f), mips};
-}
-
-gpu::GraphicsState facadeState() {
-  gpu::GraphicsState state;
-  state.vertex = "neon/facade.vert";
-  state.fragment = "neon/facade.frag";
-  state.colorFormats = {kColourFormat};
-  state.depthFormat = kDepthFormat;
-  state.cull = VK_CULL_MODE_BACK_BIT;
-  return state;
 }
 
 gpu::GraphicsState tubeState() {
   gpu::GraphicsState state;
   state.vertex = "neon/tube.vert";
   state.fragment = "neon/tube.frag";
-  state.colorFormats = {kColourFormat, kColourFormat};  // the scene, and the glow the bloom blurs
-  state.depthFormat = kDepthFormat;
-  state.depthWrite = false;  // light adds up in any order; only the facade hides it
+  state.colorFormats = {kColourFormat};  // the tubes' own light, merged into the scene and bloomed
   state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-  state.blend = gpu::GraphicsState::Blend::Additive;
+  state.blend = gpu::GraphicsState::Blend::AdditiveMaxAlpha;  // alpha: the nearest tube's depth
   return state;
 }
 
@@ -82,18 +74,25 @@ class NeonScene final : public Scene {
                 {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                   VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                  sizeof(ChainPush)}),
-        facade_(context.programs, facadeState(),
+        facade_(context.programs, "neon/facade.comp",
                 {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                 0}),
+                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                 sizeof(glm::vec4)}),
         tubes_(context.programs, tubeState(),
-               {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0}),
+               {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                0}),
+        merge_(context.programs, "neon/merge.comp",
+               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                0}),
+        clear_(context.programs, "neon/clear.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 0}),
         look_(context) {
     colour_ = resources_.declare(screenImage("neon scene", kColourFormat,
-                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                 VK_IMAGE_USAGE_STORAGE_BIT));
-    depth_ = resources_.declare(screenImage("neon depth", kDepthFormat,
-                                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT));
+                                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
+    depth_ = resources_.declare(screenImage("neon depth", kDepthCopyFormat,
+                                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
     glow_ = resources_.declare(screenImage("neon glow", kColourFormat,
                                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                                VK_IMAGE_USAGE_STORAGE_BIT));
@@ -102,7 +101,7 @@ class NeonScene final : public Scene {
                             gpu::ImageSize::absolute(kLightingSize, kLightingSize), 0};
     lighting.initial.resize(texels.size());
     std::memcpy(lighting.initial.data(), texels.data(), texels.size());
-    lighting.initialUse = gpu::use::FragmentSample;
+    lighting.initialUse = gpu::use::ComputeSample;
     lighting_ = resources_.declare(std::move(lighting));
     boxes_ = facadeBoxes();
     boxBuffer_.emplace(device_, boxes_.size() * sizeof(Box),
@@ -113,6 +112,7 @@ class NeonScene final : public Scene {
 
   void resize(VkExtent2D target) override {
     extent_ = target;
+    glowCleared_ = false;  // a new target
     aspect_ = float(target.width) / float(std::max(target.height, 1u));
   }
 
@@ -134,8 +134,10 @@ class NeonScene final : public Scene {
   SceneEvents events_;
   EngineMode mode_;
   gpu::ComputeProgram chains_;
-  gpu::GraphicsProgram facade_;
+  gpu::ComputeProgram facade_;
   gpu::GraphicsProgram tubes_;
+  gpu::ComputeProgram merge_;
+  gpu::ComputeProgram clear_;
   LookPasses look_;
   Settings settings_;
   std::unique_ptr<ParticleEngine> engine_;
@@ -148,6 +150,7 @@ class NeonScene final : public Scene {
   bool boxesUploaded_ = false;
   std::vector<Box> boxes_;
   gpu::ImageHandle colour_, depth_, glow_, lighting_;
+  bool glowCleared_ = false;  // the tubes' target holds zeros (cleared after its last use, or at creation)
   VkExtent2D extent_{1, 1};
   float aspect_ = 16.0f / 9.0f;
 
@@ -267,58 +270,88 @@ void NeonScene::recordChains(const FrameContext& frame) {
 void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block) {
   gpu::Image& colour = frame.image(colour_);
   gpu::Image& depth = frame.image(depth_);
+  gpu::Image& glow = frame.image(glow_);
   gpu::Image& lighting = frame.image(lighting_);
+  const VkSampler nearest = device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp);
+  constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   if (!boxesUploaded_) {
-    frame.upload(*boxBuffer_, 0, std::as_bytes(std::span(boxes_)), gpu::use::VertexReadBuffer);
+    frame.upload(*boxBuffer_, 0, std::as_bytes(std::span(boxes_)), gpu::use::ComputeReadBuffer);
     boxesUploaded_ = true;
   }
   {
     const auto pass = frame.pass("neon facade");
-    frame.transition(*boxBuffer_, gpu::use::VertexReadBuffer);
-    frame.transition(lighting, gpu::use::FragmentSample);
-    gpu::RenderingDesc desc;
-    desc.colors = {{&colour, VkClearColorValue{{kNightSky.r, kNightSky.g, kNightSky.b, 1.0f}}}};
-    desc.depth = gpu::DepthAttachment{&depth, 0.0f, true};
-    const auto rendering = frame.rendering(desc);
+    frame.transition(*boxBuffer_, gpu::use::ComputeReadBuffer);
+    frame.transition(lighting, gpu::use::ComputeSample);
+    frame.transition(colour, gpu::use::ComputeWrite);
+    frame.transition(depth, gpu::use::ComputeWrite);
     facade_.bind(frame.cmd);
+    facade_.constants(frame.cmd, glm::vec4(kNightSky, 1.0f));
     facade_.push(frame.cmd, gpu::Bindings()
                                 .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
                                 .storageBuffer(boxBuffer_->handle())
                                 .sampledImage(lighting.view(),
                                               device_.sampler(gpu::Device::Filter::Linear,
                                                               gpu::Device::Address::Clamp, true),
-                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-    vkCmdDraw(frame.cmd, 36, uint32_t(boxes_.size()), 0, 0);
+                                              kSampled)
+                                .storageImage(colour.view())
+                                .storageImage(depth.view()));
+    facade_.dispatchOver(frame.cmd, extent_, {8, 8});
   }
   {
     const auto pass = frame.pass("neon tubes");
     gpu::Buffer& positions = *particles_[current_];
     frame.transition(positions, gpu::use::VertexReadBuffer);
+    frame.transition(depth, gpu::use::FragmentSample);
     gpu::RenderingDesc desc;
-    desc.colors = {{&colour, std::nullopt}, {&frame.image(glow_), VkClearColorValue{}}};
-    desc.depth = gpu::DepthAttachment{&depth, std::nullopt, true};
+    // Zeroed by the clear pass at the end of the last frame; a new target is cleared here once.
+    desc.colors = {{&glow, glowCleared_ ? std::nullopt : std::optional<VkClearColorValue>(VkClearColorValue{})}};
     const auto rendering = frame.rendering(desc);
-    if (settings_.stage == Stage::Base) return;  // the facade alone: the glow stays black
-    tubes_.bind(frame.cmd);
-    tubes_.push(frame.cmd, gpu::Bindings()
-                               .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
-                               .storageBuffer(positions.handle()));
-    vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
+    if (settings_.stage != Stage::Base) {  // the base stage is the facade alone
+      tubes_.bind(frame.cmd);
+      tubes_.push(frame.cmd, gpu::Bindings()
+                                 .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
+                                 .storageBuffer(positions.handle())
+                                 .sampledImage(depth.view(), nearest, kSampled));
+      vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
+    }
   }
+  const auto pass = frame.pass("neon merge");
+  frame.transition(colour, gpu::use::ComputeReadWrite);
+  frame.transition(depth, gpu::use::ComputeReadWrite);
+  frame.transition(glow, gpu::use::ComputeSample);
+  merge_.bind(frame.cmd);
+  merge_.push(frame.cmd, gpu::Bindings()
+                             .storageImage(colour.view())
+                             .storageImage(depth.view())
+                             .sampledImage(glow.view(), nearest, kSampled));
+  merge_.dispatchOver(frame.cmd, extent_, {8, 8});
 }
 
 void NeonScene::record(const FrameContext& frame) {
   recordChains(frame);
   const glm::mat4 viewProjection = projectionMatrix(aspect_) * viewMatrix();
-  const NeonFrame block{viewProjection, glm::vec4(kEye, kNear),
+  const glm::mat3 axes = glm::transpose(glm::mat3(viewMatrix()));  // the camera's right, up and back in world
+  const float tanHalf = std::tan(0.5f * kFovY);
+  const NeonFrame block{viewProjection,
+                        glm::vec4(kEye, kNear),
+                        glm::vec4(axes[0] * tanHalf * aspect_, float(extent_.width)),
+                        glm::vec4(axes[1] * tanHalf, float(extent_.height)),
+                        glm::vec4(-axes[2], 0.0f),
                         glm::vec4(linear(settings_.colourA), settings_.glow),
                         glm::vec4(linear(settings_.colourB), settings_.radius),
-                        glm::uvec4(uint32_t(builtChains_), uint32_t(builtParticles_), 0u, 0u)};
+                        glm::uvec4(uint32_t(builtChains_), uint32_t(builtParticles_), uint32_t(boxes_.size()), 0u)};
   recordFacadeAndTubes(frame, frame.uniform(block));
   // The ground mirrors about the facade's foot, where it meets the ground straight ahead.
   const float footY = projectedRow(viewProjection, glm::vec3(0.0f), float(extent_.height));
   look_.record(frame, settings_, {frame.image(colour_), frame.image(depth_), frame.image(glow_), footY, kNear,
                                   float(time_)});
+  const auto pass = frame.pass("neon clear");
+  gpu::Image& glow = frame.image(glow_);
+  frame.transition(glow, gpu::use::ComputeWrite);
+  clear_.bind(frame.cmd);
+  clear_.push(frame.cmd, gpu::Bindings().storageImage(glow.view()));
+  clear_.dispatchOver(frame.cmd, extent_, {8, 8});
+  glowCleared_ = true;
 }
 
 void NeonScene::drawPanel() {
