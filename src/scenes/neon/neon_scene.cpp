@@ -29,6 +29,7 @@ constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr uint32_t kLightingSize = 512;
 constexpr glm::vec3 kNightSky{0.004f, 0.005f, 0.012f};
 constexpr uint32_t kAutopilotPens = 3;
+constexpr int kMaxChainStepsPerFrame = 4;  // catch-up chain steps in one frame at most
 
 // Mirrors shaders/neon/camera.glsl.
 struct NeonFrame {
@@ -146,6 +147,7 @@ class NeonScene final : public Scene {
   int builtChains_ = 0, builtParticles_ = 0;
   std::optional<gpu::Buffer> heads_, particles_[2], boxBuffer_;
   uint32_t current_ = 0;  // which particle buffer holds this frame's positions
+  int stepsPending_ = 0;  // simulation steps since the chains last moved
   bool placed_ = false;   // the particle buffers have been filled once
   bool boxesUploaded_ = false;
   std::vector<Box> boxes_;
@@ -236,6 +238,7 @@ void NeonScene::update(const FrameInput& input) {
   handleCursor(input);
   autopilot(input);
   engine_->step(input.dt);
+  ++stepsPending_;
 }
 
 void NeonScene::recordChains(const FrameContext& frame) {
@@ -246,25 +249,33 @@ void NeonScene::recordChains(const FrameContext& frame) {
   uploadHeads_.resize(snapshot.heads.size());
   placement_->copy(snapshot.heads, uploadHeads_);
   frame.upload(*heads_, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
-  gpu::Buffer& previous = *particles_[current_];
-  gpu::Buffer& next = *particles_[current_ ^ 1u];
-  if (!placed_) {  // the first frame: every particle where its chain's head would start
-    const std::vector<glm::vec4> zeros(size_t(builtChains_) * builtParticles_, glm::vec4(0.0f, -100.0f, 0.0f, 0.0f));
-    frame.upload(previous, 0, std::as_bytes(std::span(zeros)), gpu::use::ComputeReadBuffer);
+  if (!placed_) {  // the first frame: every particle out of sight until its chain is released
+    const std::vector<glm::vec4> hidden(size_t(builtChains_) * builtParticles_, glm::vec4(0.0f, -100.0f, 0.0f, 0.0f));
+    frame.upload(*particles_[current_], 0, std::as_bytes(std::span(hidden)), gpu::use::ComputeReadBuffer);
     placed_ = true;
   }
-  frame.transition(previous, gpu::use::ComputeReadBuffer);
-  frame.transition(next, gpu::use::ComputeWriteBuffer);
+  // One chain step per simulation step since the last frame (a few at most), so a slow frame rate
+  // does not slow the tubes' motion against their life, which the engine counts in steps.
+  const int steps = std::clamp(stepsPending_, 1, kMaxChainStepsPerFrame);
+  stepsPending_ = 0;
   // The potentials drift slowly through noise space, so the flow the heads ride keeps changing.
   const ChainParams params{dt_, settings_.lerp, settings_.fieldStrength, settings_.fieldScale, time_ * 0.05};
   const ChainPush push = chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params);
+  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_));
   chains_.bind(frame.cmd);
   chains_.constants(frame.cmd, push);
-  chains_.push(frame.cmd,
-               gpu::Bindings().storageBuffer(heads_->handle()).storageBuffer(previous.handle()).storageBuffer(next.handle()));
-  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_));
-  vkCmdDispatch(frame.cmd, groups.x, groups.y, 1);
-  current_ ^= 1u;
+  for (int i = 0; i < steps; ++i) {
+    gpu::Buffer& previous = *particles_[current_];
+    gpu::Buffer& next = *particles_[current_ ^ 1u];
+    frame.transition(previous, gpu::use::ComputeReadBuffer);
+    frame.transition(next, gpu::use::ComputeWriteBuffer);
+    chains_.push(frame.cmd, gpu::Bindings()
+                                .storageBuffer(heads_->handle())
+                                .storageBuffer(previous.handle())
+                                .storageBuffer(next.handle()));
+    vkCmdDispatch(frame.cmd, groups.x, groups.y, 1);
+    current_ ^= 1u;
+  }
 }
 
 void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block) {
