@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/output_path.h"
+#include "image/image_io.h"
 #include "scenes/scene.h"
 
 #include <algorithm>
@@ -40,6 +41,25 @@ double parseSeconds(std::string_view flag, std::string_view text) {
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
     throw Error(fmt::format("{} expects a finite number of seconds, not '{}'.", flag, text));
   return value;
+}
+
+// A finite number above 0 and at most max (frames a second, a film's seconds).
+double parsePositive(std::string_view flag, std::string_view text, double max) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !(value > 0.0) || !(value <= max))
+    throw Error(fmt::format("{} expects a number above 0 and at most {}, not '{}'.", flag, max, text));
+  return value;
+}
+
+// "A:B": frames A up to, not including, B.
+std::pair<uint32_t, uint32_t> parseRange(std::string_view text) {
+  const auto colon = text.find(':');
+  const auto a = colon == std::string_view::npos ? std::nullopt : wholeNumber(text.substr(0, colon), 0, kMaxWhole);
+  const auto b = colon == std::string_view::npos ? std::nullopt : wholeNumber(text.substr(colon + 1), 0, kMaxWhole);
+  if (!a || !b || *a >= *b)
+    throw Error(fmt::format("--range expects FIRST:END, frames FIRST up to but not including END, not '{}'.", text));
+  return {*a, *b};
 }
 
 // "SCENE.NAME" or "NAME": split at the '.', which neither scene names nor keys contain. Nothing when
@@ -92,6 +112,9 @@ const char* usage() {
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
           [--audio-out FILE.wav]
           --out FILE.exr|FILE.png
+  vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
+          [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
+          [--events FILE]
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
           [--preset [SCENE.]NAME]... --json FILE
   vitrine compare REFERENCE.exr CANDIDATE.exr
@@ -101,6 +124,9 @@ const char* usage() {
 Gallery keys: 1-9 switch scene, Tab hides the UI, V toggles vsync, M mutes, F11 fullscreen, F12 screenshot,
 Esc quits.
 Headless frame k shows time SECONDS + k/60; the last frame is written.
+record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average of K samples spread over
+its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames
+A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
 )";
@@ -125,6 +151,9 @@ Options parseOptions(int argc, const char* const* argv) {
   if (argc > 1 && std::string_view(argv[1]) == "bench") {
     options.mode = Mode::Bench;
     options.frames = 200;
+    ++i;
+  } else if (argc > 1 && std::string_view(argv[1]) == "record") {
+    options.mode = Mode::Record;
     ++i;
   } else if (argc > 1 && std::string_view(argv[1]) == "compare") {
     options.mode = Mode::Compare;
@@ -159,6 +188,15 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--events") options.events = value(arg);
     else if (arg == "--audio-out") options.audioOut = value(arg);
     else if (arg == "--reset-settings") options.resetSettings = true;
+    else if (arg == "--fps") options.fps = parsePositive(arg, value(arg), 1000.0);
+    else if (arg == "--seconds") options.seconds = parsePositive(arg, value(arg), 86400.0);
+    else if (arg == "--spp") options.spp = parseWhole(arg, value(arg), 1);
+    else if (arg == "--range") options.range = parseRange(value(arg));
+    else if (arg == "--format") {
+      options.format = lowercase(value(arg));
+      if (options.format != "exr" && options.format != "png")
+        throw Error(fmt::format("--format writes exr or png, not '{}'.", options.format));
+    }
     else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
     else if (arg == "--list-params") {
@@ -180,8 +218,17 @@ Options parseOptions(int argc, const char* const* argv) {
   if (const std::string ext = lowercase(std::filesystem::path(options.out).extension().string());
       options.mode == Mode::Headless && ext != ".exr" && ext != ".png")
     throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
-  if (!options.input.empty() && options.mode != Mode::Headless) throw Error("--input is only for --headless runs.");
-  if (!options.events.empty() && options.mode != Mode::Headless) throw Error("--events is only for --headless runs.");
+  if (options.mode == Mode::Record) {
+    if (options.scene.empty()) throw Error("record needs --scene NAME.");
+    if (options.out.empty()) throw Error("record needs --out FOLDER for the numbered frames.");
+    if (!(options.seconds > 0.0)) throw Error("record needs --seconds S, the film's length.");
+    if (options.spp > 256) throw Error("--spp takes 1 to 256 samples a frame.");
+    if (options.format == "png" && !canWritePng())
+      throw Error("This build writes EXR only (built without OpenImageIO); use --format exr.");
+  }
+  const bool scripted = options.mode == Mode::Headless || options.mode == Mode::Record;
+  if (!options.input.empty() && !scripted) throw Error("--input is only for --headless and record runs.");
+  if (!options.events.empty() && !scripted) throw Error("--events is only for --headless and record runs.");
   if (!options.events.empty()) checkWritable(options.events);
   if (!options.audioOut.empty()) {
     if (options.mode != Mode::Headless) throw Error("--audio-out is only for --headless runs.");

@@ -11,7 +11,7 @@
 
 namespace vitrine {
 
-enum class Mode { Gallery, Headless, Bench, Compare, ListDevices, ListScenes, ListParams, Help, Version };
+enum class Mode { Gallery, Headless, Bench, Record, Compare, ListDevices, ListScenes, ListParams, Help, Version };
 
 // One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
 struct SceneSetting {
@@ -43,6 +43,12 @@ struct Options {
   std::string events;                // --events FILE (headless): the scene's events, as JSON lines
   bool resetSettings = false;        // --reset-settings (gallery)
   std::string audioOut;              // --audio-out FILE.wav (headless): the run's sound, offline
+  // record: a numbered sequence of frames into the folder --out.
+  double fps = 30.0;                 // --fps F
+  double seconds = 0.0;              // --seconds S: the film's length
+  uint32_t spp = 1;                  // --spp K: sub-frame samples averaged into each frame
+  std::optional<std::pair<uint32_t, uint32_t>> range;  // --range A:B: only frames A .. B-1
+  std::string format = "exr";        // --format exr|png
 };
 
 Options parseOptions(int argc, const char* const* argv);

@@ -134,6 +134,8 @@ class OfflineAudio final : public AudioSink {
   // Commands before startTime apply at its first sample, those after the end are left out.
   // Renders afresh each call. Throws vitrine::Error for a negative or non-finite length.
   std::vector<float> render(double seconds) const;
+  // How many commands the scene gave: none means a silent scene (no WAV worth writing).
+  size_t commandCount() const { return commands_.size(); }
 
  private:
   void add(Command::Kind kind, double time, float value);

@@ -108,6 +108,7 @@ class Gallery {
   FrameInput input_;  // the next simulation step's
   FrameInput shown_;  // the last step's: what the frame being recorded shows
   FixedStep steps_;   // after input_, whose dt it is built from
+  TimeControl time_;  // pause, single steps, speed
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
@@ -220,6 +221,15 @@ void Gallery::handleKeys() {
       case GLFW_KEY_F12:
         screenshots_.request();
         break;
+      case GLFW_KEY_P:
+        time_.paused = !time_.paused;
+        break;
+      case GLFW_KEY_PERIOD:
+        if (time_.paused) time_.stepRequested = true;
+        break;
+      case GLFW_KEY_F5:  // the scene from its first frame, its parameters kept
+        nextScene_ = &renderer_.info();
+        break;
       default:
         if (const SceneInfo* info = sceneForKey(key)) nextScene_ = info;
     }
@@ -294,7 +304,7 @@ void Gallery::simulate() {
   lastFrame_ = now;
   frameSeconds_ += (elapsed - frameSeconds_) * 0.05;
   cursor_.observe(window_.takePointer(), !uiHidden_ && overlay_.wantsMouse());
-  for (int due = steps_.advance(elapsed); due > 0; --due) {
+  for (int due = time_.due(steps_, elapsed); due > 0; --due) {
     input_.cursor = cursor_.take();
     input_.keysPressed = std::exchange(keys_, {});
     input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
@@ -311,8 +321,9 @@ void Gallery::showMenu() {
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
   const MenuChoice choice =
       drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
-                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_});
+                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_});
   vsync_ = choice.vsync;
+  time_ = choice.time;
   if (choice.scene) nextScene_ = choice.scene;
   if (choice.edit) applyEdit(*choice.edit);
 }

@@ -44,11 +44,21 @@ void drawWrapped(std::string_view text) {
 }  // namespace
 
 MenuChoice drawMenu(const MenuState& state) {
-  MenuChoice choice{nullptr, state.vsync};
+  MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time};
   ImGui::SetNextWindowPos(ImVec2(12.0f, 12.0f), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Vitrine", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawTimings(state);
     ImGui::Checkbox("vsync (V)", &choice.vsync);
+    ImGui::SameLine();
+    ImGui::Checkbox("pause (P)", &choice.time.paused);
+    if (choice.time.paused) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("step (.)")) choice.time.stepRequested = true;
+    }
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    ImGui::SliderFloat("speed", &choice.time.speed, 0.0f, TimeControl::kMaxSpeed, "%.2fx");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("restart (F5)")) choice.scene = &state.current;
     ImGui::Separator();
     choice.scene = drawSceneList(state.current, state.titleFont);
     const std::string header = fmt::format("{}###scene panel", state.current.title);
@@ -70,7 +80,8 @@ MenuChoice drawMenu(const MenuState& state) {
       ImGui::PopStyleColor();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("1-9 scene  Tab hide UI  M mute  F11 fullscreen  F12 screenshot  Esc quit");
+    ImGui::TextDisabled("1-9 scene  Tab hide UI  P pause  . step  F5 restart  M mute  F11 fullscreen  F12 screenshot  "
+                        "Esc quit");
   }
   ImGui::End();
   return choice;

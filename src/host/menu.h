@@ -1,4 +1,5 @@
 #pragma once
+#include "host/fixed_step.h"
 // The gallery's menu: scenes, timings, vsync, the current scene's own panel, and what went wrong.
 // It only draws and reports what was chosen; the frame loop decides what a choice changes.
 #include "gpu/pass_timer.h"
@@ -27,12 +28,14 @@ struct MenuState {
   ImFont* titleFont = nullptr;                 // for scene names; null: the body font
   ParamPanel* panel = nullptr;                 // the scene's parameters, from its schema
   std::string_view panelError;                 // why the last edit was refused
+  TimeControl time;                            // pause, single steps, speed
 };
 
 struct MenuChoice {
   const SceneInfo* scene = nullptr;  // a scene to start afresh (the current one restarts)
   bool vsync = true;
   std::optional<PanelEdit> edit;     // what the user changed in the parameter panel
+  TimeControl time;                  // as the menu's controls left it
 };
 
 MenuChoice drawMenu(const MenuState& state);

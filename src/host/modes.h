@@ -7,6 +7,7 @@ namespace vitrine::host {
 int runGallery(const Options& options);   // window, swapchain, overlay (host/gallery.cpp)
 int runHeadless(const Options& options);  // --headless: N frames into an EXR/PNG
 int runBench(const Options& options);     // bench: GPU timestamps per pass into JSON
+int runRecord(const Options& options);    // record: a numbered frame sequence (and its sound) for a film
 int runCompare(const Options& options);   // compare: the golden metric on two files
 int runListParams(const Options& options);  // --list-params: each scene's parameters (host/list_params.cpp)
 

@@ -3,19 +3,17 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
 
 namespace vitrine::host {
-namespace {
-constexpr double kStep = 1.0 / 60.0;  // FrameInput::dt, exactly
-}  // namespace
-
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
     : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size),
-      startTime_(config.startTime) {
+      startTime_(config.startTime), step_(config.step) {
+  if (!(step_ > 0.0) || !std::isfinite(step_)) throw Error("an offscreen run needs a finite, positive time step");
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
@@ -29,6 +27,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   if (auto why = renderer_.applyParameters(config.parameters); !why.empty())
     throw Error(fmt::format("Scene {} rejects {}", config.scene, why));
   input_.time = config.startTime;
+  input_.dt = float(step_);
   input_.seed = config.seed;
   input_.reducedMotion = config.reducedMotion;
 
@@ -47,7 +46,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
 
 FrameTimes Offscreen::renderFrame() {
   const auto start = std::chrono::steady_clock::now();
-  input_.time = startTime_ + double(input_.frame) * kStep;
+  input_.time = startTime_ + double(input_.frame) * step_;
   if (player_) {
     StepInput step = player_->step(input_.time, size_);
     input_.cursor = step.cursor;

@@ -1,6 +1,7 @@
 #pragma once
 // A scene rendered with no window and no surface, one fixed step per frame: the headless CLI, the
-// benchmark and the golden tests all drive this. Frame k shows time startTime + k / 60, computed
+// benchmark, recordings and the golden tests all drive this. Frame k shows time startTime + k x step (1/60
+// unless a recording asks for another), computed
 // in double from k (never by summing steps, which drifts), and an input script sees the same times.
 #include "image/image.h"
 #include "host/input_script.h"
@@ -24,6 +25,7 @@ struct OffscreenConfig {
   std::optional<InputScript> input;  // --input: the cursor and keys, as a person would use them
   EventSink* events = nullptr;       // --events: where the scene's events go
   audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
+  double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
 };
 
 struct FrameTimes {
@@ -55,6 +57,7 @@ class Offscreen {
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   FrameInput input_;
   double startTime_;
+  double step_;
   std::optional<InputPlayer> player_;
   bool rendered_ = false;
 };

@@ -7,6 +7,27 @@
 namespace vitrine::host {
 namespace {
 
+TEST(TimeControl, PauseStepAndSpeed) {
+  FixedStep steps(0.01, 4);
+  TimeControl time;
+  steps.advance(0.0);
+  EXPECT_EQ(time.due(steps, 0.02), 2);
+  time.speed = 2.0f;  // twice as fast: 0.02 s of real time is four steps
+  EXPECT_EQ(time.due(steps, 0.02), 4);
+  time.speed = 0.5f;
+  EXPECT_EQ(time.due(steps, 0.02), 1);
+  time.paused = true;
+  EXPECT_EQ(time.due(steps, 1.0), 0) << "paused: real time passes, the scene does not";
+  time.stepRequested = true;
+  EXPECT_EQ(time.due(steps, 1.0), 1) << "one step on request";
+  EXPECT_EQ(time.due(steps, 1.0), 0) << "and only one";
+  time.paused = false;
+  time.speed = 1.0f;
+  EXPECT_EQ(time.due(steps, 0.01), 1) << "resuming does not make up the paused time";
+  time.speed = 0.0f;
+  EXPECT_EQ(time.due(steps, 1.0), 0) << "speed 0 holds the scene like a pause";
+}
+
 TEST(FixedStep, TurnsRealTimeIntoWholeStepsAndCapsCatchUp) {
   FixedStep steps(1.0 / 60.0, 4);
   EXPECT_EQ(steps.advance(0.0), 1);  // a fresh scene is updated before it is first drawn

@@ -166,16 +166,40 @@ class OptionsFiles : public ::testing::Test {
   std::filesystem::path folder_;
 };
 
+TEST(Options, RecordTakesAFilmsShape) {
+  const auto o = parse({"record", "--scene", "neon", "--seconds", "2.5", "--fps", "24", "--spp", "4", "--range",
+                        "10:20", "--format", "PNG", "--out", "film"});
+  EXPECT_EQ(o.mode, Mode::Record);
+  EXPECT_DOUBLE_EQ(o.seconds, 2.5);
+  EXPECT_DOUBLE_EQ(o.fps, 24.0);
+  EXPECT_EQ(o.spp, 4u);
+  ASSERT_TRUE(o.range);
+  EXPECT_EQ(o.range->first, 10u);
+  EXPECT_EQ(o.range->second, 20u);
+  EXPECT_EQ(o.format, "png");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--out", "film"}), "record needs --seconds S, the film's length.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1"}),
+            "record needs --out FOLDER for the numbered frames.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "f", "--range", "7:3"}),
+            "--range expects FIRST:END, frames FIRST up to but not including END, not '7:3'.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "f", "--fps", "0"}),
+            "--fps expects a number above 0 and at most 1000, not '0'.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "f", "--format", "tiff"}),
+            "--format writes exr or png, not 'tiff'.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "f", "--spp", "300"}),
+            "--spp takes 1 to 256 samples a frame.");
+}
+
 TEST_F(OptionsFiles, InputAndEventsBelongToHeadlessRuns) {
   const std::string events = (folder_ / "events.jsonl").string();
   const auto o = parse({"--headless", "--scene", "kifs", "--input", "moves.txt", "--events", events.c_str(),
                         "--out", "x.exr"});
   EXPECT_EQ(o.input, "moves.txt");
   EXPECT_EQ(o.events, events);
-  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless runs.");
-  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless runs.");
+  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless and record runs.");
+  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless and record runs.");
   EXPECT_EQ(refusal({"bench", "--json", "b.json", "--events", events.c_str()}),
-            "--events is only for --headless runs.");
+            "--events is only for --headless and record runs.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--input"}),
             "--input needs a value; see vitrine --help.");
 }

@@ -1,0 +1,127 @@
+// record: a scene rendered offline into a numbered sequence of frames, for a film. Time advances in
+// fixed steps of 1 / (fps x samples), so each frame averages `spp` samples spread over its interval
+// (motion blur and anti-aliasing at once). The simulation always runs from frame 0, writing only the
+// frames asked for that are not already there: a run resumes where an interrupted one stopped, and
+// frames A..B-1 rendered on one machine are bit for bit those a whole run renders (same driver).
+#include "audio/engine.h"
+#include "audio/wav.h"
+#include "core/error.h"
+#include "host/event_log.h"
+#include "host/modes.h"
+#include "host/offscreen.h"
+#include "image/image_io.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace vitrine::host {
+namespace {
+
+std::filesystem::path framePath(const std::filesystem::path& folder, uint32_t frame, const std::string& format) {
+  return folder / fmt::format("frame_{:06d}.{}", frame, format);
+}
+
+// A frame written before is complete: every write goes through a temporary file renamed into place.
+bool alreadyWritten(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > 0 && !ec;
+}
+
+// Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (logs).
+class Progress {
+ public:
+  explicit Progress(uint32_t total) : total_(total), terminal_(isatty(fileno(stderr))) {}
+  void update(uint32_t done, uint32_t written) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
+    const double left = rate > 0.0 ? double(total_ - done) / rate : 0.0;
+    const std::string line = fmt::format("{}/{} frames ({} written), {:.1f} frames/s, {:.0f} s left", done, total_,
+                                         written, rate, left);
+    if (terminal_) {
+      const int width = 30, filled = int(std::lround(width * double(done) / double(std::max(total_, 1u))));
+      std::fprintf(stderr, "\r[%s%s] %s ", std::string(size_t(filled), '#').c_str(),
+                   std::string(size_t(width - filled), '.').c_str(), line.c_str());
+      if (done == total_) std::fputc('\n', stderr);
+    } else if (done == total_ || done * 10 / std::max(total_, 1u) != lastTenth_) {
+      lastTenth_ = done * 10 / std::max(total_, 1u);
+      std::fprintf(stderr, "%s\n", line.c_str());
+    }
+    std::fflush(stderr);
+  }
+
+ private:
+  uint32_t total_;
+  bool terminal_;
+  uint32_t lastTenth_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+int runRecord(const Options& options) {
+  const std::filesystem::path folder = options.out;
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (!std::filesystem::is_directory(folder, ec))
+    throw Error(fmt::format("Cannot record into {}: it is not a folder that can be made.", folder.string()));
+  const uint32_t frames = std::max(1u, uint32_t(std::lround(options.seconds * options.fps)));
+  const uint32_t first = options.range ? options.range->first : 0;
+  const uint32_t end = options.range ? std::min(options.range->second, frames) : frames;
+  if (first >= end)
+    throw Error(fmt::format("--range {}:{} holds no frame of the film's {}.", first, end, frames));
+
+  gpu::Instance instance({options.validation, {}});
+  gpu::Device device(instance, {options.device});
+  OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{1280, 720}), options.time, options.seed,
+                         options.reducedMotion, presetsFor(options, options.scene, true),
+                         parametersFor(options, options.scene, true)};
+  config.step = 1.0 / (options.fps * double(options.spp));
+  if (!options.input.empty()) config.input = loadInputScript(options.input);
+  std::optional<JsonLinesEventLog> events;
+  if (!options.events.empty()) config.events = &events.emplace(options.events);
+  audio::OfflineAudio sound(options.time);
+  config.audio = &sound;
+
+  uint32_t written = 0;
+  {
+    Offscreen offscreen(device, config);
+    Progress progress(end - first);
+    for (uint32_t frame = 0; frame < end; ++frame) {
+      const std::filesystem::path path = framePath(folder, frame, options.format);
+      const bool wanted = frame >= first && !alreadyWritten(path);
+      ImageRgba sum;
+      for (uint32_t sample = 0; sample < options.spp; ++sample) {
+        offscreen.renderFrame();
+        if (!wanted) continue;  // simulated all the same: a later frame depends on it
+        const ImageRgba image = offscreen.readback();
+        if (sum.pixels.empty()) sum = image;
+        else for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += image.pixels[i];
+      }
+      if (wanted) {
+        for (float& v : sum.pixels) v /= float(options.spp);
+        writeImage(path, sum);
+        ++written;
+      }
+      if (frame >= first) progress.update(frame - first + 1, written);
+    }
+  }
+  if (events) events->close();
+  // The film's sound, whole, when this run covered the whole film and the scene made any.
+  const bool whole = first == 0 && end == frames;
+  if (whole && sound.commandCount() > 0) audio::writeWav(folder / "audio.wav", sound.render(double(frames) / options.fps));
+  std::printf("recorded %u of frames %u..%u into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
+              written, first, end - 1, folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
+              options.fps, options.spp, options.scene.c_str(), device.properties().deviceName);
+  if (instance.validationMessages() > 0) {
+    std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace vitrine::host
