@@ -109,6 +109,7 @@ class Gallery {
   FrameInput shown_;  // the last step's: what the frame being recorded shows
   FixedStep steps_;   // after input_, whose dt it is built from
   TimeControl time_;  // pause, single steps, speed
+  bool helpShown_ = false;
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
@@ -224,6 +225,11 @@ void Gallery::handleKeys() {
       case GLFW_KEY_P:
         time_.paused = !time_.paused;
         break;
+      case GLFW_KEY_F1:
+      case GLFW_KEY_SLASH:  // '?' on most layouts
+        helpShown_ = !helpShown_;
+        if (helpShown_) uiHidden_ = false;  // the card is part of the UI
+        break;
       case GLFW_KEY_PERIOD:
         if (time_.paused) time_.stepRequested = true;
         break;
@@ -321,9 +327,11 @@ void Gallery::showMenu() {
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
   const MenuChoice choice =
       drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
-                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_});
+                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
+                         helpShown_});
   vsync_ = choice.vsync;
   time_ = choice.time;
+  helpShown_ = choice.help;
   if (choice.scene) nextScene_ = choice.scene;
   if (choice.edit) applyEdit(*choice.edit);
 }

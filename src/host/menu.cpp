@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace vitrine::host {
 namespace {
 
@@ -41,10 +43,61 @@ void drawWrapped(std::string_view text) {
   ImGui::PopTextWrapPos();
 }
 
+// The help card: the gallery's keys, the scenes and their keys, and what the current one's drag does.
+void drawHelp(const MenuState& state, bool& open) {
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::Begin("Help (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+    for (const auto& [key, does] : galleryKeys()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(key.data(), key.data() + key.size());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(does.data(), does.data() + does.size());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Separator();
+  for (const auto& info : sceneRegistry())
+    ImGui::BulletText("%d  %.*s", info.key, int(info.title.size()), info.title.data());
+  ImGui::Separator();
+  ImGui::Text("%.*s:", int(state.current.title.size()), state.current.title.data());
+  drawWrapped(state.current.input);
+  ImGui::TextDisabled("Hover a parameter in the panel for what it does.");
+  ImGui::End();
+}
+
 }  // namespace
 
+std::span<const std::pair<std::string_view, std::string_view>> galleryKeys() {
+  static const std::pair<std::string_view, std::string_view> keys[] = {
+      {"number keys", "switch scene"},
+      {"Tab", "hide or show all UI"},
+      {"F1, ?", "this help"},
+      {"P", "pause and resume"},
+      {".", "one step while paused"},
+      {"F5", "restart the scene, its parameters kept"},
+      {"V", "vsync on or off"},
+      {"M", "sound on or off"},
+      {"F11", "fullscreen"},
+      {"F12", "screenshot (EXR and PNG)"},
+      {"Esc", "quit"},
+  };
+  return keys;
+}
+
+std::string sceneKeyRange() {
+  int lo = 10, hi = 0;
+  for (const auto& info : sceneRegistry()) lo = std::min(lo, info.key), hi = std::max(hi, info.key);
+  return lo == hi ? fmt::format("{}", lo) : fmt::format("{}-{}", lo, hi);
+}
+
 MenuChoice drawMenu(const MenuState& state) {
-  MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time};
+  MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time, state.help};
+  if (choice.help) drawHelp(state, choice.help);
   ImGui::SetNextWindowPos(ImVec2(12.0f, 12.0f), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Vitrine", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawTimings(state);
@@ -80,8 +133,8 @@ MenuChoice drawMenu(const MenuState& state) {
       ImGui::PopStyleColor();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("1-9 scene  Tab hide UI  P pause  . step  F5 restart  M mute  F11 fullscreen  F12 screenshot  "
-                        "Esc quit");
+    ImGui::TextDisabled("%s scene  Tab hide UI  F1 help  P pause  F5 restart  M mute  F12 screenshot  Esc quit",
+                        sceneKeyRange().c_str());
   }
   ImGui::End();
   return choice;

@@ -29,6 +29,7 @@ struct MenuState {
   ParamPanel* panel = nullptr;                 // the scene's parameters, from its schema
   std::string_view panelError;                 // why the last edit was refused
   TimeControl time;                            // pause, single steps, speed
+  bool help = false;                           // the help card is showing (F1 or ?)
 };
 
 struct MenuChoice {
@@ -36,8 +37,14 @@ struct MenuChoice {
   bool vsync = true;
   std::optional<PanelEdit> edit;     // what the user changed in the parameter panel
   TimeControl time;                  // as the menu's controls left it
+  bool help = false;
 };
 
 MenuChoice drawMenu(const MenuState& state);
+
+// The gallery's own keys, as the help card lists them: key, what it does.
+std::span<const std::pair<std::string_view, std::string_view>> galleryKeys();
+// "1-5": the number keys the registered scenes have.
+std::string sceneKeyRange();
 
 }  // namespace vitrine::host

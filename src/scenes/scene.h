@@ -110,17 +110,18 @@ struct SceneInfo {
   int key;                 // number key 1..9 in the gallery
   std::unique_ptr<Scene> (*create)(const SceneContext&);
   const params::Schema& (*schema)();  // the parameter declarations, no instance or GPU needed
+  std::string_view input;  // for the help card: what the drag and the scene's own keys do
 };
 
 // A scene's SceneInfo: its factory makes a T from the context. constexpr, so every scene's info is
 // constant-initialised and the registry never sees one before it exists.
 template <typename T>
 constexpr SceneInfo sceneInfo(std::string_view name, std::string_view title, int key,
-                              const params::Schema& (*schema)()) {
+                              const params::Schema& (*schema)(), std::string_view input) {
   return {name, title, key, [](const SceneContext& context) -> std::unique_ptr<Scene> {
             return std::make_unique<T>(context);
           },
-          schema};
+          schema, input};
 }
 
 std::span<const SceneInfo> sceneRegistry();

@@ -33,7 +33,7 @@ template <typename T> const SceneInfo& testSceneInfo(T*& made) {
                                 *target = scene.get();
                                 return scene;
                               },
-                              &TestScene::schema};
+                              &TestScene::schema, "none"};
   return info;
 }
 

@@ -1,11 +1,36 @@
 // The gallery's pure logic: fixed steps from real time, and the pointer turned into scene input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
+#include "host/menu.h"
+#include "scenes/scene.h"
 
 namespace vitrine::host {
 namespace {
+
+// The help card lists what exists: the number keys of the registered scenes, every gallery key the
+// frame loop handles, and for every scene what its drag and keys do.
+TEST(Help, ListsWhatExists) {
+  int lo = 10, hi = 0;
+  for (const auto& info : sceneRegistry()) {
+    EXPECT_FALSE(info.input.empty()) << info.name << " has no input help";
+    lo = std::min(lo, info.key);
+    hi = std::max(hi, info.key);
+  }
+  EXPECT_EQ(sceneKeyRange(), std::to_string(lo) + "-" + std::to_string(hi));
+  std::vector<std::string_view> keys;
+  for (const auto& [key, does] : galleryKeys()) {
+    EXPECT_FALSE(does.empty()) << key;
+    keys.push_back(key);
+  }
+  for (const char* key : {"Tab", "F1, ?", "P", ".", "F5", "V", "M", "F11", "F12", "Esc"})
+    EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+}
 
 TEST(TimeControl, PauseStepAndSpeed) {
   FixedStep steps(0.01, 4);

@@ -420,6 +420,7 @@ class BloomScene final : public Scene {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<BloomScene>("bloom", "The Bloom", 1, &schema);
+constinit const SceneInfo kSceneInfo = sceneInfo<BloomScene>("bloom", "The Bloom", 1, &schema,
+    "Move the cursor near the crystal: it is the vapour. Hold the button to breathe harder. M mutes.");
 
 }  // namespace vitrine::bloom

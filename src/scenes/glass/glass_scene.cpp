@@ -665,6 +665,8 @@ void GlassScene::drawPanel() {
   ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F diamond views");
 }
 
-const SceneInfo kSceneInfo = sceneInfo<GlassScene>("glass", "Spectral Glass", 2, &schema);
+constinit const SceneInfo kSceneInfo = sceneInfo<GlassScene>("glass", "Spectral Glass", 2, &schema,
+    "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F turn "
+    "the diamond, R shows the next photo; drop an image (or an EXR panorama) on the window.");
 
 }  // namespace vitrine::glass

@@ -119,6 +119,7 @@ class KifsScene final : public Scene {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<KifsScene>("kifs", "Volumetric KIFS", 4, &schema);
+constinit const SceneInfo kSceneInfo = sceneInfo<KifsScene>("kifs", "Volumetric KIFS", 4, &schema,
+    "Drag to nudge the fractal's orientation.");
 
 }  // namespace vitrine::kifs

@@ -374,6 +374,7 @@ void NeonScene::drawPanel() {
   if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
 }
 
-const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema);
+constinit const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema,
+    "Drag to release neon tubes along the cursor's path; leave it alone and the autopilot plays.");
 
 }  // namespace vitrine::neon

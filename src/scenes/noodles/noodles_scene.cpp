@@ -155,6 +155,7 @@ void NoodlesScene::drawPanel() {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<NoodlesScene>("noodles", "Curl-noise noodles", 5, &schema);
+constinit const SceneInfo kSceneInfo = sceneInfo<NoodlesScene>("noodles", "Curl-noise noodles", 5, &schema,
+    "Drag to orbit the camera.");
 
 }  // namespace vitrine::noodles
