@@ -36,6 +36,7 @@ volatile std::sig_atomic_t stopRequested = 0;
 constexpr uint32_t kFramesInFlight = 2;
 constexpr int kMaxCatchUpSteps = 4;
 constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
+constexpr auto kNoteSeconds = std::chrono::seconds(6);  // how long a screenshot's note stays
 // The scene renderer's present (compute) or blit (transfer) is the first use of an acquired image,
 // so that is where the acquire is waited for.
 constexpr VkPipelineStageFlags2 kAcquireStage =
@@ -123,7 +124,8 @@ class Gallery {
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;
   std::vector<gpu::PassTime> passes_;
-  std::string screenshotNote_;
+  std::string screenshotNote_;  // where the last screenshot went, shown for kNoteSeconds
+  Clock::time_point screenshotNoted_{};
   ParamPanel panel_;
   std::string panelError_;  // why the last edit was refused
 };
@@ -301,7 +303,11 @@ void Gallery::collect(uint32_t slot) {
   passes_ = renderer_.timer().collect(slot);
   input_.lastGpuMs = 0.0;
   for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
-  if (auto note = screenshots_.collect(slot)) screenshotNote_ = std::move(*note);
+  if (auto note = screenshots_.collect(slot)) {
+    screenshotNote_ = std::move(*note);
+    screenshotNoted_ = Clock::now();
+  }
+  if (!screenshotNote_.empty() && Clock::now() - screenshotNoted_ > kNoteSeconds) screenshotNote_.clear();
 }
 
 void Gallery::simulate() {

@@ -90,6 +90,9 @@ Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
   if (!addFont(fonts.body, 17.0f, fontProblems)) io.Fonts->AddFontDefault();  // the first font is the default
   titles = addFont(fonts.titles, 21.0f, fontProblems);
   ImGui::StyleColorsDark();
+  // Pop-ups (a combo's list) and the help card opaque: over a bright scene the default's see-through
+  // backgrounds leave their text unreadable.
+  ImGui::GetStyle().Colors[ImGuiCol_PopupBg].w = 1.0f;
   // Installs its callbacks on top of the window's own, forwarding every event to them.
   if (!ImGui_ImplGlfw_InitForVulkan(window, true)) {
     ImGui::DestroyContext();
