@@ -3,6 +3,7 @@
 // highlights off with a filmic curve), then optionally FXAA, on tone-mapped colour with its edges
 // found in perceptual luminance.
 #extension GL_GOOGLE_include_directive : require
+#include "common/color.glsl"
 #include "glass/optics.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -15,7 +16,7 @@ layout(push_constant) uniform Push {
 
 vec3 tone(vec3 c) { return pc.filmicCurve != 0u ? filmic(max(c, 0.0)) : clamp(c, 0.0, 1.0); }
 vec3 at(vec2 uv) { return tone(textureLod(accumulated, uv, 0.0).rgb); }
-float perceptual(vec3 c) { return sqrt(dot(c, vec3(0.2126, 0.7152, 0.0722))); }
+float perceptual(vec3 c) { return sqrt(luminance(c)); }
 
 // FXAA in its compact form: the luminance gradient of four diagonal taps gives the edge's direction;
 // two or four taps along it are averaged, the wider set only when it stays in the local range.

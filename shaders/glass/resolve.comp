@@ -5,6 +5,7 @@
 // standard deviations of the history's own running variance (one tap: the second moment of luminance
 // rides in alpha), so moving edges do not smear while the spectral noise still averages away.
 #extension GL_GOOGLE_include_directive : require
+#include "common/color.glsl"
 #include "glass/frame.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -20,7 +21,6 @@ layout(push_constant) uniform Push {
   uint reproject;
 } pc;
 
-float luma(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 vec3 background(vec2 pixel) {
   if (F.frameInfo.w == 0) return textureLod(backdrop, pixel / F.view.zw, 0.0).rgb;
@@ -39,14 +39,14 @@ void main() {
   if (sample_.a > 0.0) moved = imageLoad(motion, p).xy;
   else sample_.rgb = background(centre);
   const vec3 current = sample_.rgb;
-  const float y = luma(current);
+  const float y = luminance(current);
 
   vec4 result = vec4(current, y * y);
   if (pc.valid != 0u) {
     const vec2 from = centre + (pc.reproject != 0u ? moved : vec2(0.0));
     if (all(greaterThanEqual(from, vec2(0.0))) && all(lessThan(from, F.view.zw))) {
       vec4 past = textureLod(previous, from / F.view.zw, 0.0);
-      const float mean = luma(past.rgb);
+      const float mean = luminance(past.rgb);
       const float sigma = sqrt(max(past.a - mean * mean, 0.0));
       const float reach = 3.0 * sigma + 0.05 * max(mean, y) + 0.01;
       past.rgb = clamp(past.rgb, current - reach, current + reach);
