@@ -21,6 +21,7 @@ PassTimer::PassTimer(const Device& device, uint32_t slots, uint32_t maxPassesPer
   vkGetPhysicalDeviceQueueFamilyProperties(device.physical(), &count, families.data());
   const uint32_t bits = families[device.queueFamily()].timestampValidBits;
   validMask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
+  drainBeforeEnd_ = device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
 void PassTimer::beginFrame(VkCommandBuffer cmd, uint32_t slot) {
@@ -39,6 +40,17 @@ uint32_t PassTimer::begin(VkCommandBuffer cmd, const char* name) {
 }
 
 void PassTimer::end(VkCommandBuffer cmd, uint32_t pass) {
+  if (drainBeforeEnd_) {
+    // A CPU device (lavapipe) stamps the time when it reaches the command, while draws it has queued
+    // may still be rasterising on its threads; the next pass's first barrier would then absorb them.
+    // A full barrier is where lavapipe waits, so the pass ends with its own work done.
+    const VkMemoryBarrier2 all{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                               VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE};
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &all;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+  }
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, (slot_ * maxPasses_ + pass) * 2 + 1);
 }
 

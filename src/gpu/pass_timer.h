@@ -31,6 +31,7 @@ class PassTimer {
   uint32_t maxPasses_;
   double nsPerTick_;
   uint64_t validMask_;
+  bool drainBeforeEnd_ = false;  // a CPU device: see end()
   uint32_t slot_ = 0;
   std::vector<std::vector<std::string>> names_;  // per slot
 };

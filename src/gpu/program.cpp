@@ -14,9 +14,17 @@ std::span<const std::pair<std::string_view, std::span<const uint32_t>>> embedded
 
 // ------------------------------------------------------------------------------------------ library
 
-ProgramLibrary::ProgramLibrary(const Device& device, std::filesystem::path sourceRoot)
+ProgramLibrary::ProgramLibrary(const Device& device, std::filesystem::path sourceRoot, bool preferNewerSources)
     : device_(device), root_(std::move(sourceRoot)) {
-  if (hotReloadAvailable()) seen_ = newestSource();
+  if (!hotReloadAvailable()) return;
+  seen_ = baseline_ = newestSource();
+  if (preferNewerSources) {
+    std::error_code ec;
+    if (const auto built = std::filesystem::last_write_time("/proc/self/exe", ec); !ec && seen_ > built) {
+      baseline_ = built;
+      sourcesEdited_ = true;
+    }
+  }
 }
 
 bool ProgramLibrary::hotReloadAvailable() const {
@@ -24,11 +32,40 @@ bool ProgramLibrary::hotReloadAvailable() const {
   return std::filesystem::is_directory(root_, ec);
 }
 
-std::span<const uint32_t> ProgramLibrary::spirv(const std::string& name) const {
-  if (auto it = reloaded_.find(name); it != reloaded_.end()) return it->second;
+std::span<const uint32_t> ProgramLibrary::builtIn(const std::string& name) const {
   for (const auto& [shader, code] : embeddedShaders())
     if (shader == name) return code;
   throw Error(fmt::format("No shader named '{}' was built into this binary", name));
+}
+
+std::span<const uint32_t> ProgramLibrary::spirv(const std::string& name) {
+  if (sourcesEdited_ && !current_.contains(name) && compileFromSource(name)) reloadedNames_.push_back(name);
+  if (auto it = reloaded_.find(name); it != reloaded_.end()) return it->second;
+  return builtIn(name);
+}
+
+// Compiles `name` as its sources are now and keeps the result when it differs from what is in use.
+// The build's SPIR-V carries debug information a run-time compile does not, so against the built-in
+// code "differs" means a source of the shader (it or an include) was written after the baseline. A
+// compile error keeps what is in use and adds the log to error().
+bool ProgramLibrary::compileFromSource(const std::string& name) {
+  current_.insert(name);
+  CompiledShader compiled = compileGlsl(root_, name);
+  if (compiled.spirv.empty()) {
+    error_ += compiled.log;
+    return false;
+  }
+  if (const auto it = reloaded_.find(name); it != reloaded_.end()) {
+    if (it->second == compiled.spirv) return false;
+  } else {
+    std::error_code ec;
+    const bool edited = std::any_of(compiled.sources.begin(), compiled.sources.end(), [&](const auto& source) {
+      return std::filesystem::last_write_time(source, ec) > baseline_;
+    });
+    if (!edited) return false;
+  }
+  reloaded_[name] = std::move(compiled.spirv);
+  return true;
 }
 
 std::filesystem::file_time_type ProgramLibrary::newestSource() const {
@@ -46,23 +83,17 @@ int ProgramLibrary::reloadChanged() {
   const auto newest = newestSource();
   if (newest <= seen_) return 0;
   seen_ = newest;
+  sourcesEdited_ = true;
+  current_.clear();  // every shader is stale until compiled again, in use now or when next used
 
   std::set<std::string> names;
   for (const Program* program : programs_) names.insert(program->shaders().begin(), program->shaders().end());
   std::set<std::string> changed;
   error_.clear();
-  for (const auto& name : names) {
-    CompiledShader compiled = compileGlsl(root_, name);
-    if (compiled.spirv.empty()) {
-      error_ += compiled.log;
-      continue;
-    }
-    const auto current = spirv(name);
-    if (std::equal(current.begin(), current.end(), compiled.spirv.begin(), compiled.spirv.end())) continue;
-    reloaded_[name] = std::move(compiled.spirv);
-    changed.insert(name);
-  }
+  for (const auto& name : names)
+    if (compileFromSource(name)) changed.insert(name);
   if (changed.empty()) return 0;
+  reloadedNames_.insert(reloadedNames_.end(), changed.begin(), changed.end());
   int rebuilt = 0;
   for (Program* program : programs_) {
     const auto& used = program->shaders();

@@ -7,8 +7,10 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vitrine::gpu {
@@ -25,16 +27,25 @@ struct ProgramLayout {
 
 class ProgramLibrary {
  public:
-  explicit ProgramLibrary(const Device& device, std::filesystem::path sourceRoot = VITRINE_SHADER_SOURCE_DIR);
+  // `preferNewerSources` (the gallery, run from its source tree): when the sources were edited after
+  // the binary was built, a shader is compiled from its source when first used instead of taking the
+  // built-in SPIR-V. Headless runs and tests leave it off: their pictures depend on the binary alone.
+  explicit ProgramLibrary(const Device& device, std::filesystem::path sourceRoot = VITRINE_SHADER_SOURCE_DIR,
+                          bool preferNewerSources = false);
   const Device& device() const { return device_; }
 
-  std::span<const uint32_t> spirv(const std::string& name) const;
+  // The shader's SPIR-V: reloaded, else compiled from an edited source on first use, else built in.
+  std::span<const uint32_t> spirv(const std::string& name);
 
   // Polls the shader sources; when any changed, recompiles the shaders in use and rebuilds the
   // programs whose SPIR-V changed (old pipelines are retired: frames in flight may still use them).
-  // Returns how many programs were rebuilt.
+  // Shaders not in use are compiled when a program first uses them (a scene not showing picks up
+  // its edits when it opens). Returns how many programs were rebuilt.
   int reloadChanged();
   const std::string& error() const { return error_; }  // the last compile log; empty when all compile
+  // The shaders that took new SPIR-V from their sources since the last call (reloads, and edited
+  // sources compiled on first use), for the gallery to say so.
+  std::vector<std::string> takeReloaded() { return std::exchange(reloadedNames_, {}); }
   bool hotReloadAvailable() const;
 
   void add(Program* program) { programs_.push_back(program); }
@@ -42,10 +53,18 @@ class ProgramLibrary {
 
  private:
   std::filesystem::file_time_type newestSource() const;
+  std::span<const uint32_t> builtIn(const std::string& name) const;
+  bool compileFromSource(const std::string& name);  // true when the SPIR-V changed
   const Device& device_;
   std::filesystem::path root_;
-  std::filesystem::file_time_type seen_ = std::filesystem::file_time_type::min();
+  std::filesystem::file_time_type seen_ = std::filesystem::file_time_type::min();  // the newest source polled
+  // When the built-in SPIR-V was made, as far as the sources can tell: the binary's time when the
+  // sources are newer and preferred, else the newest source when the library started.
+  std::filesystem::file_time_type baseline_ = std::filesystem::file_time_type::min();
+  bool sourcesEdited_ = false;  // since the build (preferNewerSources) or since the library started
+  std::set<std::string, std::less<>> current_;  // compiled from the sources as they are now
   std::map<std::string, std::vector<uint32_t>, std::less<>> reloaded_;
+  std::vector<std::string> reloadedNames_;
   std::vector<Program*> programs_;
   std::string error_;
 };

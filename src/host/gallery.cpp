@@ -2,6 +2,7 @@
 // screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <csignal>
@@ -17,6 +18,7 @@
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
 #include "host/gallery_settings.h"
+#include "host/live_capture.h"
 #include "host/param_panel.h"
 #include "host/menu.h"
 #include "host/modes.h"
@@ -37,6 +39,7 @@ constexpr uint32_t kFramesInFlight = 2;
 constexpr int kMaxCatchUpSteps = 4;
 constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
 constexpr auto kNoteSeconds = std::chrono::seconds(6);  // how long a screenshot's note stays
+constexpr auto kReloadNoteSeconds = std::chrono::seconds(3);
 // The scene renderer's present (compute) or blit (transfer) is the first use of an acquired image,
 // so that is where the acquire is waited for.
 constexpr VkPipelineStageFlags2 kAcquireStage =
@@ -89,6 +92,7 @@ class Gallery {
   void pollShaders();
   void applyEdit(const PanelEdit& edit);
   void rememberValues();
+  void toggleCapture();
 
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
@@ -103,8 +107,11 @@ class Gallery {
   Swapchain swapchain_;
   Overlay overlay_;
   Screenshots screenshots_;
+  LiveCapture capture_;
   std::vector<FrameSlot> slots_;
   uint64_t frameCount_ = 0;
+  uint64_t sceneSerial_ = 0;           // counts scene switches and restarts
+  std::vector<uint64_t> slotSerial_ = std::vector<uint64_t>(kFramesInFlight);  // the scene each slot drew
 
   FrameInput input_;  // the next simulation step's
   FrameInput shown_;  // the last step's: what the frame being recorded shows
@@ -124,6 +131,8 @@ class Gallery {
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;
   std::vector<gpu::PassTime> passes_;
+  std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
+  Clock::time_point reloadNoted_{};
   std::string screenshotNote_;  // where the last screenshot went, shown for kNoteSeconds
   Clock::time_point screenshotNoted_{};
   ParamPanel panel_;
@@ -135,13 +144,14 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
-      programs_(checkWindowSize(device_, options.size)),
+      programs_(checkWindowSize(device_, options.size), VITRINE_SHADER_SOURCE_DIR, /*preferNewerSources=*/true),
       settings_(params::defaultSettingsPath(), options.resetSettings),
       renderer_(device_, programs_, assets_, kFramesInFlight),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
                {assets_.font("Fraunces"), assets_.font("CormorantSC")}),
       screenshots_(device_, kFramesInFlight, "screenshots"),
+      capture_(device_, kFramesInFlight, "captures"),
       steps_(input_.dt, kMaxCatchUpSteps),
       vsync_(options.vsync) {
   overlay_.attach(swapchain_);
@@ -224,6 +234,9 @@ void Gallery::handleKeys() {
       case GLFW_KEY_F12:
         screenshots_.request();
         break;
+      case GLFW_KEY_F9:
+        toggleCapture();
+        break;
       case GLFW_KEY_P:
         time_.paused = !time_.paused;
         break;
@@ -251,6 +264,8 @@ void Gallery::switchScene(const SceneInfo& info) {
   renderer_.setScene(info);  // the old scene is retired behind the frames still using it
   missingAssets_ = assets_.missing();  // with what the scene could not find
   hasScene_ = true;
+  ++sceneSerial_;
+  passes_.clear();  // the old scene's timings are not this one's
   panel_.forget();
   panelError_.clear();
   if (auto why = renderer_.applyParameters(settings_.valuesFor(info.name)); !why.empty()) {
@@ -290,6 +305,8 @@ void Gallery::frame() {
                    BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute});
   screenshots_.record(cmd, slot, renderer_.target(), renderer_.info().name, &renderer_.timer());
+  capture_.record(cmd, slot, renderer_.target(), &renderer_.timer());
+  slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_.timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image));
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
@@ -300,9 +317,11 @@ void Gallery::frame() {
 
 // What the GPU has finished for this slot: its pass timings, and a screenshot taken in it.
 void Gallery::collect(uint32_t slot) {
-  passes_ = renderer_.timer().collect(slot);
+  // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
+  if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_.timer().collect(slot);
   input_.lastGpuMs = 0.0;
   for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
+  capture_.collect(slot);
   if (auto note = screenshots_.collect(slot)) {
     screenshotNote_ = std::move(*note);
     screenshotNoted_ = Clock::now();
@@ -334,13 +353,16 @@ void Gallery::showMenu() {
   const MenuChoice choice =
       drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                          screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
-                         helpShown_});
+                         helpShown_, capture_.status(), capture_.active(), reloadNote_});
   vsync_ = choice.vsync;
   time_ = choice.time;
   helpShown_ = choice.help;
   if (choice.scene) nextScene_ = choice.scene;
   if (choice.edit) applyEdit(*choice.edit);
+  if (choice.capture != capture_.active()) toggleCapture();
 }
+
+void Gallery::toggleCapture() { std::printf("vitrine: %s\n", capture_.toggle(renderer_.info().name).c_str()); }
 
 // Every panel edit goes through the same validation as --set; a refused one leaves every value as it was.
 void Gallery::applyEdit(const PanelEdit& edit) {
@@ -366,6 +388,13 @@ void Gallery::pollShaders() {
   if (now - lastShaderPoll_ < kShaderPollInterval) return;
   lastShaderPoll_ = now;
   programs_.reloadChanged();
+  // Reloads, and edited sources a newly opened scene compiled: said once, briefly, here and on the console.
+  if (const auto names = programs_.takeReloaded(); !names.empty()) {
+    reloadNote_ = fmt::format("reloaded {}", fmt::join(names, ", "));
+    reloadNoted_ = now;
+    std::printf("vitrine: %s\n", reloadNote_.c_str());
+  }
+  if (!reloadNote_.empty() && now - reloadNoted_ > kReloadNoteSeconds) reloadNote_.clear();
 }
 
 }  // namespace

@@ -16,12 +16,18 @@ void drawTimings(const MenuState& state) {
   for (const auto& pass : state.passes) gpuMs += pass.ms;
   ImGui::Text("%.1f fps   CPU %.2f ms   GPU %.2f ms", state.fps, state.cpuMs, gpuMs);
   if (!ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  // Widths from the text itself: an auto-sized window measures a table's columns a frame late, which
+  // clipped names and units whenever the passes changed.
+  float nameWidth = ImGui::CalcTextSize("overlay").x;
+  for (const auto& pass : state.passes) nameWidth = std::max(nameWidth, ImGui::CalcTextSize(pass.name.c_str()).x);
+  ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameWidth);
+  ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00000.000 ms").x);
   for (const auto& pass : state.passes) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(pass.name.c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%7.3f ms", pass.ms);
+    ImGui::Text("%9.3f ms", pass.ms);
   }
   ImGui::EndTable();
 }
@@ -83,6 +89,7 @@ std::span<const std::pair<std::string_view, std::string_view>> galleryKeys() {
       {"V", "vsync on or off"},
       {"M", "sound on or off"},
       {"F11", "fullscreen"},
+      {"F9", "capture every frame to an EXR sequence, or stop"},
       {"F12", "screenshot (EXR and PNG)"},
       {"Esc", "quit"},
   };
@@ -96,9 +103,14 @@ std::string sceneKeyRange() {
 }
 
 MenuChoice drawMenu(const MenuState& state) {
-  MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time, state.help};
+  MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time, state.help, state.capturing};
   if (choice.help) drawHelp(state, choice.help);
   ImGui::SetNextWindowPos(ImVec2(12.0f, 12.0f), ImGuiCond_FirstUseEver);
+  // Never taller than the window: a long panel scrolls instead of falling off the bottom, and the
+  // title bar's arrow folds the whole menu away.
+  const ImVec2 view = ImGui::GetMainViewport()->WorkSize;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(std::max(200.0f, view.x - 24.0f),
+                                                                 std::max(120.0f, view.y - 24.0f)));
   if (ImGui::Begin("Vitrine", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawTimings(state);
     ImGui::Checkbox("vsync (V)", &choice.vsync);
@@ -119,12 +131,20 @@ MenuChoice drawMenu(const MenuState& state) {
       if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), std::string(state.panelError));
       state.scene.drawPanel();
     }
+    if (!state.reloaded.empty()) ImGui::TextColored(ImVec4(0.55f, 0.85f, 0.55f, 1.0f), "%.*s", int(state.reloaded.size()),
+                                                    state.reloaded.data());
     if (!state.shaderError.empty()) {
       ImGui::Separator();
       ImGui::PushStyleColor(ImGuiCol_Text, kErrorRed);
       ImGui::TextUnformatted("Shader reload failed; the previous pipeline is kept:");
       drawWrapped(state.shaderError);
       ImGui::PopStyleColor();
+    }
+    ImGui::Checkbox("capture (F9)", &choice.capture);
+    if (!state.capture.empty()) {
+      ImGui::SameLine();
+      if (state.capturing) ImGui::TextColored(kErrorRed, "REC");
+      drawWrapped(state.capture);
     }
     if (!state.screenshot.empty()) drawWrapped(state.screenshot);
     if (!state.missingAssets.empty() && ImGui::CollapsingHeader("Missing assets")) {

@@ -30,6 +30,9 @@ struct MenuState {
   std::string_view panelError;                 // why the last edit was refused
   TimeControl time;                            // pause, single steps, speed
   bool help = false;                           // the help card is showing (F1 or ?)
+  std::string capture;                         // the live capture's status (F9); empty before the first
+  bool capturing = false;
+  std::string_view reloaded;                   // "reloaded kifs/march.comp", for a few seconds after
 };
 
 struct MenuChoice {
@@ -38,6 +41,7 @@ struct MenuChoice {
   std::optional<PanelEdit> edit;     // what the user changed in the parameter panel
   TimeControl time;                  // as the menu's controls left it
   bool help = false;
+  bool capture = false;              // live capture on (F9)
 };
 
 MenuChoice drawMenu(const MenuState& state);

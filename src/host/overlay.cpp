@@ -2,9 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "gpu/check.h"
 #include "host/font_check.h"
 #include "host/swapchain.h"
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_freetype.h>
 #include <imgui_impl_glfw.h>
@@ -79,6 +83,35 @@ ImFont* addFont(const std::optional<std::filesystem::path>& path, float pixels, 
   return ImGui::GetIO().Fonts->AddFontFromFileTTF(path->c_str(), pixels);
 }
 
+// Dear ImGui 1.86 samples keys as up/down state once a frame: at a few frames a second, a key pressed
+// and released between two frames (Enter typed into a field) is never seen down, so the field never
+// commits. This hook sits in front of the backend's key callback and keeps such a key down until the
+// next frame has begun, when endOfKeyFrame() lets it go. (1.87 replaced this with an event queue.)
+struct KeyHold {
+  GLFWkeyfun backend = nullptr;
+  std::vector<int> pressed;  // since the frame began
+  std::vector<int> release;  // released too: up after the next NewFrame
+};
+KeyHold keyHold;
+
+void holdKeyForAFrame(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (keyHold.backend) keyHold.backend(window, key, scancode, action, mods);
+  ImGuiIO& io = ImGui::GetIO();
+  if (key < 0 || key >= int(IM_ARRAYSIZE(io.KeysDown))) return;
+  if (action == GLFW_PRESS) keyHold.pressed.push_back(key);
+  if (action == GLFW_RELEASE && std::find(keyHold.pressed.begin(), keyHold.pressed.end(), key) != keyHold.pressed.end()) {
+    io.KeysDown[key] = true;
+    keyHold.release.push_back(key);
+  }
+}
+
+void endOfKeyFrame() {
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : keyHold.release) io.KeysDown[key] = false;
+  keyHold.release.clear();
+  keyHold.pressed.clear();
+}
+
 }  // namespace
 
 Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
@@ -98,10 +131,12 @@ Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
     ImGui::DestroyContext();
     throw Error("Dear ImGui could not attach to the gallery window.");
   }
+  keyHold = KeyHold{glfwSetKeyCallback(window, &holdKeyForAFrame)};
 }
 
 Overlay::Context::~Context() {
-  ImGui_ImplGlfw_Shutdown();
+  keyHold = {};
+  ImGui_ImplGlfw_Shutdown();  // puts back the window's own callbacks
   ImGui::DestroyContext();
 }
 
@@ -159,7 +194,8 @@ void Overlay::attach(const Swapchain& swapchain) {
 void Overlay::beginFrame() {
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
+  ImGui::NewFrame();  // sees the keys held for it
+  endOfKeyFrame();
 }
 
 void Overlay::record(VkCommandBuffer cmd, uint32_t image, gpu::PassTimer* timer) {

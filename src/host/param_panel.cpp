@@ -42,14 +42,17 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
   }
   if (ImGui::SmallButton("reset all")) edit = PanelEdit{PanelEdit::What::ResetAll, {}, {}};
 
-  std::string group;  // the first section's title shows too, when it has one
+  // Sections fold (the first starts open), so a scene with many parameters fits a small window.
+  std::string group;
+  bool groupOpen = true;  // parameters before the first titled section always show
+  int sections = 0;
   for (const params::Param& param : schema.params()) {
     if (param.group != group) {
       group = param.group;
-      ImGui::Spacing();
-      ImGui::TextDisabled("%s", group.c_str());
-      ImGui::Separator();
+      const std::string header = fmt::format("{}###group {}", group, group);
+      groupOpen = ImGui::CollapsingHeader(header.c_str(), sections++ == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
     }
+    if (!groupOpen) continue;
     ImGui::PushID(param.key.c_str());
     const std::string current = param.format(bound.settings);
     const bool changed = current != param.defaultText;

@@ -70,5 +70,41 @@ TEST_F(HotReload, AnIncludedFileRebuildsItsUsers) {
   EXPECT_TRUE(library.error().empty()) << library.error();
 }
 
+// A scene that is not showing has no programs: its shaders' edits are taken when it opens.
+TEST_F(HotReload, AShaderNotInUseTakesItsEditWhenFirstUsed) {
+  gpu::ProgramLibrary library(device(), root_);
+  const std::vector<uint32_t> builtIn(library.spirv("host/present.comp").begin(), library.spirv("host/present.comp").end());
+  edit("host/present.comp", "colour.rgb = linearToSrgb(colour.rgb);", "colour.rgb = linearToSrgb(colour.bgr);");
+  EXPECT_EQ(library.reloadChanged(), 0);  // nothing in use to rebuild
+  EXPECT_TRUE(library.takeReloaded().empty());
+  gpu::ComputeProgram program(library, "host/present.comp",
+                              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 4});
+  const auto used = library.spirv("host/present.comp");
+  EXPECT_FALSE(std::equal(used.begin(), used.end(), builtIn.begin(), builtIn.end()));
+  EXPECT_EQ(library.takeReloaded(), std::vector<std::string>{"host/present.comp"});
+  EXPECT_TRUE(library.takeReloaded().empty());  // said once
+}
+
+// The gallery run from a source tree edited after the build uses the sources; headless runs never do.
+TEST_F(HotReload, SourcesNewerThanTheBinaryAreUsedAtStartOnlyWhenPreferred) {
+  const auto lastWeek = std::filesystem::file_time_type::clock::now() - std::chrono::hours(24 * 7);
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root_))  // as old as a checkout
+    if (entry.is_regular_file()) std::filesystem::last_write_time(entry.path(), lastWeek);
+  edit("host/present.comp", "colour.rgb = linearToSrgb(colour.rgb);", "colour.rgb = linearToSrgb(colour.bgr);");
+  std::filesystem::last_write_time(root_ / "host/present.comp",
+                                   std::filesystem::file_time_type::clock::now() + std::chrono::hours(1));
+  gpu::ProgramLibrary headless(device(), root_);
+  gpu::ProgramLibrary gallery(device(), root_, /*preferNewerSources=*/true);
+  const auto a = headless.spirv("host/present.comp");
+  const auto b = gallery.spirv("host/present.comp");
+  EXPECT_FALSE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+  EXPECT_TRUE(headless.takeReloaded().empty());
+  EXPECT_EQ(gallery.takeReloaded(), std::vector<std::string>{"host/present.comp"});
+  const auto kifs = gallery.spirv("kifs/kifs.comp");  // unedited: compiles to what is built in
+  const auto kifsBuiltIn = headless.spirv("kifs/kifs.comp");
+  EXPECT_TRUE(std::equal(kifs.begin(), kifs.end(), kifsBuiltIn.begin(), kifsBuiltIn.end()));
+  EXPECT_TRUE(gallery.takeReloaded().empty());
+}
+
 }  // namespace
 }  // namespace vitrine::test
