@@ -2,11 +2,16 @@
 // Scales the scene's HDR target onto the output (offscreen image or swapchain image) and, for UNORM
 // swapchains, applies the sRGB transfer function. A compute pass rather than vkCmdBlitImage: on
 // compute-first GPUs such as the H100 a 4K blit took 1.19 ms, this pass a small fraction of that.
+// In kiosk mode's cross-fade it also mixes in the incoming scene's target.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D source;                     // linear filter, clamped
 layout(binding = 1) uniform writeonly image2D destination;        // format from the view
-layout(push_constant) uniform Push { uint encodeSrgb; } pc;
+layout(binding = 2) uniform sampler2D incoming;                   // the scene fading in; `source` when none
+layout(push_constant) uniform Push {
+  uint encodeSrgb;
+  float fade;  // the incoming scene's weight, 0..1
+} pc;
 
 vec3 linearToSrgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
@@ -17,7 +22,9 @@ void main() {
   ivec2 size = imageSize(destination);
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
-  vec4 colour = textureLod(source, (vec2(pixel) + 0.5) / vec2(size), 0.0);
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+  vec4 colour = textureLod(source, uv, 0.0);
+  if (pc.fade > 0.0) colour = mix(colour, textureLod(incoming, uv, 0.0), pc.fade);
   if (pc.encodeSrgb != 0u) colour.rgb = linearToSrgb(colour.rgb);
   imageStore(destination, pixel, colour);
 }

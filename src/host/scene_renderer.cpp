@@ -18,16 +18,24 @@ SceneRenderer::SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& pro
       timer_(device, framesInFlight),
       stream_(device),
       present_(programs, "host/present.comp",
-               {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(uint32_t)}) {}
+               {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                2 * sizeof(uint32_t)}) {}
 
 // Shutdown is the one place that waits: every retired scene and pipeline must be gone before the
 // program library they registered with.
 SceneRenderer::~SceneRenderer() { device_.drainRetired(); }
 
-void SceneRenderer::setScene(const SceneInfo& info) {
+void SceneRenderer::clear() {
   // Frames in flight may still use the old scene's pipelines, buffers and images: retire, don't wait.
   if (scene_) device_.retire(std::move(scene_));
   if (resources_) device_.retire(std::move(resources_));
+  if (target_) device_.retire(std::move(target_));
+  info_ = nullptr;
+}
+
+void SceneRenderer::setScene(const SceneInfo& info) {
+  clear();
   resources_ = std::make_unique<gpu::FrameResources>(device_);
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
   scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, SceneEvents(events_, info.name),
@@ -64,30 +72,41 @@ void SceneRenderer::ensureTarget(VkExtent2D output) {
   scene_->resize(wanted);
 }
 
-void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst) {
+void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, VkExtent2D output) {
   device_.collectRetired();
-  ensureTarget(dst.extent);
+  ensureTarget(output);
   timer_.beginFrame(cmd, slot);
   resources_->beginFrame(cmd, stream_);
   target_.discard();  // a scene draws every texel each frame
   scene_->record(FrameContext{device_, cmd, &timer_, target_, *resources_, stream_, input, slot});
+}
+
+void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
+                           const Crossfade& fade) {
+  recordTarget(cmd, slot, input, dst.extent);
   if (dst.storageView && device_.storageWriteWithoutFormat())
-    present(cmd, dst);
+    present(cmd, dst, fade);
   else
     blit(cmd, dst);
 }
 
-void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst) {
+void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
   gpu::Pass pass(device_, &timer_, cmd, "present");
   target_.use(cmd, gpu::use::ComputeSample);
+  gpu::Image& other = fade.other ? *fade.other : target_;
+  if (fade.other) other.use(cmd, gpu::use::ComputeSample);
   gpu::transition(cmd, dst.image, dst.before, gpu::use::ComputeWrite);
+  const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   present_.bind(cmd);
   present_.push(cmd, gpu::Bindings()
-                         .sampledImage(target_.view(), device_.sampler(gpu::Device::Filter::Linear,
-                                                                       gpu::Device::Address::Clamp),
-                                       gpu::use::ComputeSample.layout)
-                         .storageImage(dst.storageView));
-  present_.constants(cmd, uint32_t(dst.encodeSrgb ? 1 : 0));
+                         .sampledImage(target_.view(), linear, gpu::use::ComputeSample.layout)
+                         .storageImage(dst.storageView)
+                         .sampledImage(other.view(), linear, gpu::use::ComputeSample.layout));
+  struct {
+    uint32_t encodeSrgb;
+    float fade;
+  } constants{uint32_t(dst.encodeSrgb ? 1 : 0), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f};
+  present_.constants(cmd, constants);
   present_.dispatchOver(cmd, dst.extent, {8, 8});
   gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);
 }

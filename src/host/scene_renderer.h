@@ -24,6 +24,13 @@ struct BlitDestination {
   bool encodeSrgb = false;               // a UNORM image shown as sRGB (compute path only)
 };
 
+// Another renderer's target mixed into the output (kiosk mode's cross-fade): `weight` of it over the
+// output, 0..1. The compute path only; a blit cuts instead.
+struct Crossfade {
+  gpu::Image* other = nullptr;
+  float weight = 0.0f;
+};
+
 class SceneRenderer {
  public:
   SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& programs, const Assets& assets,
@@ -49,14 +56,20 @@ class SceneRenderer {
   void setRealtime(bool realtime) { realtime_ = realtime; }
   gpu::PassTimer& timer() { return timer_; }
 
-  void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst);
+  void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
+              const Crossfade& fade = {});
+  // The scene into its target only, sized for an output of `output` (the incoming scene of a fade).
+  void recordTarget(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, VkExtent2D output);
+  // No scene any more: it and its images are retired behind the frames that used them.
+  void clear();
+  bool hasScene() const { return scene_ != nullptr; }
   gpu::Image& target() { return target_; }
 
  private:
   bool realtime_ = false;
   void ensureTarget(VkExtent2D output);
   void blit(VkCommandBuffer cmd, const BlitDestination& dst);
-  void present(VkCommandBuffer cmd, const BlitDestination& dst);
+  void present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade);
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
   const Assets& assets_;

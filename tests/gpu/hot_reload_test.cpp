@@ -42,7 +42,8 @@ class HotReload : public GpuTest {
 TEST_F(HotReload, RebuildsOnChangeAndKeepsThePipelineOnError) {
   gpu::ProgramLibrary library(device(), root_);
   gpu::ComputeProgram program(library, "host/present.comp",
-                              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 4});
+                              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, 8});
   EXPECT_EQ(library.reloadChanged(), 0);  // nothing changed yet
 
   edit("host/present.comp", "colour.rgb = linearToSrgb(colour.rgb);", "colour.rgb = linearToSrgb(colour.bgr);");
@@ -78,7 +79,8 @@ TEST_F(HotReload, AShaderNotInUseTakesItsEditWhenFirstUsed) {
   EXPECT_EQ(library.reloadChanged(), 0);  // nothing in use to rebuild
   EXPECT_TRUE(library.takeReloaded().empty());
   gpu::ComputeProgram program(library, "host/present.comp",
-                              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 4});
+                              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, 8});
   const auto used = library.spirv("host/present.comp");
   EXPECT_FALSE(std::equal(used.begin(), used.end(), builtIn.begin(), builtIn.end()));
   EXPECT_EQ(library.takeReloaded(), std::vector<std::string>{"host/present.comp"});

@@ -1,0 +1,48 @@
+#pragma once
+// Kiosk mode's timetable (--kiosk): each scene shows for the dwell time, then the next one fades in
+// over a couple of seconds while both run. A person touching anything holds the current scene (a fade
+// under way completes at once); cycling resumes once nobody has touched anything for the idle time.
+// A scene that fails is skipped. Pure logic in real seconds: the frame loop asks it what to do.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace vitrine::host {
+
+struct KioskTiming {
+  double dwell = 45.0;  // --dwell: seconds each scene shows
+  double fade = 2.0;    // seconds of cross-fade, both scenes running
+  double idle = 30.0;   // seconds without input before cycling resumes
+};
+
+class KioskSchedule {
+ public:
+  KioskSchedule(size_t scenes, size_t first, KioskTiming timing);
+
+  struct Plan {
+    std::optional<size_t> begin;  // start this scene as the incoming one (a fade begins)
+    std::optional<float> fade;    // during a fade: how far in, 0..1 (the incoming scene's weight)
+    bool finish = false;          // the fade is over: the incoming scene is now the current one
+  };
+  // After `elapsed` more seconds; `touched`: a person used a key, the mouse or a remote this frame.
+  Plan advance(double elapsed, bool touched);
+  // The scene at `index` failed (to start, or while running): it is skipped from now on, until every
+  // scene has failed, when all are tried again. A failed incoming scene ends its fade.
+  void failed(size_t index);
+  size_t current() const { return current_; }
+  std::optional<size_t> incoming() const { return incoming_; }
+  // Someone chose a scene directly (a number key, a phone): it becomes current with no fade.
+  void jumpTo(size_t index);
+
+ private:
+  size_t nextAfter(size_t index) const;
+  KioskTiming timing_;
+  std::vector<bool> failed_;
+  size_t current_;
+  std::optional<size_t> incoming_;
+  double shown_ = 0.0;          // seconds the current scene has shown without being held
+  double fading_ = 0.0;         // seconds into the fade
+  double sinceTouch_ = 1e300;   // seconds since the last touch
+};
+
+}  // namespace vitrine::host

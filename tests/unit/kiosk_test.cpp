@@ -1,0 +1,92 @@
+// Kiosk mode's timetable: dwell, cross-fade, a touch holding the scene, idle resumption, failures.
+#include <gtest/gtest.h>
+
+#include "host/kiosk.h"
+
+namespace vitrine::host {
+namespace {
+
+constexpr KioskTiming kTiming{10.0, 2.0, 5.0};
+
+// Advances in 0.1 s frames for `seconds`, collecting what was planned.
+struct Plans {
+  int begins = 0, finishes = 0;
+  std::optional<size_t> lastBegun;
+  std::optional<float> lastFade;
+};
+Plans run(KioskSchedule& kiosk, double seconds, bool touched = false) {
+  Plans r;
+  for (int frame = 0; frame < int(seconds * 10.0 + 0.5); ++frame) {
+    const auto plan = kiosk.advance(0.1, touched);
+    if (plan.begin) ++r.begins, r.lastBegun = plan.begin;
+    if (plan.finish) ++r.finishes;
+    if (plan.fade) r.lastFade = plan.fade;
+  }
+  return r;
+}
+
+TEST(Kiosk, EachSceneDwellsThenTheNextFadesIn) {
+  KioskSchedule kiosk(3, 1, kTiming);
+  EXPECT_EQ(run(kiosk, 9.8).begins, 0);  // the first dwell, no touch yet: cycling from the start
+  const Plans fade = run(kiosk, 1.0);
+  EXPECT_EQ(fade.begins, 1);
+  EXPECT_EQ(fade.lastBegun, 2u);
+  EXPECT_EQ(kiosk.incoming(), 2u);
+  ASSERT_TRUE(fade.lastFade);
+  EXPECT_GT(*fade.lastFade, 0.3f);
+  EXPECT_LT(*fade.lastFade, 0.6f);
+  EXPECT_EQ(run(kiosk, 1.4).finishes, 1);  // two seconds of fade in all
+  EXPECT_EQ(kiosk.current(), 2u);
+  EXPECT_FALSE(kiosk.incoming());
+  run(kiosk, 12.2);
+  EXPECT_EQ(kiosk.current(), 0u);  // wraps around after the last scene
+}
+
+TEST(Kiosk, ATouchHoldsTheSceneUntilNobodyTouchesForTheIdleTime) {
+  KioskSchedule kiosk(3, 0, kTiming);
+  run(kiosk, 8.0);
+  run(kiosk, 20.0, /*touched=*/true);  // played with for twenty seconds: no fade
+  EXPECT_EQ(kiosk.current(), 0u);
+  EXPECT_FALSE(kiosk.incoming());
+  EXPECT_EQ(run(kiosk, 14.9).begins, 0);  // 5 s idle + 10 s dwell from the last touch
+  EXPECT_EQ(run(kiosk, 0.2).begins, 1);
+}
+
+TEST(Kiosk, ATouchDuringAFadeCompletesIt) {
+  KioskSchedule kiosk(2, 0, kTiming);
+  run(kiosk, 10.5);
+  ASSERT_EQ(kiosk.incoming(), 1u);
+  EXPECT_TRUE(kiosk.advance(0.1, true).finish);
+  EXPECT_EQ(kiosk.current(), 1u);
+}
+
+TEST(Kiosk, FailedScenesAreSkippedAndTheKioskNeverRunsOut) {
+  KioskSchedule kiosk(3, 0, kTiming);
+  kiosk.failed(1);
+  run(kiosk, 12.5);
+  EXPECT_EQ(kiosk.current(), 2u);  // 1 skipped
+  kiosk.failed(2);  // the current one fails: the next that works takes over
+  EXPECT_EQ(kiosk.current(), 0u);
+  kiosk.failed(0);  // all failed: every scene is tried again
+  EXPECT_EQ(kiosk.current(), 1u);
+  run(kiosk, 12.5);
+  EXPECT_EQ(kiosk.current(), 2u);
+}
+
+TEST(Kiosk, AFailedIncomingSceneEndsItsFade) {
+  KioskSchedule kiosk(3, 0, kTiming);
+  run(kiosk, 10.5);
+  ASSERT_EQ(kiosk.incoming(), 1u);
+  kiosk.failed(1);
+  EXPECT_FALSE(kiosk.incoming());
+  EXPECT_EQ(kiosk.current(), 0u);
+  EXPECT_EQ(run(kiosk, 10.5).lastBegun, 2u);
+}
+
+TEST(Kiosk, OneSceneNeverFades) {
+  KioskSchedule kiosk(1, 0, kTiming);
+  EXPECT_EQ(run(kiosk, 100.0).begins, 0);
+}
+
+}  // namespace
+}  // namespace vitrine::host
