@@ -177,7 +177,7 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       parse.fail(
           fmt::format("time {} is before the previous event's {}; times must not decrease", word[0], previousTime));
     previousTime = event.time;
-    if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel, key, hold or release");
+    if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel, key, hold, release or action");
 
     const std::string_view verb = word[1];
     const size_t arguments = word.size() - 2;
@@ -201,8 +201,18 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       const std::optional<int> key = keyFromName(word[2]);
       if (!key) parse.fail(fmt::format("unknown key '{}'; {}", word[2], keyHint(lowercase(word[2]))));
       event.key = *key;
+    } else if (verb == "action") {
+      if (arguments < 1) parse.fail("'action' takes the action's name, then its numbers");
+      event.kind = InputEvent::Kind::Action;
+      event.action.name = std::string(word[2]);
+      for (size_t i = 3; i < word.size(); ++i) {
+        const double value = parse.number("action argument", word[i]);
+        if (std::abs(value) > std::numeric_limits<float>::max())
+          parse.fail(fmt::format("action argument {} is out of range", word[i]));
+        event.action.args.push_back(float(value));
+      }
     } else {
-      parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel, key, hold or release",
+      parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel, key, hold, release or action",
                              word[1]));
     }
     script.events.push_back(event);
@@ -247,6 +257,10 @@ StepInput InputPlayer::step(double stepTime, VkExtent2D outputPixels) {
     }
     if (event.kind == InputEvent::Kind::Release) {
       std::erase(keysHeld_, event.key);
+      continue;
+    }
+    if (event.kind == InputEvent::Kind::Action) {
+      input.actions.push_back(event.action);
       continue;
     }
     if (event.kind == InputEvent::Kind::Move) position_ = event.position, inside_ = true;

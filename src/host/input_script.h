@@ -12,6 +12,8 @@
 //                 backslash, left_bracket, right_bracket (case-insensitive)
 //   hold NAME     the key goes down and stays down (glass' Z) until
 //   release NAME  it comes up
+//   action NAME [NUMBERS]  one of the scene's own actions (vitrine --list-params lists them), e.g.
+//                 "2.0 action release 0 6 -4" releases a neon tube at x=0, y=6, z=-4
 // Times are finite, >= 0 and never decrease down the file. The cursor stays where the last move put it
 // (at the centre of the output before the first move).
 #include <vulkan/vulkan.h>
@@ -29,12 +31,13 @@
 namespace vitrine::host {
 
 struct InputEvent {
-  enum class Kind { Move, Down, Up, Wheel, Key, Leave, Hold, Release };
+  enum class Kind { Move, Down, Up, Wheel, Key, Leave, Hold, Release, Action };
   double time = 0.0;
   Kind kind = Kind::Move;
   glm::vec2 position{0.0f};  // Move: normalised, 0..1
   float wheel = 0.0f;        // Wheel: steps
   int key = 0;               // Key: a GLFW key code
+  ActionCall action;         // Action: checked against the scene when the run starts
 };
 
 struct InputScript {
@@ -54,6 +57,7 @@ struct StepInput {
   CursorInput cursor;
   std::vector<int> keysPressed;  // GLFW key codes, in file order
   std::vector<int> keysHeld;     // keys down at the end of the step (hold ... release)
+  std::vector<ActionCall> actions;  // in file order
 };
 
 // Replays a script one fixed simulation step at a time.

@@ -1,5 +1,6 @@
 // vitrine --list-params [SCENE]: every parameter of a scene, from its schema alone (no device).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstdio>
 
@@ -15,6 +16,9 @@ int runListParams(const Options& options) {
   for (const auto& info : sceneRegistry()) {
     if (!options.listParams.empty() && info.name != options.listParams) continue;
     std::printf("%s%s", first ? "" : "\n", params::describeSchema(info.name, info.schema()).c_str());
+    for (const SceneAction& action : info.actions)  // what --input's "action" verb and remote control trigger
+      std::printf("  action %s  %s\n", fmt::format("{} {}", action.name, fmt::join(action.args, " ")).c_str(),
+                  std::string(action.help).c_str());
     first = false;
   }
   if (first)

@@ -20,7 +20,13 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   renderer_.setEventSink(config.events);
   renderer_.setAudioSink(config.audio);
   renderer_.setScene(*info);
-  if (config.input) player_.emplace(*config.input);
+  if (config.input) {
+    for (const InputEvent& event : config.input->events)  // a wrong action fails before the first frame
+      if (event.kind == InputEvent::Kind::Action)
+        if (auto why = checkAction(*info, event.action); !why.empty())
+          throw Error(fmt::format("Input script at t={} s: {}", event.time, why));
+    player_.emplace(*config.input);
+  }
   for (const std::string& preset : config.presets)
     if (auto why = renderer_.applyPreset(preset); !why.empty())
       throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, preset, why));
@@ -52,6 +58,7 @@ FrameTimes Offscreen::renderFrame() {
     input_.cursor = step.cursor;
     input_.keysPressed = std::move(step.keysPressed);
     input_.keysHeld = std::move(step.keysHeld);
+    input_.actions = std::move(step.actions);
   }
   renderer_.scene().update(input_);
   VK_CHECK(vkResetCommandBuffer(cmd_, 0));

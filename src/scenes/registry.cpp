@@ -5,6 +5,11 @@
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+
 namespace vitrine {
 
 std::span<const SceneInfo> sceneRegistry() {
@@ -16,6 +21,22 @@ std::span<const SceneInfo> sceneRegistry() {
       noodles::kSceneInfo,
   };
   return scenes;
+}
+
+std::string checkAction(const SceneInfo& info, const ActionCall& call) {
+  const SceneAction* action = info.findAction(call.name);
+  if (!action) {
+    std::string known;
+    for (const auto& a : info.actions) known += fmt::format("{}{}", known.empty() ? "" : ", ", a.name);
+    return fmt::format("scene {} has no action '{}' ({})", info.name, call.name,
+                       known.empty() ? "it has none" : "it has " + known);
+  }
+  if (call.args.size() != action->args.size())
+    return fmt::format("{}.{} takes {} numbers ({}), not {}", info.name, call.name, action->args.size(),
+                       fmt::join(action->args, " "), call.args.size());
+  for (float arg : call.args)
+    if (!std::isfinite(arg)) return fmt::format("{}.{}: arguments must be finite numbers", info.name, call.name);
+  return {};
 }
 
 const SceneInfo* findScene(std::string_view name) {

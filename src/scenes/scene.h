@@ -32,6 +32,21 @@ struct CursorInput {
   bool present = false;        // over the view and not over the menu: the cursor is "there" (bloom's vapour)
 };
 
+// A scene's own verb that remote control (OSC, the web page) and input scripts can trigger, declared
+// once with the scene: neon's "release x y z", glass's "shuffle". Arguments are numbers.
+struct SceneAction {
+  std::string_view name;
+  std::span<const std::string_view> args;  // their names, in order; the count is the arity
+  std::string_view help;
+};
+
+// One triggered action, checked against its declaration (name known, arity right, finite numbers).
+struct ActionCall {
+  std::string name;
+  std::vector<float> args;
+  bool operator==(const ActionCall&) const = default;
+};
+
 struct FrameInput {
   double time = 0.0;           // simulation seconds, advanced in fixed steps
   float dt = 1.0f / 60.0f;     // the fixed step
@@ -43,6 +58,7 @@ struct FrameInput {
   std::vector<int> keysPressed;  // GLFW key codes pressed this frame (gallery and --input)
   std::vector<int> keysHeld;     // GLFW key codes down now (glass: Z held)
   std::vector<std::string> droppedFiles;  // paths dropped onto the window this frame (gallery only)
+  std::vector<ActionCall> actions;        // the scene's own actions triggered this step, in order
 
   bool pressed(int key) const { return std::find(keysPressed.begin(), keysPressed.end(), key) != keysPressed.end(); }
   bool held(int key) const { return std::find(keysHeld.begin(), keysHeld.end(), key) != keysHeld.end(); }
@@ -111,18 +127,29 @@ struct SceneInfo {
   std::unique_ptr<Scene> (*create)(const SceneContext&);
   const params::Schema& (*schema)();  // the parameter declarations, no instance or GPU needed
   std::string_view input;  // for the help card: what the drag and the scene's own keys do
+  std::span<const SceneAction> actions = {};  // what remote control and scripts may trigger
+
+  const SceneAction* findAction(std::string_view actionName) const {
+    for (const auto& action : actions)
+      if (action.name == actionName) return &action;
+    return nullptr;
+  }
 };
 
 // A scene's SceneInfo: its factory makes a T from the context. constexpr, so every scene's info is
 // constant-initialised and the registry never sees one before it exists.
 template <typename T>
 constexpr SceneInfo sceneInfo(std::string_view name, std::string_view title, int key,
-                              const params::Schema& (*schema)(), std::string_view input) {
+                              const params::Schema& (*schema)(), std::string_view input,
+                              std::span<const SceneAction> actions = {}) {
   return {name, title, key, [](const SceneContext& context) -> std::unique_ptr<Scene> {
             return std::make_unique<T>(context);
           },
-          schema, input};
+          schema, input, actions};
 }
+
+// "" when `call` names one of the scene's actions with its arity and finite arguments; else why not.
+std::string checkAction(const SceneInfo& info, const ActionCall& call);
 
 std::span<const SceneInfo> sceneRegistry();
 const SceneInfo* findScene(std::string_view name);

@@ -22,3 +22,14 @@ assert all(e["t"] < 0.05 or e["t"] >= 1.65 for e in autopilot), [e["t"] for e in
 assert any(e["t"] >= 1.7 for e in autopilot), "the autopilot should take over again after the idle time"
 print(f"releases ok: {len(slow)} slow, {len(quick)} quick, {len(autopilot)} by the autopilot")
 PY
+
+# The scene's `release` action: each one a release where it asked, clamped to the release volume.
+rm -f "$out/actions.jsonl"
+"$vitrine" --headless --scene neon --size 96x54 --frames 30 --set chains=256 --set autopilot_idle=5 --validate \
+  --input "$(dirname "$0")/../input/neon_actions.txt" --events "$out/actions.jsonl" --out "$out/neon_actions.exr"
+python3 - "$out/actions.jsonl" <<'PY'
+import json, sys
+got = [(e["x"], e["y"], e["z"]) for e in map(json.loads, open(sys.argv[1])) if e.get("by") == "action"]
+assert got == [(0, 6, 4), (-3, 8, 2.5), (16, 0, 4)], got
+print("actions ok:", got)
+PY

@@ -82,7 +82,7 @@ TEST(InputScript, RefusesMalformedLinesNamingFileAndLine) {
     const char* message;
   };
   const Case cases[] = {
-      {"0 click", "s.txt:1: unknown verb 'click'; expected move, leave, down, up, wheel, key, hold or release"},
+      {"0 click", "s.txt:1: unknown verb 'click'; expected move, leave, down, up, wheel, key, hold, release or action"},
       {"# header\n\n0 Down", "s.txt:3: unknown verb 'Down'"},
       {"0.5", "s.txt:1: expected a verb after the time"},
       {"0 move 0.5", "s.txt:1: 'move' takes 2 arguments (X Y), got 1"},
@@ -281,6 +281,30 @@ TEST(InputScript, TheCursorIsPresentFromTheFirstMoveUntilItLeaves) {
   EXPECT_FALSE(player.step(0.3, {200, 100}).cursor.present);
   EXPECT_TRUE(player.step(0.5, {200, 100}).cursor.present);
   EXPECT_NE(errorOf("0.1 leave now\n"), "(no error)");
+}
+
+TEST(InputScript, ActionsCarryTheirNumbersToTheirStep) {
+  const InputScript script = parseInputScript("0.1 action release 0 6.5 -4\n0.2 action shuffle\n", "s.txt");
+  ASSERT_EQ(script.events.size(), 2u);
+  EXPECT_EQ(script.events[0].kind, InputEvent::Kind::Action);
+  EXPECT_EQ(script.events[0].action, (ActionCall{"release", {0.0f, 6.5f, -4.0f}}));
+  EXPECT_EQ(script.events[1].action, (ActionCall{"shuffle", {}}));
+  InputPlayer player(script);
+  EXPECT_TRUE(player.step(0.05, {64, 36}).actions.empty());
+  EXPECT_EQ(player.step(0.1, {64, 36}).actions, std::vector<ActionCall>{script.events[0].action});
+  EXPECT_EQ(errorOf("0 action"), "s.txt:1: 'action' takes the action's name, then its numbers");
+  EXPECT_EQ(errorOf("0 action release 1 x"), "s.txt:1: action argument 'x' is not a number");
+  EXPECT_EQ(errorOf("0 action release 1e300"), "s.txt:1: action argument 1e300 is out of range");
+}
+
+TEST(SceneActions, CheckedAgainstTheirDeclaration) {
+  const SceneInfo& neon = *findScene("neon");
+  EXPECT_EQ(checkAction(neon, {"release", {0.0f, 6.0f, 4.0f}}), "");
+  EXPECT_EQ(checkAction(neon, {"release", {0.0f, 6.0f}}), "neon.release takes 3 numbers (x y z), not 2");
+  EXPECT_EQ(checkAction(neon, {"release", {0.0f, NAN, 4.0f}}), "neon.release: arguments must be finite numbers");
+  EXPECT_EQ(checkAction(neon, {"explode", {}}), "scene neon has no action 'explode' (it has release)");
+  EXPECT_EQ(checkAction(*findScene("kifs"), {"release", {}}), "scene kifs has no action 'release' (it has none)");
+  EXPECT_EQ(checkAction(*findScene("glass"), {"shuffle", {}}), "");
 }
 
 }  // namespace

@@ -333,8 +333,11 @@ void GlassScene::syncMaterial() {
 }
 
 void GlassScene::handleKeys(const FrameInput& input) {
-  if (input.pressed(GLFW_KEY_SPACE)) shuffle();
-  if (input.pressed(GLFW_KEY_R)) {
+  auto acted = [&](std::string_view name) {
+    return std::any_of(input.actions.begin(), input.actions.end(), [&](const ActionCall& c) { return c.name == name; });
+  };
+  if (input.pressed(GLFW_KEY_SPACE) || acted("shuffle")) shuffle();
+  if (input.pressed(GLFW_KEY_R) || acted("next_photo")) {
     pictures_.next();
     photoLoaded_ = false;
   }
@@ -665,8 +668,13 @@ void GlassScene::drawPanel() {
   ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F diamond views");
 }
 
+constexpr SceneAction kActions[] = {
+    {"shuffle", {}, "the shapes to new places (Space)"},
+    {"next_photo", {}, "the next photo behind the glass (R)"},
+};
+
 constinit const SceneInfo kSceneInfo = sceneInfo<GlassScene>("glass", "Spectral Glass", 2, &schema,
     "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F turn "
-    "the diamond, R shows the next photo; drop an image (or an EXR panorama) on the window.");
+    "the diamond, R shows the next photo; drop an image (or an EXR panorama) on the window.", kActions);
 
 }  // namespace vitrine::glass

@@ -3,6 +3,7 @@
 // a reverse-Z projection with an infinitely far plane (depth = near / distance along the view).
 #include "scenes/neon/facade.h"
 
+#include <glm/common.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -29,6 +30,12 @@ inline glm::mat4 projectionMatrix(float aspect) {
   p[2][3] = -1.0f;
   p[3][2] = kNear;
   return p;
+}
+
+// Where a release from outside (remote control, a script) may put a head: the volume in front of the
+// facade that the camera sees, so a stray "release 1e30 0 0" cannot send a chain where its maths breaks.
+inline glm::vec3 clampToReleaseVolume(glm::vec3 at) {
+  return glm::clamp(at, glm::vec3(-16.0f, 0.0f, kReleasePlaneZ - 8.0f), glm::vec3(16.0f, 20.0f, kReleasePlaneZ + 8.0f));
 }
 
 // The cursor's ray (normalised coordinates, origin top-left) met with the release plane.

@@ -236,6 +236,11 @@ void NeonScene::update(const FrameInput& input) {
   if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) rebuild();
   engine_->setDecayPerSecond(settings_.decay);
   handleCursor(input);
+  for (const ActionCall& call : input.actions)  // checked against kActions by the host
+    if (call.name == "release") {
+      lastInput_ = input.time;
+      release(input.time, clampToReleaseVolume({call.args[0], call.args[1], call.args[2]}), "action");
+    }
   autopilot(input);
   engine_->step(input.dt);
   ++stepsPending_;
@@ -374,7 +379,12 @@ void NeonScene::drawPanel() {
   if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
 }
 
+constexpr std::string_view kReleaseArgs[] = {"x", "y", "z"};
+constexpr SceneAction kActions[] = {
+    {"release", kReleaseArgs, "a tube head released at (x, y, z) metres: x across, y up from the floor, z depth"},
+};
+
 constinit const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema,
-    "Drag to release neon tubes along the cursor's path; leave it alone and the autopilot plays.");
+    "Drag to release neon tubes along the cursor's path; leave it alone and the autopilot plays.", kActions);
 
 }  // namespace vitrine::neon
