@@ -1,5 +1,6 @@
 #include "remote/catalogue.h"
 
+#include "params/schema.h"
 #include "scenes/scene.h"
 
 #include <fmt/format.h>
@@ -43,60 +44,46 @@ nlohmann::json paramJson(const params::Param& param) {
   return out;
 }
 
-std::string makeJson(const std::vector<Catalogue::Scene>& scenes) {
+std::string makeJson(const std::vector<const SceneInfo*>& scenes) {
   nlohmann::json list = nlohmann::json::array();
-  for (const auto& scene : scenes) {
+  for (const SceneInfo* scene : scenes) {
     nlohmann::json params = nlohmann::json::array();
-    for (const auto& param : scene.schema->params()) params.push_back(paramJson(param));
+    for (const auto& param : scene->schema().params()) params.push_back(paramJson(param));
     nlohmann::json actions = nlohmann::json::array();
-    for (const auto& action : scene.actions)
-      actions.push_back({{"name", action.name}, {"args", action.args}, {"help", action.help}});
-    list.push_back({{"name", scene.name},
-                    {"title", scene.title},
-                    {"input", scene.input},
+    for (const SceneAction& action : scene->actions) {
+      std::vector<std::string> args(action.args.begin(), action.args.end());
+      actions.push_back({{"name", action.name}, {"args", std::move(args)}, {"help", action.help}});
+    }
+    list.push_back({{"name", scene->name},
+                    {"title", scene->title},
+                    {"input", scene->input},
                     {"params", std::move(params)},
                     {"actions", std::move(actions)}});
   }
   return nlohmann::json{{"scenes", std::move(list)}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-// The registry's actions, when SceneInfo declares them (a scene without actions has none to offer).
-template <typename Info> std::vector<Catalogue::Action> actionsOf(const Info& info) {
-  std::vector<Catalogue::Action> actions;
-  if constexpr (requires { info.actions; }) {
-    for (const auto& action : info.actions) {
-      Catalogue::Action copy{std::string(action.name), {}, std::string(action.help)};
-      for (const auto& arg : action.args) copy.args.emplace_back(arg);
-      actions.push_back(std::move(copy));
-    }
-  }
-  return actions;
+std::vector<const SceneInfo*> registryScenes() {
+  std::vector<const SceneInfo*> scenes;
+  for (const SceneInfo& info : sceneRegistry()) scenes.push_back(&info);
+  return scenes;
 }
 
 }  // namespace
 
-Catalogue::Catalogue(std::vector<Scene> scenes) : scenes_(std::move(scenes)), json_(makeJson(scenes_)) {}
+Catalogue::Catalogue() : Catalogue(registryScenes()) {}
 
-Catalogue Catalogue::fromRegistry() {
-  std::vector<Scene> scenes;
-  for (const SceneInfo& info : sceneRegistry())
-    scenes.push_back({std::string(info.name), std::string(info.title), std::string(info.input), &info.schema(),
-                      actionsOf(info)});
-  return Catalogue(std::move(scenes));
-}
+Catalogue::Catalogue(std::vector<const SceneInfo*> scenes) : scenes_(std::move(scenes)), json_(makeJson(scenes_)) {}
 
-const Catalogue::Scene* Catalogue::findScene(std::string_view name) const {
-  for (const auto& scene : scenes_)
-    if (scene.name == name) return &scene;
+const SceneInfo* Catalogue::findScene(std::string_view name) const {
+  for (const SceneInfo* scene : scenes_)
+    if (scene->name == name) return scene;
   return nullptr;
 }
 
-const Catalogue::Action* Catalogue::findAction(std::string_view scene, std::string_view name) const {
-  const Scene* found = findScene(scene);
-  if (!found) return nullptr;
-  for (const auto& action : found->actions)
-    if (action.name == name) return &action;
-  return nullptr;
+bool Catalogue::hasAction(std::string_view scene, std::string_view action) const {
+  const SceneInfo* found = findScene(scene);
+  return found && found->findAction(action);
 }
 
 std::string Catalogue::check(const RemoteCommand& command) const {
@@ -107,18 +94,19 @@ std::string Catalogue::check(const RemoteCommand& command) const {
       return "pointer: x and y are numbers from 0 to 1";
     return {};
   }
-  const Scene* scene = findScene(command.scene);
+  const SceneInfo* scene = findScene(command.scene);
   if (!scene) return fmt::format("unknown scene '{}'", command.scene.substr(0, kMaxNameLength));
+  const params::Schema& schema = scene->schema();
   switch (command.kind) {
     case Kind::Scene: return {};
     case Kind::Set: {
-      if (!scene->schema->find(command.key))
+      if (!schema.find(command.key))
         return fmt::format("{}: unknown parameter '{}'", scene->name, command.key.substr(0, kMaxNameLength));
       if (command.value.size() > kMaxValueLength)
         return fmt::format("{}.{}: the value is longer than {} characters", scene->name, command.key, kMaxValueLength);
-      const auto scratch = scene->schema->makeDefaults();
+      const auto scratch = schema.makeDefaults();
       try {
-        if (std::string why = params::applyValues({scene->schema, scratch.get()}, {{command.key, command.value}});
+        if (std::string why = params::applyValues({&schema, scratch.get()}, {{command.key, command.value}});
             !why.empty())
           return fmt::format("{}.{}", scene->name, why);
       } catch (const std::exception& error) {  // a custom parser that throws refuses the value, nothing more
@@ -126,17 +114,9 @@ std::string Catalogue::check(const RemoteCommand& command) const {
       }
       return {};
     }
-    case Kind::Action: {
-      const Action* action = findAction(command.scene, command.key);
-      if (!action)
-        return fmt::format("{}: unknown action '{}'", scene->name, command.key.substr(0, kMaxNameLength));
-      if (command.args.size() != action->args.size())
-        return fmt::format("{}/{}: expected {} argument{}, got {}", scene->name, action->name, action->args.size(),
-                           action->args.size() == 1 ? "" : "s", command.args.size());
-      for (const float arg : command.args)
-        if (!std::isfinite(arg)) return fmt::format("{}/{}: arguments must be finite numbers", scene->name, action->name);
-      return {};
-    }
+    case Kind::Action:
+      if (command.key.size() > kMaxNameLength) return fmt::format("{}: unknown action", scene->name);
+      return checkAction(*scene, ActionCall{command.key, command.args});
     case Kind::Pointer: break;
   }
   return {};

@@ -219,7 +219,7 @@ ParseResult commandFromOsc(std::string_view path, std::span<const OscArgument> a
     return fail("unknown address; expected /vitrine/<scene>/<name>");
   const std::string scene(segments[1]), name(segments[2]);
 
-  if (catalogue.findAction(scene, name)) {
+  if (catalogue.hasAction(scene, name)) {
     RemoteCommand command{.kind = RemoteCommand::Kind::Action, .scene = scene, .key = name};
     if (args.size() > kMaxActionArgs) return fail(fmt::format("/vitrine/{}/{}: too many arguments", scene, name));
     for (const OscArgument& arg : args) {

@@ -34,7 +34,7 @@ struct RemoteConfig {
 class RemoteControl {
  public:
   // Throws std::runtime_error when it cannot listen (the port is taken, the address is not local).
-  explicit RemoteControl(RemoteConfig config, Catalogue catalogue = Catalogue::fromRegistry());
+  explicit RemoteControl(RemoteConfig config, Catalogue catalogue = Catalogue());
   ~RemoteControl();
   RemoteControl(const RemoteControl&) = delete;
   RemoteControl& operator=(const RemoteControl&) = delete;

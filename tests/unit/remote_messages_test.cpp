@@ -112,18 +112,11 @@ TEST(RemoteMessages, SizesAndNamesAreBounded) {
   EXPECT_EQ(parsed(R"({"type":"set","scene":"k","key":"x","value":"[[[[[[[["})").value, "[[[[[[[[");
 }
 
-Catalogue testCatalogue() {
-  auto scenes = Catalogue::fromRegistry().scenes();
-  for (auto& scene : scenes)
-    if (scene.name == "neon") scene.actions = {{"release", {"x", "y", "z"}, "Release a tube."}};
-  return Catalogue(std::move(scenes));
-}
-
 OscArgument number(char type, double value) { return {.type = type, .number = value}; }
 OscArgument text(std::string value) { return {.type = 's', .text = std::move(value)}; }
 
 TEST(RemoteMessages, OscAddressesBecomeCommands) {
-  const Catalogue catalogue = testCatalogue();
+  const Catalogue catalogue;
   const std::vector<OscArgument> neon{text("neon")};
   auto result = commandFromOsc("/vitrine/scene", neon, catalogue);
   ASSERT_TRUE(result.command) << result.error;
@@ -142,6 +135,11 @@ TEST(RemoteMessages, OscAddressesBecomeCommands) {
   EXPECT_EQ(result.command->kind, Kind::Action);
   EXPECT_EQ(result.command->args, (std::vector<float>{0.5f, 1.0f, -2.0f}));
 
+  result = commandFromOsc("/vitrine/glass/shuffle", {}, catalogue);
+  ASSERT_TRUE(result.command) << result.error;
+  EXPECT_EQ(result.command->kind, Kind::Action);
+  EXPECT_TRUE(result.command->args.empty());
+
   const std::vector<OscArgument> touch{number('f', 0.1), number('f', 0.9), {.type = 'T', .number = 1}};
   result = commandFromOsc("/vitrine/pointer", touch, catalogue);
   ASSERT_TRUE(result.command) << result.error;
@@ -150,7 +148,7 @@ TEST(RemoteMessages, OscAddressesBecomeCommands) {
 }
 
 TEST(RemoteMessages, OscBooleansFromTagsNumbersAndWords) {
-  const Catalogue catalogue = testCatalogue();
+  const Catalogue catalogue;
   const auto value = [&](OscArgument arg) {
     const std::vector<OscArgument> args{std::move(arg)};
     const auto result = commandFromOsc("/vitrine/bloom/mute", args, catalogue);
@@ -164,7 +162,7 @@ TEST(RemoteMessages, OscBooleansFromTagsNumbersAndWords) {
 }
 
 TEST(RemoteMessages, OscWrongTypesAndAddressesAreRefused) {
-  const Catalogue catalogue = testCatalogue();
+  const Catalogue catalogue;
   const auto refused = [&](std::string_view path, std::vector<OscArgument> args) {
     const auto result = commandFromOsc(path, args, catalogue);
     EXPECT_FALSE(result.command) << path << " was accepted";

@@ -19,13 +19,6 @@ namespace {
 
 using testing::eventually;
 
-Catalogue testCatalogue() {
-  auto scenes = Catalogue::fromRegistry().scenes();
-  for (auto& scene : scenes)
-    if (scene.name == "neon") scene.actions = {{"release", {"x", "y", "z"}, "Release a tube."}};
-  return Catalogue(std::move(scenes));
-}
-
 // A UDP socket aimed at the server: sends whatever bytes a test makes.
 class UdpSender {
  public:
@@ -72,7 +65,7 @@ std::vector<std::byte> bundle(const std::vector<std::vector<std::byte>>& element
 
 class RemoteOsc : public ::testing::Test {
  protected:
-  Catalogue catalogue = testCatalogue();
+  Catalogue catalogue;
   RemoteInbox inbox;
   RemoteStats stats;
 

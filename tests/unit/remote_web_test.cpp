@@ -98,16 +98,9 @@ unsigned handshakeStatus(uint16_t port, const std::string& target) {
   return response.result_int();
 }
 
-Catalogue testCatalogue() {
-  auto scenes = Catalogue::fromRegistry().scenes();
-  for (auto& scene : scenes)
-    if (scene.name == "neon") scene.actions = {{"release", {"x", "y", "z"}, "Release a tube."}};
-  return Catalogue(std::move(scenes));
-}
-
 class RemoteWeb : public ::testing::Test {
  protected:
-  Catalogue catalogue = testCatalogue();
+  Catalogue catalogue;
   RemoteInbox inbox;
   RemoteStats stats;
   std::string socketTarget = "/socket?token=" + kToken;
