@@ -1,0 +1,38 @@
+#pragma once
+// One TCP connection's HTTP requests: the page, the catalogue, or the upgrade to a WebSocket, each
+// only with the right token. Internal to the web server; Beast types inside.
+#include "remote/web_hub.h"
+
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+
+#include <memory>
+#include <optional>
+
+namespace vitrine::remote {
+
+class HttpSession : public std::enable_shared_from_this<HttpSession> {
+ public:
+  HttpSession(boost::asio::ip::tcp::socket&& socket, WebHub& hub);
+  void start();
+
+ private:
+  using Request = boost::beast::http::request<boost::beast::http::string_body>;
+  using Response = boost::beast::http::response<boost::beast::http::string_body>;
+
+  void read();
+  void onRead(boost::beast::error_code error, size_t bytes);
+  void upgrade(Request request);
+  Response respond(const Request& request);
+  void write(Response response, bool close);
+  void onWrite(bool close, boost::beast::error_code error, size_t bytes);
+
+  boost::beast::tcp_stream stream_;
+  WebHub& hub_;
+  std::optional<ConnectionSlot> slot_;  // handed to the socket session on upgrade
+  boost::beast::flat_buffer buffer_;
+  std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
+  std::shared_ptr<Response> response_;  // alive until written
+};
+
+}  // namespace vitrine::remote

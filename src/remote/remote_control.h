@@ -1,0 +1,64 @@
+#pragma once
+// Remote play: the one object the host owns while --remote is on. It makes the access token, listens
+// for OSC (UDP) and serves the control page (HTTP + WebSocket, TCP) on the same address and port, and
+// hands the main thread what clients asked for. The main thread only calls drain() and publish();
+// neither blocks on the network. Destroying it stops both servers and joins their threads.
+//
+//   remote::RemoteControl remote({.address = "127.0.0.1", .port = 8730});
+//   std::printf("Remote control: %s\n", remote.pageUrl().c_str());
+//   each frame:  for (auto& command : remote.drain()) apply(command);   // then, if anything changed:
+//                remote.publish(scene.name, params::snapshot(bound));
+#include "params/schema.h"
+#include "remote/bind_address.h"
+#include "remote/catalogue.h"
+#include "remote/command.h"
+#include "remote/inbox.h"
+#include "remote/osc_server.h"
+#include "remote/stats.h"
+#include "remote/web_server.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vitrine::remote {
+
+struct RemoteConfig {
+  BindAddress bind;      // port 0: a free port, the same for UDP and TCP (tests)
+  std::string token;     // empty: a fresh random one (tests pass their own)
+  size_t inboxCapacity = 1024;
+  OscLimits osc{};
+  WebLimits web{};
+};
+
+class RemoteControl {
+ public:
+  // Throws std::runtime_error when it cannot listen (the port is taken, the address is not local).
+  explicit RemoteControl(RemoteConfig config, Catalogue catalogue = Catalogue());
+  ~RemoteControl();
+  RemoteControl(const RemoteControl&) = delete;
+  RemoteControl& operator=(const RemoteControl&) = delete;
+
+  std::string pageUrl() const;  // http://127.0.0.1:8730/?token=...; IPv6 in brackets
+  const std::string& token() const { return token_; }
+  uint16_t port() const { return port_; }
+  const BindAddress& bind() const { return bind_; }
+  const Catalogue& catalogue() const { return *catalogue_; }
+
+  std::vector<RemoteCommand> drain() { return inbox_.drain(); }
+  void publish(std::string scene, params::KeyValues values) { web_->publish(std::move(scene), std::move(values)); }
+  RemoteStatsSnapshot stats() const { return stats_.snapshot(); }
+  size_t sockets() const { return web_->sockets(); }
+
+ private:
+  BindAddress bind_;
+  std::string token_;
+  uint16_t port_ = 0;
+  std::unique_ptr<const Catalogue> catalogue_;  // stable address for the servers' threads
+  RemoteInbox inbox_;
+  RemoteStats stats_;
+  std::unique_ptr<OscServer> osc_;  // destroyed (threads joined) before what they point to
+  std::unique_ptr<WebServer> web_;
+};
+
+}  // namespace vitrine::remote

@@ -1,0 +1,104 @@
+#include "remote/web_server.h"
+
+#include "remote/http_session.h"
+#include "remote/page.h"
+#include "remote/socket_session.h"
+#include "remote/web_hub.h"
+
+#include <boost/asio.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <thread>
+
+namespace vitrine::remote {
+
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+struct WebServer::Impl {
+  // Declared before the I/O context, so sessions (destroyed with the context's pending handlers)
+  // can still unregister from it.
+  WebHub hub;
+  net::io_context io{1};
+  tcp::acceptor acceptor{io};
+  net::steady_timer retry{io};  // after a failed accept (out of descriptors): pause, do not spin
+  std::thread thread;
+  uint16_t port = 0;
+
+  Impl(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
+       RemoteStats& stats, WebLimits limits)
+      : hub{std::move(token), catalogue, inbox, stats, limits, pageHtml()} {
+    boost::system::error_code error;
+    const auto address = net::ip::make_address(bind.address, error);
+    const auto failed = [&](std::string_view what) {
+      return std::runtime_error(
+          fmt::format("Cannot {} the remote page on TCP {}: {}", what, formatBind(bind), error.message()));
+    };
+    if (error) throw failed("parse the address of");
+    const tcp::endpoint endpoint(address, bind.port);
+    if (acceptor.open(endpoint.protocol(), error)) throw failed("open a socket for");
+    if (acceptor.set_option(net::socket_base::reuse_address(true), error)) throw failed("configure");
+    if (acceptor.bind(endpoint, error)) throw failed("listen for");
+    if (acceptor.listen(net::socket_base::max_listen_connections, error)) throw failed("listen for");
+    port = acceptor.local_endpoint().port();
+    accept();
+    thread = std::thread([this] { io.run(); });
+  }
+
+  ~Impl() {
+    io.stop();
+    thread.join();
+  }
+
+  void accept() {
+    acceptor.async_accept([this](boost::system::error_code error, tcp::socket socket) {
+      if (error) {
+        if (error == net::error::operation_aborted) return;
+        retry.expires_after(std::chrono::milliseconds(100));
+        retry.async_wait([this](boost::system::error_code waited) {
+          if (!waited) accept();
+        });
+        return;
+      }
+      if (hub.connections >= hub.limits.maxConnections) {
+        count(hub.stats.connectionsRefused);
+        boost::system::error_code ignored;
+        socket.close(ignored);
+      } else {
+        std::make_shared<HttpSession>(std::move(socket), hub)->start();
+      }
+      accept();
+    });
+  }
+
+  // On the I/O thread: the state as JSON, sent to every open socket unless unchanged.
+  void broadcast(const std::string& scene, const params::KeyValues& values) {
+    nlohmann::json object = nlohmann::json::object();
+    for (const auto& [key, text] : values) object[key] = text;
+    auto state = std::make_shared<const std::string>(
+        nlohmann::json{{"type", "state"}, {"scene", scene}, {"values", std::move(object)}}.dump(
+            -1, ' ', false, nlohmann::json::error_handler_t::replace));
+    if (hub.lastState && *hub.lastState == *state) return;
+    hub.lastState = state;
+    for (SocketSession* socket : hub.openSockets) socket->sendState(state);
+  }
+};
+
+WebServer::WebServer(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
+                     RemoteStats& stats, WebLimits limits)
+    : impl_(std::make_unique<Impl>(bind, std::move(token), catalogue, inbox, stats, limits)) {}
+
+WebServer::~WebServer() = default;
+
+uint16_t WebServer::port() const { return impl_->port; }
+
+void WebServer::publish(std::string scene, params::KeyValues values) {
+  net::post(impl_->io, [impl = impl_.get(), scene = std::move(scene), values = std::move(values)] {
+    impl->broadcast(scene, values);
+  });
+}
+
+size_t WebServer::sockets() const { return impl_->hub.sockets.load(); }
+
+}  // namespace vitrine::remote

@@ -1,0 +1,53 @@
+#pragma once
+// The control page over HTTP and its WebSocket, on one TCP port, served by Boost.Beast on one I/O
+// thread. Every request and socket must carry ?token=...; the page and catalogue are read-only, and
+// a socket's messages become commands in the inbox after the same checks as OSC. Boost stays inside
+// the .cpp files: the host includes this header without it.
+#include "params/schema.h"
+#include "remote/bind_address.h"
+#include "remote/catalogue.h"
+#include "remote/inbox.h"
+#include "remote/rate_limiter.h"
+#include "remote/stats.h"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace vitrine::remote {
+
+struct WebLimits {
+  size_t maxRequestHeader = 8 * 1024;  // bytes of a request line and headers
+  size_t maxRequestBody = 1024;        // GET only: anything sizeable is not for us
+  size_t maxSocketMessage = 4096;      // bytes of one WebSocket message; larger closes the socket
+  size_t maxSockets = 32;              // open WebSockets (phones) at once
+  size_t maxConnections = 64;          // TCP connections of any kind at once
+  size_t maxQueuedReplies = 8;         // per socket, for a client that reads slowly; more are dropped
+  std::chrono::milliseconds requestTimeout{10'000};  // to send one whole request (slow clients)
+  std::chrono::milliseconds socketIdle{30'000};      // silence before a ping, and again before closing
+  RateLimit perSocket{};
+};
+
+class WebServer {
+ public:
+  // Binds at once (port 0: a free one); throws std::runtime_error saying why it cannot.
+  WebServer(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
+            RemoteStats& stats, WebLimits limits = {});
+  ~WebServer();  // closes every connection and joins the I/O thread
+  WebServer(const WebServer&) = delete;
+  WebServer& operator=(const WebServer&) = delete;
+
+  uint16_t port() const;
+  // Any thread, cheap: the state every socket is sent ({"type":"state",...}), now and to each new
+  // socket on connect. The JSON is made on the I/O thread; an unchanged state is not resent.
+  void publish(std::string scene, params::KeyValues values);
+  size_t sockets() const;  // open WebSockets, for tests and a status line
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace vitrine::remote

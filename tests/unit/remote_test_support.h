@@ -1,0 +1,20 @@
+#pragma once
+// Shared by the remote control's tests: polling with a deadline instead of sleeping.
+#include <chrono>
+#include <functional>
+#include <thread>
+
+namespace vitrine::remote::testing {
+
+// True as soon as `done` is; false after `limit`. Polls every millisecond.
+inline bool eventually(const std::function<bool()>& done,
+                       std::chrono::milliseconds limit = std::chrono::milliseconds(2000)) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
+
+}  // namespace vitrine::remote::testing

@@ -1,0 +1,270 @@
+// The web server with real HTTP and WebSocket clients (Boost.Beast) on loopback: the token guards
+// every request and socket, the page and catalogue are served, socket messages reach the inbox or are
+// counted, limits hold, and published state reaches every socket.
+#include "remote/remote_control.h"
+#include "remote/web_server.h"
+#include "remote_test_support.h"
+
+#include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <gtest/gtest.h>
+#include <lo/lo.h>
+#include <nlohmann/json.hpp>
+#include <sys/socket.h>
+
+#include <optional>
+
+namespace vitrine::remote {
+namespace {
+
+namespace net = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = net::ip::tcp;
+using testing::eventually;
+
+const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+// Reads on test sockets give up after two seconds instead of hanging a test that fails.
+void limitReads(tcp::socket& socket) {
+  timeval limit{2, 0};
+  ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+}
+
+http::response<http::string_body> get(uint16_t port, std::string target, http::verb verb = http::verb::get,
+                                      std::string extraHeader = {}) {
+  net::io_context io;
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), port});
+  limitReads(socket);
+  http::request<http::string_body> request{verb, target, 11};
+  request.set(http::field::host, "127.0.0.1");
+  if (!extraHeader.empty()) request.set("X-Padding", extraHeader);
+  http::write(socket, request);
+  beast::flat_buffer buffer;
+  http::response<http::string_body> response;
+  http::read(socket, buffer, response);
+  return response;
+}
+
+// A phone's socket, synchronous.
+class SocketClient {
+ public:
+  SocketClient(uint16_t port, const std::string& target) : socket_(io_) {
+    socket_.next_layer().connect({net::ip::make_address("127.0.0.1"), port});
+    limitReads(socket_.next_layer());
+    socket_.handshake("127.0.0.1", target);
+    socket_.text(true);
+  }
+  void send(std::string_view text) { socket_.write(net::buffer(text)); }
+  void sendBinary(std::string_view bytes) {
+    socket_.binary(true);
+    socket_.write(net::buffer(bytes));
+    socket_.text(true);
+  }
+  // The next message as JSON; nullopt when the socket closed or nothing came within the read limit.
+  std::optional<nlohmann::json> receive() {
+    beast::flat_buffer buffer;
+    beast::error_code error;
+    socket_.read(buffer, error);
+    if (error) return std::nullopt;
+    return nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
+  }
+
+ private:
+  net::io_context io_;
+  websocket::stream<tcp::socket> socket_;
+};
+
+// The HTTP status an upgrade request gets: 101 when the socket would open, else why not.
+unsigned handshakeStatus(uint16_t port, const std::string& target) {
+  net::io_context io;
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), port});
+  limitReads(socket);
+  http::request<http::empty_body> request{http::verb::get, target, 11};
+  request.set(http::field::host, "127.0.0.1");
+  request.set(http::field::upgrade, "websocket");
+  request.set(http::field::connection, "Upgrade");
+  request.set(http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
+  request.set(http::field::sec_websocket_version, "13");
+  http::write(socket, request);
+  beast::flat_buffer buffer;
+  http::response<http::string_body> response;
+  http::read(socket, buffer, response);
+  return response.result_int();
+}
+
+class RemoteWeb : public ::testing::Test {
+ protected:
+  Catalogue catalogue;
+  RemoteInbox inbox;
+  RemoteStats stats;
+  std::string socketTarget = "/socket?token=" + kToken;
+};
+
+TEST_F(RemoteWeb, RequestsWithoutTheTokenAreForbidden) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  EXPECT_EQ(get(server.port(), "/").result(), http::status::forbidden);
+  EXPECT_EQ(get(server.port(), "/?token=").result(), http::status::forbidden);
+  EXPECT_EQ(get(server.port(), "/?token=0123456789abcdef0123456789abcdee").result(), http::status::forbidden);
+  EXPECT_EQ(get(server.port(), "/catalogue.json?token=" + kToken.substr(1)).result(), http::status::forbidden);
+  EXPECT_EQ(get(server.port(), "/catalogue.json").result(), http::status::forbidden);
+  EXPECT_EQ(stats.snapshot().unauthorised, 5u);
+  EXPECT_EQ(handshakeStatus(server.port(), "/socket"), 403u);
+  EXPECT_EQ(handshakeStatus(server.port(), "/socket?token=nope"), 403u);
+  EXPECT_EQ(handshakeStatus(server.port(), "/elsewhere?token=" + kToken), 404u);
+  EXPECT_EQ(stats.snapshot().unauthorised, 7u);
+  EXPECT_EQ(server.sockets(), 0u);
+  EXPECT_EQ(handshakeStatus(server.port(), socketTarget), 101u);
+}
+
+TEST_F(RemoteWeb, ServesThePageAndCatalogueWithTheToken) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  const auto page = get(server.port(), "/?token=" + kToken);
+  EXPECT_EQ(page.result(), http::status::ok);
+  EXPECT_EQ(page[http::field::content_type], "text/html; charset=utf-8");
+  EXPECT_NE(page.body().find("<!doctype html>"), std::string::npos);
+  EXPECT_NE(page["Content-Security-Policy"].find("default-src 'none'"), beast::string_view::npos);
+
+  const auto json = get(server.port(), "/catalogue.json?token=" + kToken);
+  EXPECT_EQ(json.result(), http::status::ok);
+  EXPECT_EQ(nlohmann::json::parse(json.body())["scenes"].size(), catalogue.scenes().size());
+
+  EXPECT_EQ(get(server.port(), "/secrets?token=" + kToken).result(), http::status::not_found);
+  EXPECT_EQ(get(server.port(), "/?token=" + kToken, http::verb::post).result(), http::status::method_not_allowed);
+  EXPECT_EQ(get(server.port(), "/?token=" + kToken, http::verb::get, std::string(20000, 'x')).result(),
+            http::status::payload_too_large);
+  EXPECT_EQ(stats.snapshot().oversized, 1u);
+  EXPECT_EQ(stats.snapshot().unauthorised, 0u);
+}
+
+TEST_F(RemoteWeb, SocketMessagesReachTheInbox) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  SocketClient phone(server.port(), socketTarget);
+  phone.send(R"({"type":"set","scene":"kifs","key":"step","value":3})");
+  phone.send(R"({"type":"pointer","x":0.5,"y":0.25,"down":true})");
+  phone.send(R"({"type":"action","scene":"neon","name":"release","args":[0,1,2]})");
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted == 3; }));
+  const auto commands = inbox.drain();
+  ASSERT_EQ(commands.size(), 3u);
+  EXPECT_EQ(commands[0].kind, RemoteCommand::Kind::Set);
+  EXPECT_EQ(commands[0].value, "3");
+  EXPECT_EQ(commands[0].client.rfind("ws 127.0.0.1:", 0), 0u) << commands[0].client;
+  EXPECT_TRUE(commands[1].down);
+  EXPECT_EQ(commands[2].args.size(), 3u);
+}
+
+TEST_F(RemoteWeb, MalformedAndRefusedMessagesAreCountedAndAnswered) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  SocketClient phone(server.port(), socketTarget);
+  phone.send("{not json");
+  auto answer = phone.receive();
+  ASSERT_TRUE(answer);
+  EXPECT_EQ((*answer)["type"], "refused");
+  phone.send(R"({"type":"set","scene":"kifs","key":"step","value":12})");
+  answer = phone.receive();
+  ASSERT_TRUE(answer);
+  EXPECT_NE((*answer)["reason"].get<std::string>().find("from 1 to 9"), std::string::npos) << *answer;
+  phone.sendBinary(std::string("\x00\x01\x02", 3));
+  ASSERT_TRUE(phone.receive());
+  EXPECT_EQ(stats.snapshot().malformed, 2u);
+  EXPECT_EQ(stats.snapshot().refused, 1u);
+  EXPECT_TRUE(inbox.drain().empty());
+  // The socket is still open and useful.
+  phone.send(R"({"type":"scene","name":"glass"})");
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted == 1; }));
+}
+
+TEST_F(RemoteWeb, OversizedMessagesCloseTheSocket) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  SocketClient phone(server.port(), socketTarget);
+  phone.send(R"({"type":"scene","name":")" + std::string(10000, 'a') + R"("})");
+  EXPECT_FALSE(phone.receive());  // closed
+  // The close frame can reach the client before the server's read handler has counted.
+  EXPECT_TRUE(eventually([&] { return stats.snapshot().oversized == 1; }));
+  ASSERT_TRUE(eventually([&] { return server.sockets() == 0; }));
+  // Others are unaffected.
+  SocketClient other(server.port(), socketTarget);
+  other.send(R"({"type":"scene","name":"glass"})");
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted == 1; }));
+}
+
+TEST_F(RemoteWeb, SocketsAreRateLimited) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats, {.perSocket = {.rate = 1, .burst = 3}});
+  SocketClient phone(server.port(), socketTarget);
+  for (int i = 0; i < 10; ++i) phone.send(R"({"type":"pointer","x":0.5,"y":0.5})");
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted + stats.snapshot().rateLimited == 10; }));
+  EXPECT_EQ(stats.snapshot().accepted, 3u);
+  EXPECT_EQ(stats.snapshot().rateLimited, 7u);
+}
+
+TEST_F(RemoteWeb, ClientCountIsLimited) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats, {.maxSockets = 2});
+  SocketClient first(server.port(), socketTarget), second(server.port(), socketTarget);
+  ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
+  EXPECT_EQ(handshakeStatus(server.port(), socketTarget), 503u);
+  EXPECT_EQ(stats.snapshot().connectionsRefused, 1u);
+}
+
+TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  SocketClient first(server.port(), socketTarget), second(server.port(), socketTarget);
+  ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
+  server.publish("kifs", {{"step", "3"}, {"tier", "low"}});
+  for (SocketClient* phone : {&first, &second}) {
+    const auto state = phone->receive();
+    ASSERT_TRUE(state);
+    EXPECT_EQ((*state)["type"], "state");
+    EXPECT_EQ((*state)["scene"], "kifs");
+    EXPECT_EQ((*state)["values"]["step"], "3");
+    EXPECT_EQ((*state)["values"]["tier"], "low");
+  }
+  // A phone that connects later is sent the state at once.
+  SocketClient late(server.port(), socketTarget);
+  const auto state = late.receive();
+  ASSERT_TRUE(state);
+  EXPECT_EQ((*state)["values"]["step"], "3");
+}
+
+TEST(RemoteControl, ServesOscAndWebOnOnePort) {
+  RemoteControl remote({.bind = {"127.0.0.1", 0}});
+  ASSERT_NE(remote.port(), 0);
+  EXPECT_EQ(remote.token().size(), 32u);
+  EXPECT_EQ(remote.pageUrl(), "http://127.0.0.1:" + std::to_string(remote.port()) + "/?token=" + remote.token());
+  EXPECT_EQ(get(remote.port(), "/?token=" + remote.token()).result(), http::status::ok);
+
+  SocketClient phone(remote.port(), "/socket?token=" + remote.token());
+  phone.send(R"({"type":"scene","name":"neon"})");
+  lo_address osc = lo_address_new("127.0.0.1", std::to_string(remote.port()).c_str());
+  lo_send(osc, "/vitrine/kifs/step", "i", 4);
+  lo_address_free(osc);
+
+  std::vector<RemoteCommand> commands;
+  ASSERT_TRUE(eventually([&] {
+    for (auto& command : remote.drain()) commands.push_back(std::move(command));
+    return commands.size() == 2;
+  }));
+  EXPECT_EQ(remote.stats().accepted, 2u);
+
+  remote.publish("neon", {{"speed", "1"}});
+  const auto state = phone.receive();
+  ASSERT_TRUE(state);
+  EXPECT_EQ((*state)["scene"], "neon");
+}
+
+TEST(RemoteControl, ShutsDownPromptlyWithClientsConnected) {
+  std::optional<RemoteControl> remote(std::in_place, RemoteConfig{.bind = {"127.0.0.1", 0}});
+  SocketClient phone(remote->port(), "/socket?token=" + remote->token());
+  ASSERT_TRUE(eventually([&] { return remote->sockets() == 1; }));
+  const auto start = std::chrono::steady_clock::now();
+  remote.reset();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(500));
+  EXPECT_FALSE(phone.receive());
+}
+
+}  // namespace
+}  // namespace vitrine::remote
