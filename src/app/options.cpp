@@ -107,10 +107,11 @@ const char* usage() {
 
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
           [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
-          [--reset-settings] [--validate]
+          [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
+          [--remote [--remote-bind ADDR:PORT] [--remote-saves]]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
-          [--audio-out FILE.wav]
+          [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT]]
           --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
@@ -127,6 +128,9 @@ Headless frame k shows time SECONDS + k/60; the last frame is written.
 record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average of K samples spread over
 its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames
 A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
+--kiosk shows each scene for --dwell seconds (45) with a cross-fade; a touch holds the scene, cycling resumes
+after 30 s alone. --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
+changes it); it prints the page's address with its access token. Remote changes are not saved unless --remote-saves.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
 )";
@@ -188,6 +192,11 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--events") options.events = value(arg);
     else if (arg == "--audio-out") options.audioOut = value(arg);
     else if (arg == "--reset-settings") options.resetSettings = true;
+    else if (arg == "--kiosk") options.kiosk = options.fullscreen = true;
+    else if (arg == "--dwell") options.dwell = parsePositive(arg, value(arg), 86400.0);
+    else if (arg == "--remote") options.remote = true;
+    else if (arg == "--remote-bind") options.remoteBind = value(arg), options.remote = true;
+    else if (arg == "--remote-saves") options.remoteSaves = true;
     else if (arg == "--fps") options.fps = parsePositive(arg, value(arg), 1000.0);
     else if (arg == "--seconds") options.seconds = parsePositive(arg, value(arg), 86400.0);
     else if (arg == "--spp") options.spp = parseWhole(arg, value(arg), 1);
@@ -237,6 +246,10 @@ Options parseOptions(int argc, const char* const* argv) {
     if (ext != ".wav") throw Error(fmt::format("--audio-out writes WAV: name it FILE.wav, not '{}'.", options.audioOut));
     checkWritable(options.audioOut);
   }
+  if (options.kiosk && options.mode != Mode::Gallery) throw Error("--kiosk is for the gallery, not --headless, bench or record.");
+  if (options.remote && options.mode != Mode::Gallery && options.mode != Mode::Headless)
+    throw Error("--remote is for the gallery and --headless runs.");
+  if (options.remoteSaves && !options.remote) throw Error("--remote-saves needs --remote.");
   if (options.mode == Mode::Gallery && options.size &&
       (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
     throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",

@@ -49,6 +49,12 @@ struct Options {
   uint32_t spp = 1;                  // --spp K: sub-frame samples averaged into each frame
   std::optional<std::pair<uint32_t, uint32_t>> range;  // --range A:B: only frames A .. B-1
   std::string format = "exr";        // --format exr|png
+  // The gallery for installations.
+  bool kiosk = false;                // --kiosk: fullscreen, no UI, cycling through the scenes
+  double dwell = 45.0;               // --dwell SECONDS: how long each scene shows in kiosk mode
+  bool remote = false;               // --remote: OSC and the web control page (gallery and headless)
+  std::string remoteBind = "127.0.0.1:8730";  // --remote-bind ADDR:PORT
+  bool remoteSaves = false;          // --remote-saves: remote changes are written to the settings file too
 };
 
 Options parseOptions(int argc, const char* const* argv);

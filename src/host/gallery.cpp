@@ -1,11 +1,18 @@
 // The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
 // screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
 #include <GLFW/glfw3.h>
+#include <glm/geometric.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <thread>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -18,8 +25,10 @@
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
 #include "host/gallery_settings.h"
+#include "host/kiosk.h"
 #include "host/live_capture.h"
 #include "host/param_panel.h"
+#include "host/remote_link.h"
 #include "host/menu.h"
 #include "host/modes.h"
 #include "host/overlay.h"
@@ -77,6 +86,7 @@ class Gallery {
  public:
   // `named`: the --scene the user asked for; null: the scene shown last time, else the first.
   Gallery(const Options& options, const SceneInfo* named);
+  const SceneInfo& showing() const { return renderer_->info(); }
   ~Gallery() { vkDeviceWaitIdle(device_); }  // also when leaving by an exception, with frames in flight
   Gallery(const Gallery&) = delete;
   Gallery& operator=(const Gallery&) = delete;
@@ -93,6 +103,11 @@ class Gallery {
   void applyEdit(const PanelEdit& edit);
   void rememberValues();
   void toggleCapture();
+  std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
+  void kioskStep(double elapsed, bool touched);
+  void finishFade();
+  void applyRemote();
+  bool touchedThisFrame(const Pointer& pointer);
 
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
@@ -103,7 +118,8 @@ class Gallery {
   gpu::ProgramLibrary programs_;
   GallerySettings settings_;
   audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
-  SceneRenderer renderer_;
+  std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
+  std::unique_ptr<SceneRenderer> incoming_;  // kiosk mode: the scene fading in, made at the first fade
   Swapchain swapchain_;
   Overlay overlay_;
   Screenshots screenshots_;
@@ -137,6 +153,18 @@ class Gallery {
   Clock::time_point screenshotNoted_{};
   ParamPanel panel_;
   std::string panelError_;  // why the last edit was refused
+
+  // Kiosk mode (--kiosk).
+  std::optional<KioskSchedule> kiosk_;
+  FrameInput incomingInput_, incomingShown_;  // the incoming scene's steps during a fade
+  float fade_ = 0.0f;                         // its weight in the output
+  Pointer lastPointer_;                       // to tell a moved mouse
+  // Remote play (--remote): keys a client changed, per scene; kept out of the settings file unless
+  // --remote-saves.
+  std::optional<RemoteLink> remote_;
+  std::map<std::string, std::set<std::string>, std::less<>> remoteKeys_;
+  bool remoteSaves_ = false;
+  std::vector<ActionCall> actions_;  // from clients, for the next step
 };
 
 Gallery::Gallery(const Options& options, const SceneInfo* named)
@@ -146,7 +174,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       device_(instance_, {options.device, surface_.handle()}),
       programs_(checkWindowSize(device_, options.size), VITRINE_SHADER_SOURCE_DIR, /*preferNewerSources=*/true),
       settings_(params::defaultSettingsPath(), options.resetSettings),
-      renderer_(device_, programs_, assets_, kFramesInFlight),
+      renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
                {assets_.font("Fraunces"), assets_.font("CormorantSC")}),
@@ -155,8 +183,14 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       steps_(input_.dt, kMaxCatchUpSteps),
       vsync_(options.vsync) {
   overlay_.attach(swapchain_);
-  renderer_.setAudioSink(&audio_);
-  renderer_.setRealtime(true);
+  renderer_->setAudioSink(&audio_);
+  renderer_->setRealtime(true);
+  remoteSaves_ = options.remoteSaves;
+  if (options.remote) remote_.emplace(options.remoteBind);
+  if (options.kiosk) {
+    uiHidden_ = true;
+    window_.setCursorHidden(true);
+  }
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
@@ -183,6 +217,10 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
     if (auto why = checkValues(info, values); !why.empty())
       throw Error(fmt::format("Scene {} rejects {}", info.name, why));
     settings_.remember(info.name, std::move(values), Clock::now());
+  }
+  if (options.kiosk) {
+    const auto scenes = sceneRegistry();
+    kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()), KioskTiming{options.dwell});
   }
   switchScene(firstScene);
 }
@@ -211,10 +249,15 @@ int Gallery::run() {
   return 0;
 }
 
+// The gallery keys an installation's visitors may use: the scene keys (and the scenes' own keys).
+// Esc stays for whoever runs it; everything that would change the installation is ignored.
+bool kioskAllows(int key) { return key == GLFW_KEY_ESCAPE || sceneForKey(key) != nullptr; }
+
 void Gallery::handleKeys() {
   const std::vector<int> keys = window_.takeKeys();
   if (overlay_.wantsText()) return;  // typed into a text field, not commands
   for (int key : keys) {
+    if (kiosk_ && !kioskAllows(key)) continue;
     switch (key) {
       case GLFW_KEY_ESCAPE:
         window_.close();
@@ -249,7 +292,7 @@ void Gallery::handleKeys() {
         if (time_.paused) time_.stepRequested = true;
         break;
       case GLFW_KEY_F5:  // the scene from its first frame, its parameters kept
-        nextScene_ = &renderer_.info();
+        nextScene_ = &renderer_->info();
         break;
       default:
         if (const SceneInfo* info = sceneForKey(key)) nextScene_ = info;
@@ -259,26 +302,104 @@ void Gallery::handleKeys() {
   for (std::string& path : window_.takeDrops()) drops_.push_back(std::move(path));
 }
 
+// Creates `info` in `renderer` with its remembered values, and any a client sent while it was away.
+// Returns why it could not start; only kiosk mode survives that (elsewhere the error ends the run).
+std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) {
+  try {
+    if (const char* inject = std::getenv("VITRINE_FAIL_SCENE"); inject && info.name == inject)  // fault injection
+      throw Error(fmt::format("scene {} failed to start (VITRINE_FAIL_SCENE)", info.name));
+    renderer.setScene(info);
+  } catch (const Error& e) {
+    if (!kiosk_) throw;
+    renderer.clear();
+    return e.what();
+  }
+  if (auto why = renderer.applyParameters(settings_.valuesFor(info.name)); !why.empty()) {
+    // Saved values that do not fit together on this device (each one was valid on its own).
+    std::fprintf(stderr, "vitrine: settings for %.*s not used (%s); starting from the defaults\n",
+                 int(info.name.size()), info.name.data(), why.c_str());
+    params::resetToDefaults(renderer.parameters());
+  }
+  if (remote_)
+    if (const auto waiting = remote_->takeWaiting(info.name); !waiting.empty() && renderer.applyParameters(waiting).empty())
+      for (const auto& [key, value] : waiting) remoteKeys_[std::string(info.name)].insert(key);
+  return {};
+}
+
+size_t registryIndex(const SceneInfo& info) { return size_t(&info - sceneRegistry().data()); }
+
 void Gallery::switchScene(const SceneInfo& info) {
   if (hasScene_) rememberValues();  // switching back restores them
-  renderer_.setScene(info);  // the old scene is retired behind the frames still using it
+  if (incoming_) incoming_->clear();  // a number key during a fade: that scene, no fade
+  fade_ = 0.0f;
+  const SceneInfo* chosen = &info;
+  // The old scene is retired behind the frames still using it. In kiosk mode a scene that cannot
+  // start is skipped for the next one; when none starts, the kiosk starts over (runGallery).
+  for (std::string failed; !(failed = startScene(*renderer_, *chosen)).empty();) {
+    std::fprintf(stderr, "vitrine: kiosk: skipping %.*s: %s\n", int(chosen->name.size()), chosen->name.data(),
+                 failed.c_str());
+    kiosk_->failed(registryIndex(*chosen));
+    const SceneInfo& next = sceneRegistry()[kiosk_->current()];
+    if (&next == chosen) throw Error("kiosk: no scene starts on this device");
+    chosen = &next;
+  }
+  if (kiosk_) kiosk_->jumpTo(registryIndex(*chosen));
   missingAssets_ = assets_.missing();  // with what the scene could not find
   hasScene_ = true;
   ++sceneSerial_;
   passes_.clear();  // the old scene's timings are not this one's
   panel_.forget();
   panelError_.clear();
-  if (auto why = renderer_.applyParameters(settings_.valuesFor(info.name)); !why.empty()) {
-    // Saved values that do not fit together on this device (each one was valid on its own).
-    std::fprintf(stderr, "vitrine: settings for %.*s not used (%s); starting from the defaults\n",
-                 int(info.name.size()), info.name.data(), why.c_str());
-    params::resetToDefaults(renderer_.parameters());
-  }
-  settings_.showing(info.name, Clock::now());
+  settings_.showing(chosen->name, Clock::now());
   input_.frame = 0;
   input_.time = 0.0;
   steps_.restart();
-  window_.setTitle(fmt::format("Vitrine — {}", info.title));
+  window_.setTitle(fmt::format("Vitrine — {}", chosen->title));
+  if (remote_) remote_->publish(*renderer_, true);
+}
+
+// Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
+// on, or ends (the renderers swap places).
+void Gallery::kioskStep(double elapsed, bool touched) {
+  const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched);
+  if (plan.begin) {
+    const SceneInfo& info = sceneRegistry()[*plan.begin];
+    if (!incoming_) {
+      incoming_ = std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight);
+      incoming_->setAudioSink(&audio_);
+      incoming_->setRealtime(true);
+    }
+    if (auto failed = startScene(*incoming_, info); !failed.empty()) {
+      std::fprintf(stderr, "vitrine: kiosk: skipping %.*s: %s\n", int(info.name.size()), info.name.data(),
+                   failed.c_str());
+      kiosk_->failed(*plan.begin);
+      fade_ = 0.0f;
+      return;
+    }
+    incomingInput_ = FrameInput{};
+    incomingInput_.seed = input_.seed;
+    incomingInput_.reducedMotion = input_.reducedMotion;
+    incomingShown_ = incomingInput_;
+  }
+  if (plan.finish) finishFade();
+  fade_ = plan.fade.value_or(0.0f);
+}
+
+void Gallery::finishFade() {
+  if (!incoming_ || !incoming_->hasScene()) return;
+  rememberValues();
+  std::swap(renderer_, incoming_);
+  incoming_->clear();  // the scene that faded out
+  input_ = incomingInput_;
+  shown_ = incomingShown_;
+  ++sceneSerial_;
+  passes_.clear();
+  panel_.forget();
+  panelError_.clear();
+  missingAssets_ = assets_.missing();
+  settings_.showing(renderer_->info().name, Clock::now());
+  window_.setTitle(fmt::format("Vitrine — {}", renderer_->info().title));
+  if (remote_) remote_->publish(*renderer_, true);
 }
 
 void Gallery::frame() {
@@ -301,13 +422,19 @@ void Gallery::frame() {
   showMenu();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
-  renderer_.record(cmd, slot, shown_,
-                   BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
-                                   compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute});
-  screenshots_.record(cmd, slot, renderer_.target(), renderer_.info().name, &renderer_.timer());
-  capture_.record(cmd, slot, renderer_.target(), &renderer_.timer());
+  Crossfade fade;
+  if (incoming_ && incoming_->hasScene()) {  // kiosk mode's cross-fade: both scenes run and draw
+    incoming_->recordTarget(cmd, slot, incomingShown_, swapchain_.extent());
+    fade = {&incoming_->target(), fade_};
+  }
+  renderer_->record(cmd, slot, shown_,
+                    BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
+                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute},
+                    fade);
+  screenshots_.record(cmd, slot, renderer_->target(), renderer_->info().name, &renderer_->timer());
+  capture_.record(cmd, slot, renderer_->target(), &renderer_->timer());
   slotSerial_[slot] = sceneSerial_;
-  overlay_.record(cmd, *image, &renderer_.timer());
+  overlay_.record(cmd, *image, &renderer_->timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image));
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
   swapchain_.present(*image);
@@ -318,7 +445,7 @@ void Gallery::frame() {
 // What the GPU has finished for this slot: its pass timings, and a screenshot taken in it.
 void Gallery::collect(uint32_t slot) {
   // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
-  if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_.timer().collect(slot);
+  if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_->timer().collect(slot);
   input_.lastGpuMs = 0.0;
   for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
   capture_.collect(slot);
@@ -334,24 +461,51 @@ void Gallery::simulate() {
   const double elapsed = secondsBetween(lastFrame_, now);
   lastFrame_ = now;
   frameSeconds_ += (elapsed - frameSeconds_) * 0.05;
-  cursor_.observe(window_.takePointer(), !uiHidden_ && overlay_.wantsMouse());
+  Pointer pointer = window_.takePointer();
+  bool touched = touchedThisFrame(pointer);
+  if (remote_) {
+    const RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time);
+    touched = touched || applied.touched;
+    if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
+    for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
+    actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
+    if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
+    remote_->publish(*renderer_);
+  }
+  if (kiosk_) kioskStep(elapsed, touched);
+  cursor_.observe(pointer, !uiHidden_ && overlay_.wantsMouse());
   for (int due = time_.due(steps_, elapsed); due > 0; --due) {
     input_.cursor = cursor_.take();
     input_.keysPressed = std::exchange(keys_, {});
     input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
     input_.droppedFiles = std::exchange(drops_, {});
-    renderer_.scene().update(input_);
+    input_.actions = std::exchange(actions_, {});
+    renderer_->scene().update(input_);
     shown_ = input_;
     input_.time += input_.dt;
     ++input_.frame;
+    if (incoming_ && incoming_->hasScene()) {  // the scene fading in runs on its own clock, untouched
+      incoming_->scene().update(incomingInput_);
+      incomingShown_ = incomingInput_;
+      incomingInput_.time += incomingInput_.dt;
+      ++incomingInput_.frame;
+    }
   }
+}
+
+// Kiosk mode: did a person do anything? A key, a click, a scroll, a drop, or a mouse that moved.
+bool Gallery::touchedThisFrame(const Pointer& pointer) {
+  const bool moved = pointer.inside && glm::length(pointer.pixels - lastPointer_.pixels) > 2.0f;
+  lastPointer_ = pointer;
+  return moved || pointer.leftPressed || pointer.leftHeld || pointer.wheel != 0.0f || !keys_.empty() ||
+         !drops_.empty();
 }
 
 void Gallery::showMenu() {
   if (uiHidden_) return;
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
   const MenuChoice choice =
-      drawMenu(MenuState{renderer_.info(), renderer_.scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
+      drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                          screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
                          helpShown_, capture_.status(), capture_.active(), reloadNote_});
   vsync_ = choice.vsync;
@@ -362,23 +516,38 @@ void Gallery::showMenu() {
   if (choice.capture != capture_.active()) toggleCapture();
 }
 
-void Gallery::toggleCapture() { std::printf("vitrine: %s\n", capture_.toggle(renderer_.info().name).c_str()); }
+void Gallery::toggleCapture() { std::printf("vitrine: %s\n", capture_.toggle(renderer_->info().name).c_str()); }
 
 // Every panel edit goes through the same validation as --set; a refused one leaves every value as it was.
 void Gallery::applyEdit(const PanelEdit& edit) {
+  auto& remoteKeys = remoteKeys_[std::string(renderer_->info().name)];  // what the user sets here is theirs
+  if (edit.what == PanelEdit::What::Values)
+    for (const auto& kv : edit.values) remoteKeys.erase(kv.first);
+  else
+    remoteKeys.clear();
   switch (edit.what) {
-    case PanelEdit::What::Values: panelError_ = renderer_.applyParameters(edit.values); break;
-    case PanelEdit::What::Preset: panelError_ = renderer_.applyPreset(edit.preset); break;
+    case PanelEdit::What::Values: panelError_ = renderer_->applyParameters(edit.values); break;
+    case PanelEdit::What::Preset: panelError_ = renderer_->applyPreset(edit.preset); break;
     case PanelEdit::What::ResetAll:
-      params::resetToDefaults(renderer_.parameters());
+      params::resetToDefaults(renderer_->parameters());
       panelError_.clear();
       break;
   }
   rememberValues();
+  if (remote_) remote_->publish(*renderer_, true);
 }
 
+// What a client changed is kept out of the settings file (unless --remote-saves): those keys keep
+// the values saved before.
 void Gallery::rememberValues() {
-  settings_.remember(renderer_.info().name, params::snapshot(renderer_.parameters()), Clock::now());
+  const std::string_view scene = renderer_->info().name;
+  params::KeyValues values = params::snapshot(renderer_->parameters());
+  if (const auto remote = remoteKeys_.find(scene); remote != remoteKeys_.end() && !remoteSaves_) {
+    std::erase_if(values, [&](const auto& kv) { return remote->second.contains(kv.first); });
+    for (auto& kv : settings_.valuesFor(scene))
+      if (remote->second.contains(kv.first)) values.push_back(std::move(kv));
+  }
+  settings_.remember(scene, std::move(values), Clock::now());
 }
 
 // Shader sources are polled a couple of times a second: often enough to feel live, rarely enough
@@ -405,7 +574,32 @@ int runGallery(const Options& options) {
   // device is idled and destroyed in order. The handler only sets a flag.
   std::signal(SIGTERM, [](int) { stopRequested = 1; });
   std::signal(SIGINT, [](int) { stopRequested = 1; });
-  return Gallery(options, named).run();
+  if (!options.kiosk) return Gallery(options, named).run();
+
+  // The kiosk never stops: whatever ends a gallery once it has shown a frame (a lost device, memory
+  // running out) is logged, and a fresh one starts with the next scene, after a pause that grows while
+  // the failures repeat. Failing before the first frame (no display, no device) is an error to report.
+  auto pause = std::chrono::seconds(1);
+  for (bool first = true;; first = false) {
+    std::optional<Gallery> gallery;
+    const SceneInfo* failing = named;
+    try {
+      gallery.emplace(options, named);
+      return gallery->run();
+    } catch (const Error& e) {
+      if (first && !gallery) throw;
+      if (gallery) failing = &gallery->showing();
+      std::fprintf(stderr, "vitrine: kiosk: %s\nvitrine: kiosk: restarting in %lld s\n", e.what(),
+                   (long long)pause.count());
+    }
+    gallery.reset();
+    for (auto slept = std::chrono::seconds(0); slept < pause && !stopRequested; slept += std::chrono::seconds(1))
+      std::this_thread::sleep_for(std::chrono::seconds(1));
+    if (stopRequested) return 0;
+    pause = std::min(pause * 2, std::chrono::seconds(60));
+    const auto scenes = sceneRegistry();
+    named = failing ? &scenes[(size_t(failing - scenes.data()) + 1) % scenes.size()] : nullptr;
+  }
 }
 
 }  // namespace vitrine::host

@@ -9,11 +9,19 @@
 #include "host/offscreen.h"
 #include "core/output_path.h"
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <optional>
+#include <thread>
+
+#include "host/remote_link.h"
 #include <fmt/format.h>
 
 namespace vitrine::host {
+namespace {
+volatile std::sig_atomic_t stopHeadless = 0;
+}  // namespace
 
 int runHeadless(const Options& options) {
   const std::filesystem::path out = options.out;
@@ -33,7 +41,24 @@ int runHeadless(const Options& options) {
   ImageRgba image;
   {
     Offscreen offscreen(device, config);
-    for (uint32_t k = 0; k < options.frames; ++k) offscreen.renderFrame();
+    std::optional<RemoteLink> remote;
+    if (options.remote) {
+      // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
+      // SIGTERM ends the run early (the last frame is still written).
+      remote.emplace(options.remoteBind);
+      std::signal(SIGTERM, [](int) { stopHeadless = 1; });
+      std::signal(SIGINT, [](int) { stopHeadless = 1; });
+    }
+    auto due = std::chrono::steady_clock::now();
+    for (uint32_t k = 0; k < options.frames && !stopHeadless; ++k) {
+      if (remote) {
+        RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
+        offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
+        remote->publish(offscreen.renderer());
+        std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
+      }
+      offscreen.renderFrame();
+    }
     image = offscreen.readback();
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",

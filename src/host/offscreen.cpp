@@ -50,6 +50,11 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
 }
 
 
+void Offscreen::addInput(std::vector<ActionCall> actions, std::optional<Pointer> pointer) {
+  extraActions_.insert(extraActions_.end(), actions.begin(), actions.end());
+  if (pointer) extraPointer_ = pointer;
+}
+
 FrameTimes Offscreen::renderFrame() {
   const auto start = std::chrono::steady_clock::now();
   input_.time = startTime_ + double(input_.frame) * step_;
@@ -60,6 +65,12 @@ FrameTimes Offscreen::renderFrame() {
     input_.keysHeld = std::move(step.keysHeld);
     input_.actions = std::move(step.actions);
   }
+  if (extraPointer_) {
+    extraCursor_.observe(*std::exchange(extraPointer_, std::nullopt), false);
+    input_.cursor = extraCursor_.take();
+  }
+  input_.actions.insert(input_.actions.end(), extraActions_.begin(), extraActions_.end());
+  extraActions_.clear();
   renderer_.scene().update(input_);
   VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,

@@ -45,6 +45,12 @@ class Offscreen {
   bool inputFinished() const { return !player_ || player_->finished(); }
   const SceneInfo& scene() const { return renderer_.info(); }
   params::Bound parameters() { return renderer_.parameters(); }
+  SceneRenderer& renderer() { return renderer_; }
+  double time() const { return startTime_ + double(input_.frame) * step_; }  // the next frame's
+  VkExtent2D size() const { return size_; }
+  // Input from outside the script (a remote client), for the next frame: its actions, and a pointer
+  // that drives the cursor instead of the script's while present.
+  void addInput(std::vector<ActionCall> actions, std::optional<Pointer> pointer);
 
  private:
   const gpu::Device& device_;
@@ -59,6 +65,9 @@ class Offscreen {
   double startTime_;
   double step_;
   std::optional<InputPlayer> player_;
+  std::vector<ActionCall> extraActions_;
+  std::optional<Pointer> extraPointer_;
+  CursorTracker extraCursor_;
   bool rendered_ = false;
 };
 

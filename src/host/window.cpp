@@ -87,6 +87,10 @@ VkExtent2D Window::framebufferSize() const {
   return {uint32_t(width), uint32_t(height)};
 }
 
+void Window::setCursorHidden(bool hidden) {
+  glfwSetInputMode(window_, GLFW_CURSOR, hidden ? GLFW_CURSOR_HIDDEN : GLFW_CURSOR_NORMAL);
+}
+
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void Window::toggleFullscreen() {

@@ -47,6 +47,7 @@ class Window {
   void close();
   VkExtent2D framebufferSize() const;
   void setTitle(const std::string& title);
+  void setCursorHidden(bool hidden);  // kiosk mode: no arrow over the pieces
   void toggleFullscreen();  // on the primary monitor; back to the windowed position and size
 
   std::vector<int> takeKeys();  // GLFW key codes pressed since the last take, in order

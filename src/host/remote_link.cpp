@@ -1,0 +1,101 @@
+#include "host/remote_link.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/error.h"
+
+namespace vitrine::host {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr auto kPublishInterval = std::chrono::milliseconds(100);
+// A phone that lifted its finger keeps the cursor this long, then the mouse has it back.
+constexpr auto kTouchHold = std::chrono::seconds(2);
+constexpr size_t kRefusalsLogged = 20;  // then every hundredth: a broken client cannot flood the console
+
+remote::RemoteControl listen(const std::string& bind) {
+  try {
+    return remote::RemoteControl(remote::RemoteConfig{remote::parseBind(bind)});
+  } catch (const std::exception& e) {
+    throw Error(fmt::format("--remote-bind {}: {}", bind, e.what()));
+  }
+}
+
+}  // namespace
+
+RemoteLink::RemoteLink(const std::string& bind) : control_(listen(bind)) {
+  std::printf("vitrine: remote control on %s (OSC over UDP, this page over HTTP):\n  %s\n",
+              remote::formatBind(control_.bind()).c_str(), control_.pageUrl().c_str());
+  std::fflush(stdout);
+}
+
+RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, double time) {
+  RemoteApplied applied;
+  const std::string_view showing = renderer.info().name;
+  for (remote::RemoteCommand& command : control_.drain()) {
+    applied.touched = true;
+    std::string refused;
+    switch (command.kind) {
+      case remote::RemoteCommand::Kind::Scene:
+        applied.scene = findScene(command.scene);
+        break;
+      case remote::RemoteCommand::Kind::Set:
+        if (command.scene != showing) {
+          waiting_[command.scene].emplace_back(command.key, command.value);
+          break;
+        }
+        // Checked against the schema on a server thread; the scene's cross-parameter check runs here.
+        refused = renderer.applyParameters({{command.key, command.value}});
+        if (refused.empty()) {
+          applied.values.emplace_back(command.key, command.value);
+          if (events) events->emit(time, showing, {"remote_set", {{"key", command.key}, {"value", command.value}}});
+        }
+        break;
+      case remote::RemoteCommand::Kind::Action:
+        if (command.scene == showing) applied.actions.push_back({command.key, command.args});
+        break;
+      case remote::RemoteCommand::Kind::Pointer:
+        pressed_ = pressed_ || (command.down && !down_);
+        down_ = command.down;
+        touch_ = command.position;
+        lastTouch_ = Clock::now();
+        break;
+    }
+    if (!refused.empty() && (++refused_ <= kRefusalsLogged || refused_ % 100 == 0))
+      std::fprintf(stderr, "vitrine: remote %s refused: %s (%zu refused so far)\n", command.client.c_str(),
+                   refused.c_str(), refused_);
+  }
+  if (!applied.values.empty() || applied.scene) publish(renderer, true);
+  return applied;
+}
+
+params::KeyValues RemoteLink::takeWaiting(std::string_view scene) {
+  const auto it = waiting_.find(scene);
+  if (it == waiting_.end()) return {};
+  params::KeyValues values = std::move(it->second);
+  waiting_.erase(it);
+  return values;
+}
+
+std::optional<Pointer> RemoteLink::pointer(VkExtent2D framebuffer) {
+  if (!touch_ || (!down_ && Clock::now() - lastTouch_ > kTouchHold)) return std::nullopt;
+  Pointer pointer;
+  pointer.framebuffer = framebuffer;
+  pointer.pixels = *touch_ * glm::vec2(framebuffer.width, framebuffer.height);
+  pointer.leftHeld = down_;
+  pointer.leftPressed = std::exchange(pressed_, false);
+  pointer.inside = true;
+  return pointer;
+}
+
+void RemoteLink::publish(SceneRenderer& renderer, bool now) {
+  const auto at = Clock::now();
+  if (!now && at - lastPublish_ < kPublishInterval) return;
+  lastPublish_ = at;
+  control_.publish(std::string(renderer.info().name), params::snapshot(renderer.parameters()));
+}
+
+}  // namespace vitrine::host

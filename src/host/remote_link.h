@@ -1,0 +1,49 @@
+#pragma once
+// The host's end of remote play (--remote): starts the servers, and once a frame applies what
+// clients asked for on the main thread, before the next update. Shared by the gallery and headless
+// runs (the latter so a browser test can drive a run with no window). A parameter for the scene that
+// is showing goes through the same validation as the panel; one for another scene waits until that
+// scene opens; actions and the pointer become the next step's input.
+#include "host/pointer.h"
+#include "host/scene_renderer.h"
+#include "remote/remote_control.h"
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vitrine::host {
+
+struct RemoteApplied {
+  const SceneInfo* scene = nullptr;      // a client chose this scene
+  std::vector<ActionCall> actions;       // for the scene showing, in order
+  params::KeyValues values;              // applied to the scene showing (for the settings' bookkeeping)
+  bool touched = false;                  // anything at all arrived (kiosk mode: a person is playing)
+};
+
+class RemoteLink {
+ public:
+  // Listens on `bind` ("ADDR:PORT"); prints the page's address with its token. Throws vitrine::Error.
+  explicit RemoteLink(const std::string& bind);
+
+  // Applies the commands that arrived since the last call to `renderer`'s scene.
+  RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time);
+  // Values sent for `scene` while it was not showing, to apply when it opens (then forgotten).
+  params::KeyValues takeWaiting(std::string_view scene);
+  // The phone's touch as a pointer over an output of `framebuffer` pixels, while a phone drives it.
+  std::optional<Pointer> pointer(VkExtent2D framebuffer);
+  // Tells every page what the scene showing is and its values (a few times a second at most).
+  void publish(SceneRenderer& renderer, bool now = false);
+
+ private:
+  remote::RemoteControl control_;
+  std::map<std::string, params::KeyValues, std::less<>> waiting_;
+  std::optional<glm::vec2> touch_;  // the latest pointer position from a phone
+  bool down_ = false, pressed_ = false;
+  std::chrono::steady_clock::time_point lastTouch_{}, lastPublish_{};
+  size_t refused_ = 0;
+};
+
+}  // namespace vitrine::host

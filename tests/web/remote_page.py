@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""remote_page.py VITRINE OUTDIR: the control page, loaded in headless Chromium through chromedriver's
+W3C WebDriver protocol (standard library only), drives a headless neon run over its WebSocket: arrow
+keys on the `particles` slider change the parameter, and a drag on the touch pad releases tubes along
+its path. Requests without the access token are refused."""
+import json, os, re, signal, socket, subprocess, sys, time, urllib.error, urllib.request
+
+vitrine, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+events = os.path.join(out, "remote_events.jsonl")
+if os.path.exists(events):
+    os.remove(events)
+
+
+def fail(message):
+    print("FAIL:", message)
+    sys.exit(1)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def http(method, url, body=None, timeout=30):
+    data = json.dumps(body).encode() if body is not None else None
+    request = urllib.request.Request(url, data=data, method=method, headers={"Content-Type": "application/json"})
+    try:
+        with urllib.request.urlopen(request, timeout=timeout) as response:
+            return json.loads(response.read() or b"null")
+    except urllib.error.HTTPError as e:
+        fail(f"WebDriver {method} {url}: {e.code} {e.read()[:400]!r}")
+
+
+def status_of(url):
+    try:
+        with urllib.request.urlopen(url, timeout=10) as response:
+            return response.status
+    except urllib.error.HTTPError as e:
+        return e.code
+
+
+run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x36", "--frames", "3600",
+                        "--set", "chains=256", "--set", "autopilot_idle=60", "--validate", "--remote",
+                        "--remote-bind", "127.0.0.1:0", "--events", events, "--out", os.path.join(out, "remote.exr")],
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+driver = None
+try:
+    url = None
+    deadline = time.time() + 60
+    while time.time() < deadline and url is None:
+        line = run.stdout.readline()
+        if not line:
+            fail("vitrine ended before printing the page's address")
+        match = re.search(r"(http://\S+\?token=([0-9a-f]+))", line)
+        if match:
+            url, token = match.group(1), match.group(2)
+    if url is None:
+        fail("no page address within 60 s")
+    base = url.split("?")[0]
+    # The token guards every request.
+    assert status_of(base) == 403, "a request without the token must be refused"
+    assert status_of(base + "?token=" + "0" * len(token)) == 403, "a wrong token must be refused"
+    assert status_of(base + "catalogue.json?token=" + token) == 200
+
+    port = free_port()
+    driver = subprocess.Popen(["chromedriver", f"--port={port}"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    wd = f"http://127.0.0.1:{port}"
+    for _ in range(100):
+        try:
+            http("GET", wd + "/status")
+            break
+        except Exception:
+            time.sleep(0.1)
+    capabilities = {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": {
+        "binary": "/usr/bin/chromium",
+        "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=420,860"]}}}}
+    session = http("POST", wd + "/session", capabilities)["value"]["sessionId"]
+    s = f"{wd}/session/{session}"
+
+    def find(css, wait=20):
+        end = time.time() + wait
+        while time.time() < end:
+            found = http("POST", s + "/elements", {"using": "css selector", "value": css})["value"]
+            if found:
+                return list(found[0].values())[0]
+            time.sleep(0.1)
+        fail(f"nothing matches {css} in the page")
+
+    http("POST", s + "/url", {"url": url})
+    find('body[data-connection="live"][data-scene="neon"]')
+    slider = find('input[data-key="particles"]')
+    # The first state push shows the run's value: particles 32, the slider's position 28 of 4..64.
+    deadline = time.time() + 10
+    while http("GET", f"{s}/element/{slider}/property/value")["value"] != "28":
+        if time.time() > deadline:
+            fail("the page never showed the run's particles=32")
+        time.sleep(0.1)
+    http("POST", f"{s}/element/{slider}/value", {"text": "\ue012" * 4})  # focused, Left four times: 32 -> 28
+
+    pad = find("#pad")
+    rect = http("GET", f"{s}/element/{pad}/rect")["value"]
+    x0, y = int(rect["x"] + rect["width"] * 0.15), int(rect["y"] + rect["height"] * 0.5)
+    step = int(rect["width"] * 0.06)
+    moves = [{"type": "pointerMove", "duration": 0, "origin": "viewport", "x": x0, "y": y},
+             {"type": "pointerDown", "button": 0}]
+    moves += [{"type": "pointerMove", "duration": 50, "origin": "viewport", "x": x0 + step * i, "y": y - i}
+              for i in range(1, 13)]
+    moves += [{"type": "pointerUp", "button": 0}]
+    http("POST", s + "/actions", {"actions": [{"type": "pointer", "id": "finger", "parameters": {"pointerType": "touch"},
+                                              "actions": moves}]})
+    time.sleep(1.0)  # a few frames for the last messages
+finally:
+    if driver:
+        driver.terminate()
+    run.send_signal(signal.SIGTERM)
+    try:
+        output, _ = run.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        run.kill()
+        fail("vitrine did not stop on SIGTERM")
+
+if run.returncode != 0:
+    fail(f"vitrine exited with {run.returncode}:\n{output}")
+lines = [json.loads(line) for line in open(events)]
+sets = [e for e in lines if e["event"] == "remote_set" and e["key"] == "particles"]
+releases = [e for e in lines if e["event"] == "release" and e["by"] == "cursor"]
+if not sets or sets[-1]["value"] != "28":
+    fail(f"the slider should have set particles=28, got {[e['value'] for e in sets]}")
+if len(releases) < 3:
+    fail(f"the pad's drag should release tubes along its path, got {len(releases)}")
+print(f"ok: particles set to {sets[-1]['value']} in {len(sets)} steps, {len(releases)} tubes released from the pad")
