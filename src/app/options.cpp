@@ -129,7 +129,7 @@ record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average o
 its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames
 A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
 --kiosk shows each scene for --dwell seconds (45) with a cross-fade; a touch holds the scene, cycling resumes
-after 30 s alone. --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
+after 30 s alone (the dwell when shorter, 10 s at least). --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
 changes it); it prints the page's address with its access token. Remote changes are not saved unless --remote-saves.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.

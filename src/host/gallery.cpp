@@ -220,7 +220,10 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
   }
   if (options.kiosk) {
     const auto scenes = sceneRegistry();
-    kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()), KioskTiming{options.dwell});
+    // Cycling resumes after 30 s alone, or the dwell when shorter (but 10 s at least).
+    kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()),
+                   KioskTiming{options.dwell, 2.0, std::clamp(options.dwell, 10.0, 30.0)});
+    lastPointer_ = window_.takePointer();  // where the cursor rests is not a touch
   }
   switchScene(firstScene);
 }
@@ -507,7 +510,8 @@ void Gallery::showMenu() {
   const MenuChoice choice =
       drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                          screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
-                         helpShown_, capture_.status(), capture_.active(), reloadNote_});
+                         helpShown_, capture_.status(), capture_.active(), reloadNote_,
+                         remote_ ? remote_->status() : std::string()});
   vsync_ = choice.vsync;
   time_ = choice.time;
   helpShown_ = choice.help;

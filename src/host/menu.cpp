@@ -147,13 +147,14 @@ MenuChoice drawMenu(const MenuState& state) {
       drawWrapped(state.capture);
     }
     if (!state.screenshot.empty()) drawWrapped(state.screenshot);
+    if (!state.remote.empty()) ImGui::TextDisabled("%s", state.remote.c_str());
     if (!state.missingAssets.empty() && ImGui::CollapsingHeader("Missing assets")) {
       ImGui::PushStyleColor(ImGuiCol_Text, kWarningAmber);
       for (const auto& line : state.missingAssets) drawWrapped(line);
       ImGui::PopStyleColor();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("%s scene  Tab hide UI  F1 help  P pause  F5 restart  M mute  F12 screenshot  Esc quit",
+    ImGui::TextDisabled("%s scene  Tab hide UI  F1 help  P pause  F5 restart  M mute  F9 capture  F12 screenshot  Esc quit",
                         sceneKeyRange().c_str());
   }
   ImGui::End();

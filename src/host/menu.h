@@ -33,6 +33,7 @@ struct MenuState {
   std::string capture;                         // the live capture's status (F9); empty before the first
   bool capturing = false;
   std::string_view reloaded;                   // "reloaded kifs/march.comp", for a few seconds after
+  std::string remote;                          // remote play's status; empty without --remote
 };
 
 struct MenuChoice {

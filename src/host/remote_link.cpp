@@ -99,3 +99,15 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
 }
 
 }  // namespace vitrine::host
+
+namespace vitrine::host {
+
+std::string RemoteLink::status() const {
+  const remote::RemoteStatsSnapshot stats = control_.stats();
+  const uint64_t ignored = stats.malformed + stats.refused + stats.rateLimited + stats.oversized + stats.unauthorised +
+                           stats.dropped + stats.connectionsRefused + refused_;
+  return fmt::format("remote {}: {} page{} open, {} messages, {} ignored", remote::formatBind(control_.bind()),
+                     control_.sockets(), control_.sockets() == 1 ? "" : "s", stats.accepted, ignored);
+}
+
+}  // namespace vitrine::host

@@ -36,6 +36,8 @@ class RemoteLink {
   std::optional<Pointer> pointer(VkExtent2D framebuffer);
   // Tells every page what the scene showing is and its values (a few times a second at most).
   void publish(SceneRenderer& renderer, bool now = false);
+  // For the menu: "remote 127.0.0.1:8730: 2 pages, 1520 messages, 3 ignored".
+  std::string status() const;
 
  private:
   remote::RemoteControl control_;
