@@ -21,6 +21,16 @@ const char* resultName(VkResult result) {
 }
 
 void throwVkError(VkResult result, const char* call, const char* file, int line) {
+  // The two a user can meet on a working install get a sentence that says what to do.
+  if (result == VK_ERROR_DEVICE_LOST)
+    throw Error(fmt::format("The GPU stopped responding (VK_ERROR_DEVICE_LOST: its driver reset it or it crashed). "
+                            "Start Vitrine again; if it happens again, a smaller --size or lower quality settings "
+                            "ask less of it.\n  at {}:{}: {}", file, line, call));
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw Error(fmt::format("Out of {} memory ({}). A smaller --size or lower quality settings (fewer strands, "
+                            "chains or samples) need less; other programs on the GPU may be holding it.\n  at {}:{}: {}",
+                            result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? "GPU" : "host", resultName(result), file, line,
+                            call));
   throw Error(fmt::format("Vulkan call failed with {} at {}:{}\n  {}", resultName(result), file, line, call));
 }
 

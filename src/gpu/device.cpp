@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "gpu/check.h"
+#include "gpu/fault_injection.h"
 #include "gpu/sync_objects.h"
 
 namespace vitrine::gpu {
@@ -370,7 +371,8 @@ uint64_t Device::submit(const Submit& work) const {
   info.pCommandBufferInfos = &commands;
   info.signalSemaphoreInfoCount = static_cast<uint32_t>(work.signal.size() + 1);
   info.pSignalSemaphoreInfos = signal.data();
-  VK_CHECK(vkQueueSubmit2(queue_, 1, &info, VK_NULL_HANDLE));
+  VK_CHECK(injectedFault(Fault::DeviceLost) != VK_SUCCESS ? VK_ERROR_DEVICE_LOST
+                                                         : vkQueueSubmit2(queue_, 1, &info, VK_NULL_HANDLE));
   return ++submitted_;
 }
 
@@ -386,8 +388,10 @@ void Device::wait(uint64_t serial) const {
   VK_CHECK(vkWaitSemaphores(device_, &info, UINT64_MAX));
 }
 
+// Called by destructors, so it never throws: a lost device has nothing left running, and its
+// objects may still be destroyed.
 void Device::drainRetired() const {
-  waitIdle();
+  vkDeviceWaitIdle(device_);
   graveyard_.clear();
 }
 
@@ -406,7 +410,8 @@ Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements
       if ((memory_.memoryTypes[i].propertyFlags & flags) != flags) continue;
       VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, nullptr, requirements.size, i};
       VkDeviceMemory memory;
-      VK_CHECK(vkAllocateMemory(device_, &info, nullptr, &memory));
+      VK_CHECK(injectedFault(Fault::OutOfMemory) != VK_SUCCESS ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                                               : vkAllocateMemory(device_, &info, nullptr, &memory));
       return Unique<VkDeviceMemory>(device_, memory);
     }
   }

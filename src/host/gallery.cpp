@@ -149,8 +149,8 @@ class Gallery {
   std::vector<gpu::PassTime> passes_;
   std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
   Clock::time_point reloadNoted_{};
-  std::string screenshotNote_;  // where the last screenshot went, shown for kNoteSeconds
-  Clock::time_point screenshotNoted_{};
+  std::string note_;  // where the last screenshot went, a key with no scene: shown for kNoteSeconds
+  Clock::time_point noted_{};
   ParamPanel panel_;
   std::string panelError_;  // why the last edit was refused
 
@@ -298,7 +298,12 @@ void Gallery::handleKeys() {
         nextScene_ = &renderer_->info();
         break;
       default:
-        if (const SceneInfo* info = sceneForKey(key)) nextScene_ = info;
+        if (const SceneInfo* info = sceneForKey(key)) {
+          nextScene_ = info;
+        } else if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) {  // the footer's range says which exist
+          note_ = fmt::format("no scene on key {}: the scenes are on {}", key - GLFW_KEY_0, sceneKeyRange());
+          noted_ = Clock::now();
+        }
     }
   }
   keys_.insert(keys_.end(), keys.begin(), keys.end());
@@ -453,10 +458,10 @@ void Gallery::collect(uint32_t slot) {
   for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
   capture_.collect(slot);
   if (auto note = screenshots_.collect(slot)) {
-    screenshotNote_ = std::move(*note);
-    screenshotNoted_ = Clock::now();
+    note_ = std::move(*note);
+    noted_ = Clock::now();
   }
-  if (!screenshotNote_.empty() && Clock::now() - screenshotNoted_ > kNoteSeconds) screenshotNote_.clear();
+  if (!note_.empty() && Clock::now() - noted_ > kNoteSeconds) note_.clear();
 }
 
 void Gallery::simulate() {
@@ -509,7 +514,7 @@ void Gallery::showMenu() {
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
   const MenuChoice choice =
       drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
-                         screenshotNote_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
+                         note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
                          helpShown_, capture_.status(), capture_.active(), reloadNote_,
                          remote_ ? remote_->status() : std::string()});
   vsync_ = choice.vsync;

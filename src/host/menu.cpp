@@ -146,7 +146,7 @@ MenuChoice drawMenu(const MenuState& state) {
       if (state.capturing) ImGui::TextColored(kErrorRed, "REC");
       drawWrapped(state.capture);
     }
-    if (!state.screenshot.empty()) drawWrapped(state.screenshot);
+    if (!state.note.empty()) drawWrapped(state.note);
     if (!state.remote.empty()) ImGui::TextDisabled("%s", state.remote.c_str());
     if (!state.missingAssets.empty() && ImGui::CollapsingHeader("Missing assets")) {
       ImGui::PushStyleColor(ImGuiCol_Text, kWarningAmber);

@@ -23,7 +23,7 @@ struct MenuState {
   std::span<const gpu::PassTime> passes;  // the last finished frame's
   bool vsync = true;
   std::string_view shaderError;  // the hot-reload compile log; empty when all shaders compile
-  std::string_view screenshot;   // where the last screenshot went
+  std::string_view note;         // where the last screenshot went, a key with no scene
   std::span<const std::string> missingAssets;  // what set-up could not fetch, and what stands in
   ImFont* titleFont = nullptr;                 // for scene names; null: the body font
   ParamPanel* panel = nullptr;                 // the scene's parameters, from its schema

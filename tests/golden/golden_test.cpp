@@ -70,6 +70,8 @@ std::vector<GoldenCase> loadCases(bool mutations) {
         c.thresholds.failFraction = std::stod(parameter.second);
       else if (parameter.first == "hard_limit")
         c.thresholds.hardLimit = std::stof(parameter.second);
+      else if (parameter.first == "lowpass")  // the second, block-averaged comparison (cases.txt)
+        c.thresholds.block = std::stoi(parameter.second);
       else
         c.config.parameters.push_back(std::move(parameter));
     }

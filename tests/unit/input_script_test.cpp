@@ -141,8 +141,8 @@ class InputScriptFiles : public ::testing::Test {
 
 TEST_F(InputScriptFiles, LoadNamesTheFileInErrors) {
   const auto path = write("bad.txt", "0 down\n0.1 jump\n");
-  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, leave, down, up, wheel, key, hold or "
-                                 "release");
+  EXPECT_EQ(loadError(path), path.string() + ":2: unknown verb 'jump'; expected move, leave, down, up, wheel, key, hold, "
+                                 "release or action");
   EXPECT_EQ(loadInputScript(write("good.txt", "0 down\n")).events.size(), 1u);
 }
 

@@ -1,7 +1,7 @@
 #include "maths/color.h"
 #include "maths/hash.h"
 #include "scenes/kifs/kifs_math.h"
-#include "scenes/kifs/quality.h"
+#include "scenes/quality.h"
 
 #include <gtest/gtest.h>
 
@@ -129,15 +129,15 @@ TEST(Vignette, QuadraticFalloff) {
 }
 
 TEST(AutoTier, StepsDownWhenSlowAndBackUpWhenFast) {
-  kifs::AutoTier tier;
+  AutoTier tier;
   for (int i = 0; i < 8; ++i) tier.observe(20.0, 8.0);
-  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+  EXPECT_EQ(tier.current(), Tier::Medium);
   for (int i = 0; i < 8; ++i) tier.observe(20.0, 8.0);
-  EXPECT_EQ(tier.current(), kifs::Tier::Low);
+  EXPECT_EQ(tier.current(), Tier::Low);
   for (int i = 0; i < 60; ++i) tier.observe(1.0, 8.0);
-  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+  EXPECT_EQ(tier.current(), Tier::Medium);
   for (int i = 0; i < 30; ++i) tier.observe(8.0, 8.0);  // on target: holds
-  EXPECT_EQ(tier.current(), kifs::Tier::Medium);
+  EXPECT_EQ(tier.current(), Tier::Medium);
 }
 
 }  // namespace

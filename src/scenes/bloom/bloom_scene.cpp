@@ -80,6 +80,7 @@ class BloomScene final : public Scene {
       : device_(context.device),
         resources_(context.resources),
         events_(context.events),
+        quality_(context),
         audio_(context.audio),
         diffuse_(context.programs, "bloom/diffuse.comp",
                  {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(DiffusePush)}),
@@ -113,6 +114,7 @@ class BloomScene final : public Scene {
   }
 
   void update(const FrameInput& input) override {
+  quality_.update(settings_.tier, settings_.targetMs, input);
     time_ = input.time;
     // The drone is always under the piece; the panel's volume and mute reach the mix as they change.
     if (!droning_) audio_.drone(time_, droning_ = true);
@@ -164,6 +166,7 @@ class BloomScene final : public Scene {
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  float renderScale() const override { return tierScale(quality_.active()); }
 
   std::string checkParameters() const override {
     const auto t = thresholds();
@@ -378,6 +381,7 @@ class BloomScene final : public Scene {
   const gpu::Device& device_;
   gpu::FrameResources& resources_;
   SceneEvents events_;
+  AdaptiveQuality quality_;
   audio::AudioSink& audio_;
   bool droning_ = false;
   float appliedGain_ = -1.0f;

@@ -57,6 +57,7 @@ const params::Schema& schema() {
     s.preset({"fine", "A 160^3 lattice with more samples.", {{"lattice", "160"}, {"samples", "96"}}});
     s.preset({"quick", "A 64^3 lattice, fast phases: for slow devices.",
               {{"lattice", "64"}, {"source", "3"}, {"samples", "40"}}});
+    addQualityParams<S>(s, "Render scale of the raymarch and the word", 16.0f);
     return s;
   }();
   return table;

@@ -1,6 +1,7 @@
 #pragma once
 // Everything the bloom panel, --set and the settings file can change, declared once (params/schema.h),
 // with the write-up's numbers as defaults.
+#include "scenes/quality.h"
 #include "params/schema.h"
 
 namespace vitrine::bloom {
@@ -28,6 +29,8 @@ struct Settings {
   float reverbWet = 0.28f;         // how far the plate reverb opens at the climax
   float fill = 0.0f;               // transient: start (or restart) with the crystal at this concentration
   bool vent = false;               // transient action: empty the lattice now
+  Tier tier = Tier::Auto;  // render scale: high 1, medium 0.7, low 0.5 (scenes/quality.h)
+  float targetMs = 16.0f;
 };
 
 const params::Schema& schema();

@@ -102,6 +102,7 @@ class GlassScene final : public Scene {
  public:
   explicit GlassScene(const SceneContext& context)
       : device_(context.device),
+        quality_(context),
         resources_(context.resources),
         assets_(context.assets),
         programs_(context.programs),
@@ -156,6 +157,7 @@ class GlassScene final : public Scene {
   void update(const FrameInput& input) override;
   void record(const FrameContext& frame) override;
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  float renderScale() const override { return tierScale(quality_.active()); }
   void drawPanel() override;
 
  private:
@@ -213,6 +215,7 @@ class GlassScene final : public Scene {
   void recordSpectral(const FrameContext& frame, const gpu::StreamSlice& block);
 
   const gpu::Device& device_;
+  AdaptiveQuality quality_;
   gpu::FrameResources& resources_;
   const Assets& assets_;
   gpu::ProgramLibrary& programs_;
@@ -376,6 +379,7 @@ void GlassScene::handleDrops(const FrameInput& input) {
 }
 
 void GlassScene::update(const FrameInput& input) {
+  quality_.update(settings_.tier, settings_.targetMs, input);
   seed_ = input.seed;
   frame_ = input.frame;
   previousTime_ = time_;

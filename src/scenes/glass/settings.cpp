@@ -172,6 +172,7 @@ const params::Schema& schema() {
            {{"shape", "diamond"}, {"n", "16"}, {"ior", "2.418"}, {"abbe", "55"}, {"strength", "0.2"},
             {"diamond_size", "400"}, {"diamond_view", "free"}, {"bounces", "6"}, {"environment", "on"},
             {"panorama", "studio"}, {"exposure", "0.75"}, {"env_rotation", "-1.0995"}});
+    addQualityParams<S>(s, "Render scale of the glass and its history", 16.0f);
     return s;
   }();
   return table;

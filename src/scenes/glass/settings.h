@@ -1,6 +1,7 @@
 #pragma once
 // Everything the glass panel, --set, presets and the settings file can change, declared once
 // (params/schema.h), with the original's ranges and defaults (its "Rotating cube" opening scene).
+#include "scenes/quality.h"
 #include "params/schema.h"
 #include "scenes/glass/shapes.h"
 
@@ -55,6 +56,8 @@ struct Settings {
   SpectralPass pass = SpectralPass::Compute;
 
   bool operator==(const Settings&) const = default;
+  Tier tier = Tier::Auto;  // render scale: high 1, medium 0.7, low 0.5 (scenes/quality.h)
+  float targetMs = 16.0f;
 };
 
 int sampleCount(const Settings& settings);

@@ -2,7 +2,7 @@
 #include "scenes/kifs/kifs_scene.h"
 
 #include "scenes/kifs/kifs_math.h"
-#include "scenes/kifs/quality.h"
+#include "scenes/quality.h"
 
 #include <imgui.h>
 
@@ -15,9 +15,23 @@ const std::vector<std::string> kStageNames = {
     "1 glowing sphere",  "2 under-stepped march", "3 hard union",      "4 smooth union",          "5 domain warp",
     "6 fold + scale",    "7 orbit trap",          "8 ACES + vignette", "9 jitter + grain (final)"};
 
+// What a tier changes here: the march budget and the render scale.
+struct TierSettings {
+  int marchSteps;
+  float renderScale;
+};
+
+TierSettings settingsFor(Tier tier) {
+  switch (tier) {
+    case Tier::Medium: return {56, 0.66f};
+    case Tier::Low: return {40, 0.5f};
+    default: return {90, 1.0f};
+  }
+}
+
 struct Settings {
   int step = kStepCount;
-  Tier tier = Tier::High;
+  Tier tier = Tier::Auto;
   float targetMs = 8.0f;
   float dragX = 0.0f, dragY = 0.0f;  // accumulated cursor drag, in normalised output units
 };
@@ -27,11 +41,7 @@ const params::Schema& schema() {
     auto s = params::Schema::forStruct<Settings>();
     s.add(params::intParam<Settings>({"step", "stage", "How far the write-up's construction has got, 1 to 9 (9: the "
                                       "final piece)."}, &Settings::step, 1, kStepCount));
-    s.add(params::choiceParam<Settings>({"tier", "quality", "March budget and render scale; auto holds target_ms."},
-                                        &Settings::tier, {"auto", "high", "medium", "low"}));
-    s.add(params::floatParam<Settings>({"target_ms", "target GPU ms", "The frame time the auto tier holds.", "",
-                                        params::kLogarithmic},
-                                       &Settings::targetMs, 1.0, 100.0));
+    addQualityParams<Settings>(s, "March budget and render scale", 8.0f);
     s.add(params::floatParam<Settings>({"drag_x", "drag x", "Horizontal cursor drag turning the fractal.", "view",
                                         params::kTransient},
                                        &Settings::dragX, -100.0, 100.0));
@@ -58,7 +68,7 @@ struct Push {
 class KifsScene final : public Scene {
  public:
   explicit KifsScene(const SceneContext& context)
-      : events_(context.events),
+      : quality_(context),
         march_(context.programs, "kifs/kifs.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(Push)}) {}
 
   void update(const FrameInput& input) override {
@@ -69,11 +79,7 @@ class KifsScene final : public Scene {
     const float tumble = input.reducedMotion ? 0.0f : float(input.time);
     angles_ = tumble * kTumbleRate + glm::vec2(settings_.dragX, settings_.dragY) * kDragToAngle;
     reducedMotion_ = input.reducedMotion;
-    if (settings_.tier != Tier::Auto) return;
-    const Tier before = active_;
-    active_ = autoTier_.observe(input.lastGpuMs, settings_.targetMs);
-    if (active_ != before)
-      events_.emit(input.time, {"tier", {{"from", tierName(before)}, {"to", tierName(active_)}, {"gpu_ms", input.lastGpuMs}}});
+    quality_.update(settings_.tier, settings_.targetMs, input);
   }
 
   void record(const FrameContext& frame) override {
@@ -96,23 +102,18 @@ class KifsScene final : public Scene {
 
   void drawPanel() override {
     ImGui::TextUnformatted(kStageNames[size_t(settings_.step - 1)].c_str());
-    if (settings_.tier == Tier::Auto) ImGui::Text("auto tier: %s", tierName(active_).c_str());
     const auto tier = settingsFor(activeTier());
-    ImGui::Text("%d march steps, render scale %.2f", tier.marchSteps, tier.renderScale);
+    ImGui::Text("%s: %d march steps, render scale %.2f", quality_.describe().c_str(), tier.marchSteps, tier.renderScale);
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
 
  private:
-  Tier activeTier() const { return settings_.tier == Tier::Auto ? active_ : settings_.tier; }
+  Tier activeTier() const { return quality_.active(); }
 
-  static std::string tierName(Tier tier) { return schema().find("tier")->choices[size_t(tier)]; }
-
-  SceneEvents events_;
+  AdaptiveQuality quality_;
   gpu::ComputeProgram march_;
   Settings settings_;
-  Tier active_ = Tier::High;
-  AutoTier autoTier_;
   glm::vec2 angles_{0.0f};
   bool reducedMotion_ = false;
 };

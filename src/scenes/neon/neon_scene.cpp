@@ -70,6 +70,7 @@ class NeonScene final : public Scene {
       : device_(context.device),
         resources_(context.resources),
         events_(context.events),
+        quality_(context),
         mode_(context.realtime ? EngineMode::Worker : EngineMode::LockStep),
         chains_(context.programs, "neon/chains.comp",
                 {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
@@ -120,6 +121,7 @@ class NeonScene final : public Scene {
   void update(const FrameInput& input) override;
   void record(const FrameContext& frame) override;
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  float renderScale() const override { return tierScale(quality_.active()); }
   void drawPanel() override;
 
  private:
@@ -133,6 +135,7 @@ class NeonScene final : public Scene {
   const gpu::Device& device_;
   gpu::FrameResources& resources_;
   SceneEvents events_;
+  AdaptiveQuality quality_;
   EngineMode mode_;
   gpu::ComputeProgram chains_;
   gpu::ComputeProgram facade_;
@@ -231,6 +234,7 @@ void NeonScene::autopilot(const FrameInput& input) {
 }
 
 void NeonScene::update(const FrameInput& input) {
+  quality_.update(settings_.tier, settings_.targetMs, input);
   time_ = input.time;
   dt_ = input.dt;
   if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) rebuild();

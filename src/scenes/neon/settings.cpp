@@ -72,6 +72,7 @@ const params::Schema& schema() {
     s.preset({"dense", "4096 chains of 32.", {{"chains", "4096"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",
               {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
+    addQualityParams<S>(s, "Render scale of the facade, tubes and post passes", 16.0f);
     return s;
   }();
   return table;

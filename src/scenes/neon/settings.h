@@ -1,6 +1,7 @@
 #pragma once
 // Everything the neon panel, --set, presets and the settings file can change, declared once
 // (params/schema.h). Lengths are metres in front of a facade about 20 m wide.
+#include "scenes/quality.h"
 #include "params/schema.h"
 
 #include <glm/vec3.hpp>
@@ -40,6 +41,8 @@ struct Settings {
   Stage stage = Stage::Final;
 
   bool operator==(const Settings&) const = default;
+  Tier tier = Tier::Auto;  // render scale: high 1, medium 0.7, low 0.5 (scenes/quality.h)
+  float targetMs = 16.0f;
 };
 
 const params::Schema& schema();

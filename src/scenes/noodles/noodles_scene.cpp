@@ -25,6 +25,7 @@ class NoodlesScene final : public Scene {
   explicit NoodlesScene(const SceneContext& context)
       : device_(context.device),
         events_(context.events),
+        quality_(context),
         budget_(deviceBudget(context.device)),
         integrate_(context.programs),
         tubes_(context) {
@@ -37,6 +38,7 @@ class NoodlesScene final : public Scene {
     else writhe_ += (input.time - *lastTime_) * settings_.speed;
     lastTime_ = input.time;
     reducedMotion_ = input.reducedMotion;
+    quality_.update(settings_.tier, settings_.targetMs, input);
     if (settings_.orbit != pinned_) {
       pinned_ = settings_.orbit;
       if (pinned_.pinned) camera_.pin({pinned_.azimuth, pinned_.elevation, pinned_.distance});
@@ -66,6 +68,7 @@ class NoodlesScene final : public Scene {
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  float renderScale() const override { return tierScale(quality_.active()); }
 
   // Refuses strands the device cannot hold, judged on the final grid and segment count together.
   std::string checkParameters() const override {
@@ -83,7 +86,7 @@ class NoodlesScene final : public Scene {
   // (Re)allocates the node buffer when grid or segments changed; the old one is retired, since
   // frames in flight may still read it. Nothing is allocated in frames where they did not change.
   void ensureStrands() {
-    const glm::uvec3 grid = settings_.grid;
+    const glm::uvec3 grid = seedGrid();
     const uint32_t segments = uint32_t(settings_.segments);
     if (nodes_ && layout_.grid == grid && layout_.segments == segments) return;
     StrandLayout layout = planStrands(grid, segments, budget_);
@@ -98,13 +101,25 @@ class NoodlesScene final : public Scene {
     StrandSettings s;
     s.grid = layout_.grid;
     s.segments = layout_.segments;
-    s.spacing = settings_.spacing;
+    s.spacing = seedSpacing();
     s.step = settings_.step;
     s.field = fieldAtTime(settings_.field, settings_.noiseScale, settings_.lift, reducedMotion_ ? 0.0 : writhe_);
     s.integrator = settings_.integrator;
     s.tangent = settings_.tangent;
     s.frames = settings_.frames;
     return s;
+  }
+
+  // The low tier seeds every other strand along each axis, spaced out to span the same nest: an
+  // eighth of the strands, the same shape.
+  glm::uvec3 seedGrid() const {
+    return quality_.active() == Tier::Low ? (settings_.grid + 1u) / 2u : settings_.grid;
+  }
+  float seedSpacing() const {
+    if (quality_.active() != Tier::Low) return settings_.spacing;
+    const uint32_t longest = std::max(settings_.grid.x, std::max(settings_.grid.y, settings_.grid.z));
+    const uint32_t seeded = (longest + 1) / 2;
+    return seeded > 1 ? settings_.spacing * float(longest - 1) / float(seeded - 1) : settings_.spacing;
   }
 
   // Roughly how far the strands reach from the nest centre: half the seed grid plus most of a
@@ -126,11 +141,12 @@ class NoodlesScene final : public Scene {
     const CameraPose pose = camera_.pose();
     const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
     return {reverseZPerspective(kFieldOfViewY, aspect, kNearPlane) * lookAtZUp(pose.eye, pose.target), pose.eye,
-            settings_.radius, settings_.colour, settings_.stripe, settings_.msaa};
+            settings_.radius, settings_.colour, settings_.stripe, settings_.msaa && quality_.active() == Tier::High};
   }
 
   const gpu::Device& device_;
   SceneEvents events_;
+  AdaptiveQuality quality_;
   const DeviceBudget budget_;
   NoodleSettings settings_;
   StrandLayout layout_;
@@ -147,7 +163,7 @@ class NoodlesScene final : public Scene {
 };
 
 void NoodlesScene::drawPanel() {
-  ImGui::Text("%u strands x %u segments = %llu segments", layout_.strands, layout_.segments,
+  ImGui::Text("%s; %u strands x %u segments = %llu segments", quality_.describe().c_str(), layout_.strands, layout_.segments,
               static_cast<unsigned long long>(layout_.segmentCount));
   ImGui::Text("node buffer %s in %zu binding%s", describeBytes(layout_.bytes).c_str(), layout_.chunks.size(),
               layout_.chunks.size() == 1 ? "" : "s");

@@ -132,6 +132,7 @@ const params::Schema& schema() {
     s.preset({"rising", "Strands carried upwards, striped, with rotation-minimising frames.",
               {{"lift", "2"}, {"stripe", "on"}, {"tangent", "normalized"}, {"frames", "rmf"}}});
     s.preset({"smooth", "RK4 along the unit direction.", {{"integrator", "rk4"}, {"tangent", "normalized"}}});
+    addQualityParams<S>(s, "Render scale, MSAA and (low) strand density", 16.0f);
     return s;
   }();
   return table;

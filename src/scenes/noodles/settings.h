@@ -2,6 +2,7 @@
 // Everything the noodles panel, "--set key=value" and the settings file can change, with the
 // write-up's numbers as defaults where it has them. Parsing checks syntax and range only; whether the
 // strands fit on the device is the scene's cross-parameter check (strand_layout.h).
+#include "scenes/quality.h"
 #include "scenes/noodles/field.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
@@ -46,6 +47,8 @@ struct NoodleSettings {
   bool stripe = false;  // paint one side of every tube, so the frames' twist shows
   bool msaa = true;
   OrbitPin orbit;
+  Tier tier = Tier::Auto;  // high: as set; medium: 0.7 scale, no MSAA; low: also an eighth of the strands
+  float targetMs = 16.0f;
 };
 
 // Every parameter of the scene, declared once (see params/schema.h).

@@ -1,0 +1,43 @@
+#include "gpu/fault_injection.h"
+
+#include <atomic>
+#include <charconv>
+#include <cstdlib>
+#include <string_view>
+
+namespace vitrine::gpu {
+namespace {
+
+struct Plan {
+  uint64_t at[2] = {0, 0};  // per Fault: the call that fails, 1-based; 0 never
+};
+
+Plan readPlan() {
+  Plan plan;
+  const char* text = std::getenv("VITRINE_INJECT");
+  for (std::string_view rest = text ? text : ""; !rest.empty();) {
+    const size_t comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    const size_t colon = item.find(':');
+    if (colon == std::string_view::npos) continue;
+    uint64_t n = 0;
+    const std::string_view number = item.substr(colon + 1);
+    std::from_chars(number.data(), number.data() + number.size(), n);
+    if (item.substr(0, colon) == "device-lost") plan.at[int(Fault::DeviceLost)] = n;
+    if (item.substr(0, colon) == "out-of-memory") plan.at[int(Fault::OutOfMemory)] = n;
+  }
+  return plan;
+}
+
+}  // namespace
+
+VkResult injectedFault(Fault fault) {
+  static const Plan plan = readPlan();
+  static std::atomic<uint64_t> calls[2];
+  const uint64_t at = plan.at[int(fault)];
+  if (at == 0 || calls[int(fault)].fetch_add(1) + 1 != at) return VK_SUCCESS;
+  return fault == Fault::DeviceLost ? VK_ERROR_DEVICE_LOST : VK_ERROR_OUT_OF_DEVICE_MEMORY;
+}
+
+}  // namespace vitrine::gpu

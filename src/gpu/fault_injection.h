@@ -1,0 +1,17 @@
+#pragma once
+// Failures a test can inject, to show what a user sees when the GPU goes away or runs out of memory
+// (VITRINE_INJECT in the environment; read once):
+//   device-lost:N     the Nth queue submission reports VK_ERROR_DEVICE_LOST
+//   out-of-memory:N   the Nth device memory allocation reports VK_ERROR_OUT_OF_DEVICE_MEMORY
+// Several are separated by commas. Each fires once per process, so a kiosk's restarted gallery runs
+// on, as it would after a driver reset.
+#include <vulkan/vulkan.h>
+
+namespace vitrine::gpu {
+
+enum class Fault { DeviceLost, OutOfMemory };
+
+// VK_SUCCESS, or the injected result when this call is the one that fails.
+VkResult injectedFault(Fault fault);
+
+}  // namespace vitrine::gpu
