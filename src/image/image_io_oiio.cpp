@@ -1,5 +1,6 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +11,19 @@
 #include "image/image_io.h"
 
 namespace vitrine {
+namespace {
+
+// An ImageBuf made from a file name reads through OpenImageIO's shared ImageCache, which knows a file by
+// its name and modification time in whole seconds: a file replaced under the same name within that
+// second was read with the old file's size and channels, writing past the pixel buffer (found by
+// fuzz/image_hdr and fuzz/image_exr). Forgetting what the cache knows of the name first makes every
+// read see the file as it is now.
+OIIO::ImageBuf openFresh(const std::filesystem::path& path) {
+  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(path.string()), true);
+  return OIIO::ImageBuf(path.string());
+}
+
+}  // namespace
 
 bool canWritePng() { return true; }
 
@@ -36,7 +50,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
 
 ImageRgba readImage(const std::filesystem::path& path) {
   checkExrFile(path);
-  OIIO::ImageBuf buffer(path.string());
+  OIIO::ImageBuf buffer = openFresh(path);
   if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     throw Error(fmt::format("Cannot read {}: {}", path.string(), buffer.geterror()));
   const auto& spec = buffer.spec();
@@ -56,7 +70,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
-  OIIO::ImageBuf source(path.string());
+  OIIO::ImageBuf source = openFresh(path);
   if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
     throw Error(fmt::format("Cannot read {}: {}", path.string(), source.geterror()));
   const OIIO::ImageSpec& spec = source.spec();

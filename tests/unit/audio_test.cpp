@@ -44,6 +44,12 @@ void* operator new(size_t bytes) {
   if (void* p = std::malloc(bytes ? bytes : 1)) return p;
   throw std::bad_alloc();
 }
+// The nothrow form too (std::stable_sort's buffer): else it comes from the runtime's own operator new
+// and is released by the free() below, which AddressSanitizer reports as alloc-dealloc-mismatch.
+void* operator new(size_t bytes, const std::nothrow_t&) noexcept {
+  ++gAllocations;
+  return std::malloc(bytes ? bytes : 1);
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, size_t) noexcept { std::free(p); }
 

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "support/temp_folder.h"
 #include <unistd.h>
 
@@ -118,6 +120,27 @@ TEST_F(ImageFiles, EmptyAndUnknownFilesAreNotExrs) {
   const auto text = folder_ / "notes.exr";
   std::ofstream(text) << "just some text";
   EXPECT_TRUE(contains(readError(text), "it is not an EXR")) << readError(text);
+}
+
+// OpenImageIO's shared cache once remembered a file by its name and modification second, so a picture
+// replaced under the same name was read with the old one's size, past the end of the pixels (found by
+// fuzzing). The pairs kept in tests/fuzz-regressions are copied in turn over one file; each read must
+// see the file as it is now (all three second files are 8 x 6).
+TEST_F(ImageFiles, AFileReplacedUnderTheSameNameIsReadAsItIsNow) {
+  const std::filesystem::path kept = VITRINE_FUZZ_REGRESSION_DIR;
+  for (const char* format : {"png", "hdr", "exr"}) {
+    const auto path = folder_ / fmt::format("backdrop.{}", format);
+    for (int i : {1, 2}) {
+      std::filesystem::copy_file(kept / fmt::format("image_{}/stale-cache-{}.{}", format, i, format), path,
+                                 std::filesystem::copy_options::overwrite_existing);
+      const Picture picture = readPicture(path, 2048);
+      if (i == 2) {
+        EXPECT_EQ(picture.width, 8u) << format;
+        EXPECT_EQ(picture.height, 6u) << format;
+      }
+      if (std::string_view(format) == "exr") EXPECT_EQ(readImage(path).width, i == 2 ? 8u : 7u);
+    }
+  }
 }
 
 TEST(ImageFormat, SniffsTheCommonFormats) {

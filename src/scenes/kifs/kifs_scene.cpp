@@ -2,6 +2,7 @@
 #include "scenes/kifs/kifs_scene.h"
 
 #include "scenes/kifs/kifs_math.h"
+#include "scenes/kifs/settings.h"
 #include "scenes/quality.h"
 
 #include <imgui.h>
@@ -27,32 +28,6 @@ TierSettings settingsFor(Tier tier) {
     case Tier::Low: return {40, 0.5f};
     default: return {90, 1.0f};
   }
-}
-
-struct Settings {
-  int step = kStepCount;
-  Tier tier = Tier::Auto;
-  float targetMs = 8.0f;
-  float dragX = 0.0f, dragY = 0.0f;  // accumulated cursor drag, in normalised output units
-};
-
-const params::Schema& schema() {
-  static const params::Schema table = [] {
-    auto s = params::Schema::forStruct<Settings>();
-    s.add(params::intParam<Settings>({"step", "stage", "How far the write-up's construction has got, 1 to 9 (9: the "
-                                      "final piece)."}, &Settings::step, 1, kStepCount));
-    addQualityParams<Settings>(s, "March budget and render scale", 8.0f);
-    s.add(params::floatParam<Settings>({"drag_x", "drag x", "Horizontal cursor drag turning the fractal.", "view",
-                                        params::kTransient},
-                                       &Settings::dragX, -100.0, 100.0));
-    s.add(params::floatParam<Settings>({"drag_y", "drag y", "Vertical cursor drag turning the fractal.", "view",
-                                        params::kTransient},
-                                       &Settings::dragY, -100.0, 100.0));
-    s.preset({"sphere", "The write-up's first step: one glowing sphere.", {{"step", "1"}}});
-    s.preset({"final", "The finished piece at high quality.", {{"step", "9"}, {"tier", "high"}}});
-    return s;
-  }();
-  return table;
 }
 
 struct Push {

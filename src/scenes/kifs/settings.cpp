@@ -1,0 +1,24 @@
+#include "scenes/kifs/settings.h"
+
+namespace vitrine::kifs {
+
+const params::Schema& schema() {
+  static const params::Schema table = [] {
+    auto s = params::Schema::forStruct<Settings>();
+    s.add(params::intParam<Settings>({"step", "stage", "How far the write-up's construction has got, 1 to 9 (9: the "
+                                      "final piece)."}, &Settings::step, 1, kStepCount));
+    addQualityParams<Settings>(s, "March budget and render scale", 8.0f);
+    s.add(params::floatParam<Settings>({"drag_x", "drag x", "Horizontal cursor drag turning the fractal.", "view",
+                                        params::kTransient},
+                                       &Settings::dragX, -100.0, 100.0));
+    s.add(params::floatParam<Settings>({"drag_y", "drag y", "Vertical cursor drag turning the fractal.", "view",
+                                        params::kTransient},
+                                       &Settings::dragY, -100.0, 100.0));
+    s.preset({"sphere", "The write-up's first step: one glowing sphere.", {{"step", "1"}}});
+    s.preset({"final", "The finished piece at high quality.", {{"step", "9"}, {"tier", "high"}}});
+    return s;
+  }();
+  return table;
+}
+
+}  // namespace vitrine::kifs
