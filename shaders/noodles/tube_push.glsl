@@ -4,6 +4,7 @@
 
 layout(push_constant) uniform Push {
   mat4 viewProjection;  // infinite reverse-Z
+  vec3 eye;
   float radius;
   uint firstStrand;   // the chunk's first strand
   uint chunkStrands;  // strands in this chunk

@@ -10,14 +10,12 @@
 #include "scenes/noodles/settings.h"
 #include "scenes/noodles/strand.h"
 #include "scenes/noodles/strand_layout.h"
-#include "scenes/noodles/tube_mesh.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -345,42 +343,6 @@ TEST(NoodlesPacking, SegmentCostsAtMostThirtyTwoBytes) {
   for (uint32_t segments : {1u, 2u, 8u, 64u, 4096u})
     EXPECT_LE(double(kNodeBytes) * (segments + 1) / segments, 32.0) << segments;
   EXPECT_EQ(nodeSlot(100, 7, 3), 307u);  // node-major inside a chunk
-}
-
-// --------------------------------------------------------------------------------------- the tube mesh
-
-// A straight tube along +z, rings as tube.vert builds them (corner 8 on corner 0): every triangle of
-// the shared index pattern must face outwards (counter-clockwise seen from outside), cover each side
-// of each segment once, and cut it along the old strip's diagonal (start corner c to end corner c+1).
-TEST(NoodlesTubeMesh, EverySideOnceFacingOutwardsWithTheStripDiagonal) {
-  const uint32_t segments = 5;
-  const std::vector<uint16_t> indices = tubeIndices(segments);
-  ASSERT_EQ(indices.size(), size_t(segments) * kTubeIndicesPerSegment);
-  auto vertex = [](uint32_t v) {
-    const uint32_t node = v / kRingVertices, corner = v % kRingVertices;
-    const float angle = float(corner % kTubeSides) * 2.0f * std::numbers::pi_v<float> / float(kTubeSides);
-    return glm::vec3(std::cos(angle), std::sin(angle), float(node));
-  };
-  std::vector<int> covered(segments * kTubeSides, 0);
-  for (size_t t = 0; t < indices.size(); t += 3) {
-    const glm::vec3 a = vertex(indices[t]), b = vertex(indices[t + 1]), c = vertex(indices[t + 2]);
-    const glm::vec3 centre = (a + b + c) / 3.0f;
-    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), glm::vec3(centre.x, centre.y, 0.0f)), 0.0f) << t / 3;
-    const uint32_t start = *std::min_element(&indices[t], &indices[t] + 3);
-    const uint32_t segment = start / kRingVertices, side = start % kRingVertices;
-    ASSERT_LT(side, kTubeSides);
-    ++covered[segment * kTubeSides + side];
-    // Both triangles of a side hold start corner c and end corner c + 1: the strip's diagonal.
-    const auto has = [&](uint32_t v) { return std::count(&indices[t], &indices[t] + 3, uint16_t(v)) == 1; };
-    EXPECT_TRUE(has(tubeVertex(segment, side)) && has(tubeVertex(segment + 1, side + 1))) << t / 3;
-  }
-  for (int n : covered) EXPECT_EQ(n, 2);  // two triangles a side
-  EXPECT_EQ(*std::max_element(indices.begin(), indices.end()), tubeVertex(segments, kTubeSides));
-}
-
-TEST(NoodlesTubeMesh, TheLongestStrandFitsSixteenBitIndices) {
-  EXPECT_NO_THROW(tubeIndices(4096));  // the segments parameter's maximum
-  EXPECT_THROW(tubeIndices(8000), Error);
 }
 
 // --------------------------------------------------------------------------------------- the plan

@@ -125,7 +125,8 @@ class NoodlesScene final : public Scene {
   TubeView tubeView(VkExtent2D extent) const {
     const CameraPose pose = camera_.pose();
     const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
-    return {reverseZPerspective(kFieldOfViewY, aspect, kNearPlane) * lookAtZUp(pose.eye, pose.target), settings_.radius, settings_.colour, settings_.stripe, settings_.msaa};
+    return {reverseZPerspective(kFieldOfViewY, aspect, kNearPlane) * lookAtZUp(pose.eye, pose.target), pose.eye,
+            settings_.radius, settings_.colour, settings_.stripe, settings_.msaa};
   }
 
   const gpu::Device& device_;

@@ -1,10 +1,7 @@
 #include "scenes/noodles/tube_pass.h"
 
-#include "scenes/noodles/tube_mesh.h"
 
 #include <cstddef>
-#include <span>
-#include <vector>
 
 namespace vitrine::noodles {
 namespace {
@@ -12,6 +9,7 @@ namespace {
 // Mirrors shaders/noodles/tube_push.glsl.
 struct TubePush {
   glm::mat4 viewProjection;
+  glm::vec3 eye;
   float radius;
   uint32_t firstStrand;
   uint32_t chunkStrands;
@@ -20,7 +18,7 @@ struct TubePush {
   uint32_t segments;
   uint32_t stripe;
 };
-static_assert(offsetof(TubePush, radius) == 64 && offsetof(TubePush, firstStrand) == 68 && sizeof(TubePush) == 92);
+static_assert(offsetof(TubePush, eye) == 64 && offsetof(TubePush, firstStrand) == 80 && sizeof(TubePush) == 104);
 
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // the target's
@@ -32,13 +30,10 @@ gpu::GraphicsState tubeState(VkSampleCountFlagBits samples) {
   state.colorFormats = {kColourFormat};
   state.depthFormat = kDepthFormat;
   state.samples = samples;
-  state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
   state.cull = VK_CULL_MODE_BACK_BIT;  // the tubes are closed as seen from outside
   return state;
 }
-
-// Read by the draw's index fetch (gpu::use names no such buffer use yet).
-constexpr gpu::BufferUse kIndexRead{VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT, VK_ACCESS_2_INDEX_READ_BIT};
 
 const gpu::ProgramLayout kTubeLayout{{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, sizeof(TubePush)};
 
@@ -65,25 +60,11 @@ gpu::ImageDecl colourDecl(VkSampleCountFlagBits samples) {
 }  // namespace
 
 TubePass::TubePass(const SceneContext& context)
-    : device_(context.device),
-      resources_(context.resources),
+    : resources_(context.resources),
       single_(context.programs, tubeState(VK_SAMPLE_COUNT_1_BIT), kTubeLayout),
       multisampled_(context.programs, tubeState(VK_SAMPLE_COUNT_4_BIT), kTubeLayout),
       depth_(resources_.declare(depthDecl(samples_))),
       colour_(resources_.declare(colourDecl(samples_))) {}
-
-// The index buffer depends only on the segment count; it is rebuilt (and the old one retired behind
-// the frames still drawing with it) when that changes.
-void TubePass::ensureIndices(const FrameContext& frame, uint32_t segments) {
-  if (indices_ && indexedSegments_ == segments) return;
-  const std::vector<uint16_t> indices = tubeIndices(segments);
-  const std::span<const std::byte> bytes = std::as_bytes(std::span(indices));
-  if (indices_) device_.retire(std::move(indices_));
-  indices_ = gpu::Buffer(device_, bytes.size(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                         gpu::MemoryUse::Device, "noodles tube indices");
-  frame.upload(indices_, 0, bytes, kIndexRead);
-  indexedSegments_ = segments;
-}
 
 void TubePass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
   const VkSampleCountFlagBits samples = view.msaa ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
@@ -92,7 +73,6 @@ void TubePass::record(const FrameContext& frame, const StrandLayout& layout, VkB
     resources_.redeclare(depth_, depthDecl(samples));
     resources_.redeclare(colour_, colourDecl(samples));
   }
-  ensureIndices(frame, layout.segments);  // outside the rendering scope: it may copy
   const VkClearColorValue background{{kBackground.r, kBackground.g, kBackground.b, 1.0f}};
   gpu::RenderingDesc desc;
   if (view.msaa)  // draw multisampled, average into the target, keep nothing else
@@ -104,16 +84,14 @@ void TubePass::record(const FrameContext& frame, const StrandLayout& layout, VkB
 
   const gpu::GraphicsProgram& program = view.msaa ? multisampled_ : single_;
   program.bind(frame.cmd);
-  vkCmdBindIndexBuffer(frame.cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT16);
-  const uint32_t indexCount = layout.segments * kTubeIndicesPerSegment;
-  TubePush push{view.viewProjection, view.radius, 0, 0, layout.strands, uint32_t(view.colouring),
+  TubePush push{view.viewProjection, view.eye, view.radius, 0, 0, layout.strands, uint32_t(view.colouring),
                 layout.segments, view.stripe ? 1u : 0u};
   for (const StrandChunk& chunk : layout.chunks) {
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
     program.push(frame.cmd, gpu::Bindings().storageBuffer(nodes, chunk.offset, chunk.bytes));
     program.constants(frame.cmd, push);
-    vkCmdDrawIndexed(frame.cmd, indexCount, chunk.strandCount, 0, 0, 0);  // one instance per strand
+    vkCmdDraw(frame.cmd, kTubeStripVertices, chunk.strandCount * layout.segments, 0, 0);
   }
 }
 

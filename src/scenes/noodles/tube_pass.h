@@ -1,6 +1,6 @@
 #pragma once
-// The render pass that draws every strand as one instance of an 8-sided tube (tube_mesh.h): reverse-Z
-// depth, optional 4x MSAA resolved into the scene's target. Its depth and multisampled colour images are declared
+// The render pass that draws every segment as an instanced 8-sided tube: reverse-Z depth, optional
+// 4x MSAA resolved into the scene's target. Its depth and multisampled colour images are declared
 // with the host at the target's size; only a change of sample count redeclares them.
 #include "gpu/program.h"
 #include "gpu/resources.h"
@@ -14,12 +14,14 @@ namespace vitrine::noodles {
 
 struct TubeView {
   glm::mat4 viewProjection;
+  glm::vec3 eye;
   float radius;
   Colouring colouring;
   bool stripe;
   bool msaa;
 };
 
+inline constexpr uint32_t kTubeStripVertices = 16;  // 8 sides: two rings of 8, one side left out
 inline constexpr glm::vec3 kBackground{0.01f, 0.01f, 0.014f};  // the write-up's clear colour, linear
 
 class TubePass {
@@ -28,17 +30,12 @@ class TubePass {
   void record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view);
 
  private:
-  void ensureIndices(const FrameContext& frame, uint32_t segments);
-
-  const gpu::Device& device_;
   gpu::FrameResources& resources_;
   gpu::GraphicsProgram single_;
   gpu::GraphicsProgram multisampled_;
   VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_4_BIT;
   gpu::ImageHandle depth_;
   gpu::ImageHandle colour_;  // multisampled; a 1x1 stand-in without MSAA
-  gpu::Buffer indices_;      // one strand's triangles (tubeIndices), shared by every instance
-  uint32_t indexedSegments_ = 0;
 };
 
 }  // namespace vitrine::noodles
