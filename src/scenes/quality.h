@@ -2,11 +2,10 @@
 // Quality tiers for every scene, and the automatic tier that holds a GPU frame-time target in the
 // gallery: step down after a run of slow frames, up after a longer run of fast ones. Each scene
 // declares the two parameters with addQualityParams and says what a tier means for it (a render scale,
-// a march budget, how many strands it draws). Headless, bench and record runs are reproducible, so
-// there "auto" is the high tier, whatever the frame times.
+// a march budget, how many strands it draws); AdaptiveQuality (scenes/adaptive_quality.h) picks the
+// tier in use. Plain C++: the settings files that include it need no GPU code.
 #include "params/schema.h"
 #include "params/schema_impl.h"
-#include "scenes/scene.h"
 
 #include <fmt/format.h>
 
@@ -50,34 +49,6 @@ class AutoTier {
  private:
   Tier current_ = Tier::High;
   uint32_t slow_ = 0, fast_ = 0;
-};
-
-// What a scene keeps: the tier in use, from its setting and, for auto in the gallery, the frame times.
-class AdaptiveQuality {
- public:
-  explicit AdaptiveQuality(const SceneContext& context) : events_(context.events), realtime_(context.realtime) {}
-
-  // Once per step with the scene's settings; reports a change of the automatic tier as a "tier" event.
-  void update(Tier setting, float targetMs, const FrameInput& input) {
-    setting_ = setting;
-    if (setting != Tier::Auto || !realtime_) return;
-    const Tier before = auto_.current();
-    if (const Tier now = auto_.observe(input.lastGpuMs, targetMs); now != before)
-      events_.emit(input.time, {"tier", {{"from", name(before)}, {"to", name(now)}, {"gpu_ms", input.lastGpuMs}}});
-  }
-  Tier active() const { return setting_ != Tier::Auto ? setting_ : realtime_ ? auto_.current() : Tier::High; }
-  // "auto: medium" or "high", for a scene's panel read-out.
-  std::string describe() const { return setting_ == Tier::Auto ? "auto: " + name(active()) : name(active()); }
-  static std::string name(Tier tier) {
-    static const char* names[] = {"auto", "high", "medium", "low"};
-    return names[int(tier)];
-  }
-
- private:
-  SceneEvents events_;
-  bool realtime_;
-  Tier setting_ = Tier::Auto;
-  AutoTier auto_;
 };
 
 // A render scale per tier, the common case: high 1, medium 0.7, low 0.5 (a quarter of the pixels).

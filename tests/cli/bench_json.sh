@@ -14,7 +14,7 @@ names = [p["name"] for p in scene["passes"]]
 assert "kifs march" in names and "present" in names, names
 assert data["size"] == [64, 36] and data["frames"] == 5, data
 # Every parameter of the scene, typed, from its schema: the --set value and the defaults.
-assert scene["parameters"]["step"] == 4 and scene["parameters"]["tier"] == "high", scene["parameters"]
+assert scene["parameters"]["step"] == 4 and scene["parameters"]["tier"] == "auto", scene["parameters"]
 assert scene["parameters"]["target_ms"] == 8, scene["parameters"]
 print("bench json ok:", names)
 PY

@@ -119,7 +119,9 @@ TEST(InputScript, RefusesMalformedLinesNamingFileAndLine) {
 class InputScriptFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = std::filesystem::path(::testing::TempDir()) / "vitrine_input_script_test";
+    // One folder per test: ctest runs this fixture's tests side by side, and TearDown removes it.
+    folder_ = std::filesystem::path(::testing::TempDir()) /
+              (std::string("vitrine_input_script_test_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(folder_);
   }
   void TearDown() override { std::filesystem::remove_all(folder_); }

@@ -4,6 +4,7 @@
 // thresholds. The phases are read from the lattice itself (statistics reduced on the GPU, read back
 // a few frames later, never a stall) and reported as scene events.
 #include "scenes/bloom/bloom_scene.h"
+#include "scenes/adaptive_quality.h"
 
 #include "core/error.h"
 #include "gpu/readback_ring.h"

@@ -4,6 +4,7 @@
 // when the world stops, reprojected from the previous frame's rotations), and a compute post pass
 // applies FXAA and the tone map. Optics, shapes and the diamond live in plain C++ the shaders mirror.
 #include "scenes/glass/glass_scene.h"
+#include "scenes/adaptive_quality.h"
 
 #include "core/error.h"
 #include "scenes/glass/backgrounds.h"

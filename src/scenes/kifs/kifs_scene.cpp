@@ -1,5 +1,6 @@
 // kifs: the volumetric KIFS fractal of seed 003, rebuilt stage by stage in one compute pass.
 #include "scenes/kifs/kifs_scene.h"
+#include "scenes/adaptive_quality.h"
 
 #include "scenes/kifs/kifs_math.h"
 #include "scenes/kifs/settings.h"

@@ -6,6 +6,7 @@
 // target that a mip-chain bloom blurs; depth of field, the tint, vignette, grain, aberration and the
 // ground's mirror are compute passes.
 #include "scenes/neon/neon_scene.h"
+#include "scenes/adaptive_quality.h"
 
 #include "scenes/neon/camera.h"
 #include "scenes/neon/chains.h"

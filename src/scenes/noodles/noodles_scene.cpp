@@ -1,6 +1,7 @@
 // noodles: streamlines of divergence-free noise (seed 004), integrated on the GPU one strand per
 // invocation and drawn as instanced tubes, a few thousand strands by default and millions on demand.
 #include "scenes/noodles/noodles_scene.h"
+#include "scenes/adaptive_quality.h"
 
 #include "gpu/check.h"
 #include "gpu/resources.h"
