@@ -9,18 +9,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
+#include "support/require.h"
 
 using namespace vitrine;
 
-namespace {
-
-void require(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "input_script: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using vitrine::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   host::InputScript script;

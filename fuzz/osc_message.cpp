@@ -10,18 +10,11 @@
 #include <cstdlib>
 #include <span>
 #include <vector>
+#include "support/require.h"
 
 using namespace vitrine::remote;
 
-namespace {
-
-void require(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "osc_message: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using vitrine::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const Catalogue catalogue;

@@ -10,18 +10,11 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include "support/require.h"
 
 using namespace vitrine;
 
-namespace {
-
-void require(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "set_values: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using vitrine::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 2) return 0;

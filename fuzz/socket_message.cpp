@@ -7,18 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
+#include "support/require.h"
 
 using namespace vitrine::remote;
 
-namespace {
-
-void require(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "socket_message: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using vitrine::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const ParseResult result = parseSocketMessage(std::string_view(reinterpret_cast<const char*>(data), size));

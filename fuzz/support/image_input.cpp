@@ -4,19 +4,12 @@
 #include "image/image_io.h"
 #include "support/temp_file.h"
 
-#include <cstdio>
-#include <cstdlib>
+#include "support/require.h"
 
 namespace vitrine::fuzz {
 namespace {
 
 constexpr uint32_t kBackdropSide = 2048;  // glass_scene.cpp's kMaxPictureSide
-
-void require(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "image: %s\n", what);
-  std::abort();
-}
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include "host/scene_renderer.h"
 #include "image/image.h"
 #include "support/gpu_test.h"
+#include "support/frames_in_flight.h"
 #include "support/test_scene.h"
 
 #include <array>
@@ -79,72 +80,12 @@ class CountingScene final : public TestScene {
 CountingScene* lastScene = nullptr;
 const SceneInfo& kCounting = testSceneInfo(lastScene);
 
-// Two frames in flight, as the gallery runs them: a frame is recorded while the previous one may
-// still be on the GPU, and the output image changes size whenever the test says so.
-class InFlight {
+// Two frames in flight, as the gallery runs them, over the counting scene.
+class InFlight : public FramesInFlight {
  public:
-  explicit InFlight(const gpu::Device& device)
-      : device_(device),
-        programs_(device),
-        renderer_(device, programs_, assets_, 2),
-        pool_(gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, "test frames")) {
-    const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
-                                            VK_COMMAND_BUFFER_LEVEL_PRIMARY, 2};
-    vkAllocateCommandBuffers(device, &alloc, cmds_.data());
-    renderer_.setScene(kCounting);
+  explicit InFlight(const gpu::Device& device) : FramesInFlight(device, Assets("/nonexistent")) {
+    renderer().setScene(kCounting);
   }
-  ~InFlight() { device_.waitIdle(); }
-
-  host::SceneRenderer& renderer() { return renderer_; }
-
-  void frame(VkExtent2D size) {
-    const uint32_t slot = uint32_t(frames_ % 2);
-    if (serials_[slot]) device_.wait(serials_[slot]);
-    if (!output_ || output_.extent2d().width != size.width || output_.extent2d().height != size.height) {
-      if (output_) device_.retire(std::move(output_));
-      gpu::ImageDesc desc;
-      desc.extent = {size.width, size.height, 1};
-      desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-      output_ = gpu::Image(device_, desc, "test output");
-    }
-    VkCommandBuffer cmd = cmds_[slot];
-    vkResetCommandBuffer(cmd, 0);
-    const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
-                                         VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    vkBeginCommandBuffer(cmd, &begin);
-    output_.discard();
-    FrameInput input;
-    input.frame = frames_;
-    renderer_.record(cmd, slot, input,
-                     host::BlitDestination{output_.handle(), size, output_.lastUse(), gpu::use::TransferSrc,
-                                           output_.view()});
-    output_.assumeUse(gpu::use::TransferSrc);
-    vkEndCommandBuffer(cmd);
-    serials_[slot] = device_.submit({cmd, {}, {}});
-    ++frames_;
-  }
-
-  // The first texel of the last frame's output.
-  float firstTexel() {
-    device_.waitIdle();
-    gpu::Buffer staging(device_, output_.extent2d().width * output_.extent2d().height * 8,
-                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback, "test readback");
-    device_.submitNow([&](VkCommandBuffer cmd) { gpu::recordReadback(cmd, output_, staging); });
-    staging.invalidate();
-    return imageFromHalves(output_.extent2d().width, output_.extent2d().height, staging.view<const uint16_t>())
-        .pixels[0];
-  }
-
- private:
-  const gpu::Device& device_;
-  Assets assets_{"/nonexistent"};
-  gpu::ProgramLibrary programs_;
-  host::SceneRenderer renderer_;
-  gpu::Unique<VkCommandPool> pool_;
-  std::array<VkCommandBuffer, 2> cmds_{};
-  std::array<uint64_t, 2> serials_{};
-  gpu::Image output_;
-  uint64_t frames_ = 0;
 };
 
 class FrameResources : public GpuTest {};
