@@ -22,6 +22,7 @@
 #include "core/assets.h"
 #include "audio/engine.h"
 #include "host/cursor_tracker.h"
+#include "host/cost_guard.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
 #include "host/gallery_settings.h"
@@ -103,6 +104,8 @@ class Gallery {
   void applyEdit(const PanelEdit& edit);
   void rememberValues();
   void toggleCapture();
+  double frameMs() const { return std::max(input_.lastGpuMs, frameSeconds_ * 1e3); }
+  void applyEditNow(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
   void finishFade();
@@ -153,6 +156,8 @@ class Gallery {
   Clock::time_point noted_{};
   ParamPanel panel_;
   std::string panelError_;  // why the last edit was refused
+  std::optional<PanelEdit> costlyEdit_;  // an edit that would freeze the window, waiting for a yes
+  std::string costlyWhy_;
 
   // Kiosk mode (--kiosk).
   std::optional<KioskSchedule> kiosk_;
@@ -356,6 +361,7 @@ void Gallery::switchScene(const SceneInfo& info) {
   hasScene_ = true;
   ++sceneSerial_;
   passes_.clear();  // the old scene's timings are not this one's
+  costlyEdit_.reset();
   panel_.forget();
   panelError_.clear();
   settings_.showing(chosen->name, Clock::now());
@@ -472,7 +478,7 @@ void Gallery::simulate() {
   Pointer pointer = window_.takePointer();
   bool touched = touchedThisFrame(pointer);
   if (remote_) {
-    const RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time);
+    const RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
     touched = touched || applied.touched;
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
@@ -516,19 +522,37 @@ void Gallery::showMenu() {
       drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                          note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
                          helpShown_, capture_.status(), capture_.active(), reloadNote_,
-                         remote_ ? remote_->status() : std::string()});
+                         remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string()});
   vsync_ = choice.vsync;
   time_ = choice.time;
   helpShown_ = choice.help;
   if (choice.scene) nextScene_ = choice.scene;
   if (choice.edit) applyEdit(*choice.edit);
   if (choice.capture != capture_.active()) toggleCapture();
+  if (choice.costly && costlyEdit_) {
+    if (*choice.costly) applyEditNow(*costlyEdit_);
+    costlyEdit_.reset();
+  }
 }
 
 void Gallery::toggleCapture() { std::printf("vitrine: %s\n", capture_.toggle(renderer_->info().name).c_str()); }
 
-// Every panel edit goes through the same validation as --set; a refused one leaves every value as it was.
+// Every panel edit goes through the same validation as --set; a refused one leaves every value as it
+// was. One that would freeze the window for seconds is asked about first.
 void Gallery::applyEdit(const PanelEdit& edit) {
+  params::KeyValues change = edit.values;
+  if (edit.what == PanelEdit::What::Preset)
+    if (const params::Preset* preset = renderer_->info().schema().findPreset(edit.preset)) change = preset->values;
+  if (edit.what != PanelEdit::What::ResetAll)
+    if (std::string why = freezeWarning(renderer_->costRatio(change), frameMs()); !why.empty()) {
+      costlyEdit_ = edit;
+      costlyWhy_ = std::move(why);
+      return;
+    }
+  applyEditNow(edit);
+}
+
+void Gallery::applyEditNow(const PanelEdit& edit) {
   auto& remoteKeys = remoteKeys_[std::string(renderer_->info().name)];  // what the user sets here is theirs
   if (edit.what == PanelEdit::What::Values)
     for (const auto& kv : edit.values) remoteKeys.erase(kv.first);

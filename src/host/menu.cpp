@@ -102,9 +102,31 @@ std::string sceneKeyRange() {
   return lo == hi ? fmt::format("{}", lo) : fmt::format("{}-{}", lo, hi);
 }
 
+namespace {
+
+// Asks before an edit that would freeze the window for seconds.
+std::optional<bool> askAboutCostlyEdit(const std::string& why) {
+  if (why.empty()) return std::nullopt;
+  ImGui::OpenPopup("Apply this change?");
+  std::optional<bool> answer;
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Apply this change?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    drawWrapped(why);
+    if (ImGui::Button("Apply")) answer = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) answer = false;
+    if (answer) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  return answer;
+}
+
+}  // namespace
+
 MenuChoice drawMenu(const MenuState& state) {
   MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time, state.help, state.capturing};
   if (choice.help) drawHelp(state, choice.help);
+  choice.costly = askAboutCostlyEdit(state.costly);
   ImGui::SetNextWindowPos(ImVec2(12.0f, 12.0f), ImGuiCond_FirstUseEver);
   // Never taller than the window: a long panel scrolls instead of falling off the bottom, and the
   // title bar's arrow folds the whole menu away.

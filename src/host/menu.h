@@ -34,6 +34,7 @@ struct MenuState {
   bool capturing = false;
   std::string_view reloaded;                   // "reloaded kifs/march.comp", for a few seconds after
   std::string remote;                          // remote play's status; empty without --remote
+  std::string costly;                          // an edit that would freeze the window: what it costs
 };
 
 struct MenuChoice {
@@ -43,6 +44,7 @@ struct MenuChoice {
   TimeControl time;                  // as the menu's controls left it
   bool help = false;
   bool capture = false;              // live capture on (F9)
+  std::optional<bool> costly;        // the answer about the costly edit: apply (true) or not
 };
 
 MenuChoice drawMenu(const MenuState& state);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "host/cost_guard.h"
 
 namespace vitrine::host {
 namespace {
@@ -32,7 +33,7 @@ RemoteLink::RemoteLink(const std::string& bind) : control_(listen(bind)) {
   std::fflush(stdout);
 }
 
-RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, double time) {
+RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs) {
   RemoteApplied applied;
   const std::string_view showing = renderer.info().name;
   for (remote::RemoteCommand& command : control_.drain()) {
@@ -47,8 +48,10 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
           waiting_[command.scene].emplace_back(command.key, command.value);
           break;
         }
-        // Checked against the schema on a server thread; the scene's cross-parameter check runs here.
-        refused = renderer.applyParameters({{command.key, command.value}});
+        // Checked against the schema on a server thread; the scene's cross-parameter check runs here,
+        // and a change that would freeze the window waits for someone at the panel.
+        refused = freezeWarning(renderer.costRatio({{command.key, command.value}}), frameMs);
+        if (refused.empty()) refused = renderer.applyParameters({{command.key, command.value}});
         if (refused.empty()) {
           applied.values.emplace_back(command.key, command.value);
           if (events) events->emit(time, showing, {"remote_set", {{"key", command.key}, {"value", command.value}}});

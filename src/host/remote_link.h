@@ -28,8 +28,9 @@ class RemoteLink {
   // Listens on `bind` ("ADDR:PORT"); prints the page's address with its token. Throws vitrine::Error.
   explicit RemoteLink(const std::string& bind);
 
-  // Applies the commands that arrived since the last call to `renderer`'s scene.
-  RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time);
+  // Applies the commands that arrived since the last call to `renderer`'s scene. `frameMs`: the frame
+  // time now, to refuse a change that would freeze the window (host/cost_guard.h).
+  RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs = 0.0);
   // Values sent for `scene` while it was not showing, to apply when it opens (then forgotten).
   params::KeyValues takeWaiting(std::string_view scene);
   // The phone's touch as a pointer over an output of `framebuffer` pixels, while a phone drives it.

@@ -48,6 +48,15 @@ std::string SceneRenderer::applyParameters(const params::KeyValues& values) {
   return params::applyValues(scene_->parameters(), values, [&scene] { return scene.checkParameters(); });
 }
 
+double SceneRenderer::costRatio(const params::KeyValues& change) {
+  const params::Bound current = scene_->parameters();
+  const auto scratch = current.schema->makeDefaults();
+  for (const params::Param& param : current.schema->params()) param.copy(scratch.get(), current.settings);
+  if (!params::applyValues({current.schema, scratch.get()}, change).empty()) return 1.0;
+  const double now = scene_->frameCost(current.settings);
+  return now > 0.0 ? scene_->frameCost(scratch.get()) / now : 1.0;
+}
+
 std::string SceneRenderer::applyPreset(std::string_view name) {
   const Scene& scene = *scene_;
   return params::applyPreset(scene_->parameters(), name, [&scene] { return scene.checkParameters(); });

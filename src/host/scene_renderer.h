@@ -46,6 +46,9 @@ class SceneRenderer {
   // once on the final values); on failure nothing changes and the reason is returned.
   std::string applyParameters(const params::KeyValues& values);
   std::string applyPreset(std::string_view name);
+  // How many times the current frame's work `change` would make it, from the scene's frameCost
+  // (1 when the scene cannot tell, or the change would be refused anyway).
+  double costRatio(const params::KeyValues& change);
   const SceneInfo& info() const { return *info_; }
   // Where scenes created from now on report their events (null: nowhere).
   void setEventSink(EventSink* sink) { events_ = sink; }

@@ -118,6 +118,11 @@ class Scene {
   // memory budget); a non-empty reason rejects the whole change.
   virtual std::string checkParameters() const { return {}; }
   virtual float renderScale() const { return 1.0f; }  // fraction of the output the target covers
+  // The work a frame takes with `values` (this scene's settings struct), in any unit the scene likes:
+  // the host compares a change's cost with the current one, and asks before a change that would make
+  // the window freeze for seconds (noodles' strands, bloom's lattice). 1 for scenes whose cost hardly
+  // depends on their parameters.
+  virtual double frameCost(const void* /*values*/) const { return 1.0; }
 };
 
 struct SceneInfo {

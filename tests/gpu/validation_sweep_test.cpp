@@ -45,6 +45,21 @@ TEST_P(ValidationSweep, EveryPresetAndStageThroughResizesAndSwitches) {
   run.frames(3, sizes[2]);
 }
 
+// The cost estimate behind the guard against freezing changes (host/cost_guard.h), from live scenes.
+class CostRatio : public GpuTest {};
+
+TEST_F(CostRatio, ScenesSayHowMuchMoreWorkAChangeMakes) {
+  FramesInFlight run(device(), Assets::locate());
+  run.renderer().setScene(*findScene("noodles"));  // 16^3 strands of 64 segments
+  EXPECT_DOUBLE_EQ(run.renderer().costRatio({{"grid", "64"}, {"segments", "256"}}), 256.0);
+  EXPECT_DOUBLE_EQ(run.renderer().costRatio({{"grid", "8"}}), 0.125);
+  EXPECT_DOUBLE_EQ(run.renderer().costRatio({{"grid", "nonsense"}}), 1.0);  // refused: applying says why
+  run.renderer().setScene(*findScene("bloom"));
+  EXPECT_GT(run.renderer().costRatio({{"lattice", "256"}}), 18.0);  // (256/96)^3
+  run.renderer().setScene(*findScene("kifs"));
+  EXPECT_DOUBLE_EQ(run.renderer().costRatio({{"step", "1"}}), 1.0);
+}
+
 std::vector<const SceneInfo*> everyScene() {
   std::vector<const SceneInfo*> scenes;
   for (const SceneInfo& info : sceneRegistry()) scenes.push_back(&info);

@@ -18,6 +18,7 @@
 #include <imgui.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <deque>
 
@@ -168,6 +169,10 @@ class BloomScene final : public Scene {
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
   float renderScale() const override { return tierScale(quality_.active()); }
+  double frameCost(const void* values) const override {  // the lattice's diffusion dominates
+    const auto& v = *static_cast<const Settings*>(values);
+    return std::pow(double(v.lattice), 3.0) * (1.0 + double(v.samples) / 256.0);
+  }
 
   std::string checkParameters() const override {
     const auto t = thresholds();

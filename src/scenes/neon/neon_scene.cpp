@@ -123,6 +123,10 @@ class NeonScene final : public Scene {
   void record(const FrameContext& frame) override;
   params::Bound parameters() override { return {&schema(), &settings_}; }
   float renderScale() const override { return tierScale(quality_.active()); }
+  double frameCost(const void* values) const override {  // particles stepped and tubes drawn
+    const auto& v = *static_cast<const Settings*>(values);
+    return double(v.chains) * double(v.particles);
+  }
   void drawPanel() override;
 
  private:

@@ -70,6 +70,10 @@ class NoodlesScene final : public Scene {
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
   float renderScale() const override { return tierScale(quality_.active()); }
+  double frameCost(const void* values) const override {  // segments integrated and drawn
+    const auto& v = *static_cast<const NoodleSettings*>(values);
+    return double(v.grid.x) * v.grid.y * v.grid.z * double(v.segments);
+  }
 
   // Refuses strands the device cannot hold, judged on the final grid and segment count together.
   std::string checkParameters() const override {
