@@ -211,6 +211,10 @@ std::vector<ShapedGlyph> Font::shape(std::string_view utf8, const Shaping& shapi
   return glyphs;
 }
 
+namespace {
+constexpr float kMaxInkEm = 4.0f;
+}  // namespace
+
 GlyphSdf Font::renderSdf(uint32_t glyph, uint32_t pxPerEm, uint32_t spreadPx) const {
   GlyphSdf out;
   if (!usable() || pxPerEm == 0) return out;
@@ -224,6 +228,9 @@ GlyphSdf Font::renderSdf(uint32_t glyph, uint32_t pxPerEm, uint32_t spreadPx) co
   const float toEm = 1.0f / (64.0f * impl.unitsPerEm);
   out.inkMin = glm::vec2(float(box.xMin), -float(box.yMax)) * toEm;
   out.inkMax = glm::vec2(float(box.xMax), -float(box.yMin)) * toEm;
+  // Letters fit in an em or two; a glyph whose ink spans more than kMaxInkEm is a broken (or hostile)
+  // font, and rasterising it would take a bitmap, and a distance transform, of any size: no ink.
+  if (glm::any(glm::greaterThan(out.inkMax - out.inkMin, glm::vec2(kMaxInkEm)))) return GlyphSdf{};
 
   // FreeType's outline SDF renderer mis-draws overlapping contours, which static instances of
   // variable fonts are full of (Fraunces, Cormorant): seams inside the letters, or with its "overlaps"

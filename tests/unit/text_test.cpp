@@ -14,6 +14,8 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -318,6 +320,29 @@ TEST_F(Text, TruncatedFontIsReportedNotACrash) {
   EXPECT_NE(none.problem().find("no text is drawn"), std::string::npos) << none.problem();
   GlyphAtlas atlas;
   EXPECT_TRUE(atlas.layout(none, "AMBER").empty());
+}
+
+}  // namespace
+}  // namespace vitrine::text
+
+namespace vitrine::text {
+namespace {
+
+// A fuzzed font (tests/fuzz-regressions/font/) with a glyph whose outline spans far more than an em:
+// FreeType's distance transform spent over 10 s on it. Such a glyph is refused as no ink, at once.
+TEST(FontFuzzRegressions, AGlyphSpanningManyEmsIsNoInkNotAStall) {
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(VITRINE_FUZZ_REGRESSION_DIR) / "font")) {
+    const Font font = Font::load(entry.path(), "");
+    if (!font.usable()) continue;
+    GlyphAtlas atlas({.width = 128, .height = 64, .pxPerEm = 16, .spreadPx = 4});
+    try {
+      for (const char* words : {"Vitrine", "fi AVAV"}) atlas.layout(font, words, {});
+    } catch (const Error&) {  // a full atlas is a refusal, not a stall
+    }
+    font.renderSdf(font.glyphFor('g'), 24, 6);
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
 
 }  // namespace
