@@ -13,6 +13,15 @@
 namespace vitrine {
 namespace {
 
+// Why a read failed: the buffer's own message, and any OpenImageIO left in its per-thread global error
+// (an ImageInput that failed to open sets that one too; left unread, it is never freed).
+std::string readError(OIIO::ImageBuf& buffer) {
+  std::string why = buffer.geterror();
+  const std::string global = OIIO::geterror();
+  if (why.empty()) why = global;
+  return why.empty() ? "OpenImageIO could not read it" : why;
+}
+
 // An ImageBuf made from a file name reads through OpenImageIO's shared ImageCache, which knows a file by
 // its name and modification time in whole seconds: a file replaced under the same name within that
 // second was read with the old file's size and channels, writing past the pixel buffer (found by
@@ -52,7 +61,7 @@ ImageRgba readImage(const std::filesystem::path& path) {
   checkExrFile(path);
   OIIO::ImageBuf buffer = openFresh(path);
   if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw Error(fmt::format("Cannot read {}: {}", path.string(), buffer.geterror()));
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), readError(buffer)));
   const auto& spec = buffer.spec();
   ImageRgba image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}};
   image.pixels.assign(size_t(spec.width) * spec.height * 4, 1.0f);
@@ -72,7 +81,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
     throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
   OIIO::ImageBuf source = openFresh(path);
   if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
-    throw Error(fmt::format("Cannot read {}: {}", path.string(), source.geterror()));
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), readError(source)));
   const OIIO::ImageSpec& spec = source.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw Error(fmt::format("Cannot read {}: it has no pixels.", path.string()));
