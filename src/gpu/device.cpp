@@ -193,6 +193,8 @@ Instance::Instance(const InstanceOptions& options) {
   // globals still held shows up as leaks from an unnamed module that no suppression can name. Kept
   // mapped, the layer is named, and tests/sanitize/lsan.supp can suppress it alone.
   if (validation_) dlopen("libVkLayer_khronos_validation.so", RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+  // Likewise the driver: lavapipe (and the LLVM it JIT-compiles shaders with) when it is the one loaded.
+  dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
 #endif
 
   if (debugUtils_) {
