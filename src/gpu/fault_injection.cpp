@@ -3,6 +3,7 @@
 #include <atomic>
 #include <charconv>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 
 namespace vitrine::gpu {
@@ -10,6 +11,7 @@ namespace {
 
 struct Plan {
   uint64_t at[2] = {0, 0};  // per Fault: the call that fails, 1-based; 0 never
+  std::string failingScene;
 };
 
 Plan readPlan() {
@@ -26,16 +28,23 @@ Plan readPlan() {
     std::from_chars(number.data(), number.data() + number.size(), n);
     if (item.substr(0, colon) == "device-lost") plan.at[int(Fault::DeviceLost)] = n;
     if (item.substr(0, colon) == "out-of-memory") plan.at[int(Fault::OutOfMemory)] = n;
+    if (item.substr(0, colon) == "scene-start") plan.failingScene = item.substr(colon + 1);
   }
   return plan;
 }
 
+const Plan& plan() {
+  static const Plan read = readPlan();
+  return read;
+}
+
 }  // namespace
 
+bool injectedSceneFailure(std::string_view name) { return !plan().failingScene.empty() && plan().failingScene == name; }
+
 VkResult injectedFault(Fault fault) {
-  static const Plan plan = readPlan();
   static std::atomic<uint64_t> calls[2];
-  const uint64_t at = plan.at[int(fault)];
+  const uint64_t at = plan().at[int(fault)];
   if (at == 0 || calls[int(fault)].fetch_add(1) + 1 != at) return VK_SUCCESS;
   return fault == Fault::DeviceLost ? VK_ERROR_DEVICE_LOST : VK_ERROR_OUT_OF_DEVICE_MEMORY;
 }

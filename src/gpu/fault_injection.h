@@ -3,9 +3,12 @@
 // (VITRINE_INJECT in the environment; read once):
 //   device-lost:N     the Nth queue submission reports VK_ERROR_DEVICE_LOST
 //   out-of-memory:N   the Nth device memory allocation reports VK_ERROR_OUT_OF_DEVICE_MEMORY
+//   scene-start:NAME  scene NAME fails to start, every time (a kiosk skips it)
 // Several are separated by commas. Each fires once per process, so a kiosk's restarted gallery runs
 // on, as it would after a driver reset.
 #include <vulkan/vulkan.h>
+
+#include <string_view>
 
 namespace vitrine::gpu {
 
@@ -13,5 +16,8 @@ enum class Fault { DeviceLost, OutOfMemory };
 
 // VK_SUCCESS, or the injected result when this call is the one that fails.
 VkResult injectedFault(Fault fault);
+
+// True when scene `name` is to fail as it starts.
+bool injectedSceneFailure(std::string_view name);
 
 }  // namespace vitrine::gpu

@@ -6,7 +6,6 @@
 #include <fmt/ranges.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <csignal>
 #include <map>
 #include <memory>
@@ -319,8 +318,6 @@ void Gallery::handleKeys() {
 // Returns why it could not start; only kiosk mode survives that (elsewhere the error ends the run).
 std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) {
   try {
-    if (const char* inject = std::getenv("VITRINE_FAIL_SCENE"); inject && info.name == inject)  // fault injection
-      throw Error(fmt::format("scene {} failed to start (VITRINE_FAIL_SCENE)", info.name));
     renderer.setScene(info);
   } catch (const Error& e) {
     if (!kiosk_) throw;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gpu/check.h"
+#include "gpu/fault_injection.h"
 
 namespace vitrine::host {
 
@@ -36,6 +37,8 @@ void SceneRenderer::clear() {
 
 void SceneRenderer::setScene(const SceneInfo& info) {
   clear();
+  if (gpu::injectedSceneFailure(info.name))
+    throw Error(fmt::format("scene {} failed to start (injected by VITRINE_INJECT)", info.name));
   resources_ = std::make_unique<gpu::FrameResources>(device_);
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
   scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, SceneEvents(events_, info.name),
