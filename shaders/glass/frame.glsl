@@ -1,8 +1,15 @@
-// The glass scene's per-frame uniform block; mirrors src/scenes/glass/frame_block.h.
+// The glass scene's per-frame block; mirrors src/scenes/glass/frame_block.h (every member is 16-byte
+// aligned, so std430 lays it out as std140 would).
+//
+// A read-only storage buffer rather than a uniform block, on purpose: Mesa 22's lavapipe "inlines"
+// uniform-block values that steer branches of a large shader, compiling a fresh copy of the shader at
+// every bind of its pipeline and never freeing it. With a uniform block the spectral pass grew the
+// process by about 1 MiB a frame (3.8 MiB on the raster path) and recompiled every frame; storage
+// buffers are never inlined. On real GPUs a read-only, uniformly indexed buffer costs the same here.
 #ifndef GLASS_FRAME_GLSL
 #define GLASS_FRAME_GLSL
 
-layout(std140, set = 0, binding = 0) uniform Frame {
+layout(std430, set = 0, binding = 0) readonly buffer Frame {
   mat4 viewProjection;
   vec4 camera;
   vec4 view;

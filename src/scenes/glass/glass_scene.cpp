@@ -61,9 +61,9 @@ const gpu::ProgramLayout kComposeLayout{
     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ComposePush)};
 
 // The spectral programs' bindings: the frame block, the backdrop and the panorama, the diamond's planes,
-// then the hull (raster) or the colour and motion outputs (compute). The shape is specialised.
+// The spectral programs' bindings: the frame block, the backdrop and the panorama, the diamond's planes,
 gpu::ProgramLayout spectralLayout(ShapeKind shape, bool compute) {
-  std::vector<VkDescriptorType> bindings{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+  std::vector<VkDescriptorType> bindings{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
   if (compute) bindings.insert(bindings.end(), {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   else bindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
@@ -109,7 +109,7 @@ class GlassScene final : public Scene {
         programs_(context.programs),
         compose_(context.programs, "glass/compose.comp", kComposeLayout),
         resolve_(context.programs, "glass/resolve.comp",
-                 {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                 {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                    VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                    VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                    VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -570,7 +570,7 @@ void GlassScene::record(const FrameContext& frame) {
   const VkSampler wrapped = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Repeat, true);
   constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const auto sources = [&](gpu::Bindings bindings) {
-    return bindings.uniformBuffer(block.buffer, block.offset, sizeof(FrameBlock))
+    return bindings.storageBuffer(block.buffer, block.offset, sizeof(FrameBlock))
         .sampledImage(backdrop.view(), mipped, kSampled)
         .sampledImage(panorama.view(), wrapped, kSampled);
   };
@@ -623,7 +623,7 @@ void GlassScene::recordSpectral(const FrameContext& frame, const gpu::StreamSlic
   frame.transition(*diamondPlanes_, compute ? gpu::use::ComputeReadBuffer : gpu::use::FragmentReadBuffer);
   constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const auto bindings = gpu::Bindings()
-                            .uniformBuffer(block.buffer, block.offset, sizeof(FrameBlock))
+                            .storageBuffer(block.buffer, block.offset, sizeof(FrameBlock))
                             .sampledImage(backdrop.view(), device_.sampler(gpu::Device::Filter::Linear,
                                                                            gpu::Device::Address::Clamp, true),
                                           kSampled)
