@@ -424,6 +424,7 @@ Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements
       VkDeviceMemory memory;
       VK_CHECK(injectedFault(Fault::OutOfMemory) != VK_SUCCESS ? VK_ERROR_OUT_OF_DEVICE_MEMORY
                                                                : vkAllocateMemory(device_, &info, nullptr, &memory));
+      noteAllocated(memory, requirements.size);
       return Unique<VkDeviceMemory>(device_, memory);
     }
   }

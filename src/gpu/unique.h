@@ -1,6 +1,8 @@
 #pragma once
 // Move-only ownership of Vulkan device-level handles. Every object a scene or the host creates is
 // held by one of these, so nothing outside this header calls vkDestroy*.
+#include "gpu/memory_ledger.h"
+
 #include <vulkan/vulkan.h>
 
 #include <utility>
@@ -15,7 +17,6 @@ template <typename T> struct Destroyer;
 VITRINE_DESTROYER(VkBuffer, vkDestroyBuffer)
 VITRINE_DESTROYER(VkImage, vkDestroyImage)
 VITRINE_DESTROYER(VkImageView, vkDestroyImageView)
-VITRINE_DESTROYER(VkDeviceMemory, vkFreeMemory)
 VITRINE_DESTROYER(VkSampler, vkDestroySampler)
 VITRINE_DESTROYER(VkPipeline, vkDestroyPipeline)
 VITRINE_DESTROYER(VkPipelineLayout, vkDestroyPipelineLayout)
@@ -30,6 +31,12 @@ VITRINE_DESTROYER(VkRenderPass, vkDestroyRenderPass)
 VITRINE_DESTROYER(VkFramebuffer, vkDestroyFramebuffer)
 VITRINE_DESTROYER(VkSwapchainKHR, vkDestroySwapchainKHR)
 #undef VITRINE_DESTROYER
+template <> struct Destroyer<VkDeviceMemory> {
+  static void destroy(VkDevice device, VkDeviceMemory memory) {
+    noteFreed(memory);
+    vkFreeMemory(device, memory, nullptr);
+  }
+};
 
 template <typename T>
 class Unique {

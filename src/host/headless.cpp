@@ -1,4 +1,5 @@
 #include "gpu/check.h"
+#include "gpu/memory_ledger.h"
 #include "image/image_io.h"
 #include "image/image_compare.h"
 #include "audio/engine.h"
@@ -9,6 +10,7 @@
 #include "host/offscreen.h"
 #include "core/output_path.h"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -50,7 +52,11 @@ int runHeadless(const Options& options) {
       std::signal(SIGINT, [](int) { stopHeadless = 1; });
     }
     auto due = std::chrono::steady_clock::now();
+    // Device memory after the first fifth of the frames (the soak's warm-up) and at the end.
+    const uint32_t warmFrames = std::max(options.frames / 5, 1u);
+    gpu::MemoryTally warm;
     for (uint32_t k = 0; k < options.frames && !stopHeadless; ++k) {
+      if (k == warmFrames) warm = gpu::liveDeviceMemory();
       if (remote) {
         RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
         offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
@@ -60,6 +66,11 @@ int runHeadless(const Options& options) {
       offscreen.renderFrame();
     }
     image = offscreen.readback();
+    const gpu::MemoryTally end = gpu::liveDeviceMemory();
+    if (options.frames > warmFrames)
+      std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
+                  static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
+                  static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
                    options.input.c_str(), options.time + double(options.frames - 1) / 60.0);
