@@ -9,7 +9,7 @@
 #ifndef GLASS_FRAME_GLSL
 #define GLASS_FRAME_GLSL
 
-layout(std430, set = 0, binding = 0) readonly buffer Frame {
+layout(std430, set = 0, binding = 0) restrict readonly buffer Frame {
   mat4 viewProjection;
   vec4 camera;
   vec4 view;
