@@ -12,9 +12,8 @@ void main() {
   for (uint entry = gl_WorkGroupID.x; entry < listed; entry += gl_NumWorkGroups.x) {
     uvec2 item = tiles[entry];
     Segment s = loadSegment(item.x);
-    // The box again, to leave out the cells of edge tiles outside it (cheaper than their rays).
-    ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.radius, pc.samplesPerAxis);
-    ivec2 cell = ivec2(uvec2(item.y & 0xffffu, item.y >> 16) * TILE_SIDE + gl_LocalInvocationID.xy);
-    if (all(greaterThanEqual(cell, cells.xy)) && all(lessThanEqual(cell, cells.zw))) rasterSample(uvec2(cell), s);
+    // Cells of an edge tile outside the segment's box only miss: cheaper than bounding it again.
+    uvec2 cell = uvec2(item.y & 0xffffu, item.y >> 16) * TILE_SIDE + gl_LocalInvocationID.xy;
+    if (all(lessThan(cell, uvec2(pc.pixels) * pc.samplesPerAxis))) rasterSample(cell, s);
   }
 }
