@@ -299,11 +299,13 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   f12.shaderFloat16 = has12.shaderFloat16;
   f12.scalarBlockLayout = has12.scalarBlockLayout;
   f12.storageBuffer8BitAccess = has12.storageBuffer8BitAccess;
+  f12.shaderBufferInt64Atomics = has12.shaderBufferInt64Atomics;  // noodles' visibility buffer
   VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
   f11.storageBuffer16BitAccess = has11.storageBuffer16BitAccess;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
   features.features.samplerAnisotropy = has.features.samplerAnisotropy;
   features.features.shaderInt16 = has.features.shaderInt16;
+  features.features.shaderInt64 = has.features.shaderInt64;
   features.features.fillModeNonSolid = has.features.fillModeNonSolid;
   features.features.shaderStorageImageWriteWithoutFormat = has.features.shaderStorageImageWriteWithoutFormat;
   features.features.shaderStorageImageExtendedFormats = has.features.shaderStorageImageExtendedFormats;  // r16f

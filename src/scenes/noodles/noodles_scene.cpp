@@ -1,5 +1,6 @@
 // noodles: streamlines of divergence-free noise (seed 004), integrated on the GPU one strand per
-// invocation and drawn as instanced tubes, a few thousand strands by default and millions on demand.
+// invocation and drawn as round tubes by a compute rasteriser (ray-capsule casts into a visibility
+// buffer, then one shading pass), a few thousand strands by default and millions on demand.
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/adaptive_quality.h"
 
@@ -7,9 +8,11 @@
 #include "gpu/resources.h"
 #include "scenes/noodles/camera_rig.h"
 #include "scenes/noodles/integrate_pass.h"
+#include "scenes/noodles/raster_pass.h"
 #include "scenes/noodles/settings.h"
+#include "scenes/noodles/shade_pass.h"
 #include "scenes/noodles/strand_layout.h"
-#include "scenes/noodles/tube_pass.h"
+#include "scenes/noodles/tube_view.h"
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -29,7 +32,8 @@ class NoodlesScene final : public Scene {
         quality_(context),
         budget_(deviceBudget(context.device)),
         integrate_(context.programs),
-        tubes_(context) {
+        raster_(context),
+        shade_(context.programs) {
     ensureStrands();
   }
 
@@ -63,9 +67,14 @@ class NoodlesScene final : public Scene {
       integrate_.record(frame.cmd, layout_, nodes_.handle(), strands);
       integrated_ = strands;
     }
-    frame.transition(nodes_, gpu::use::VertexReadBuffer);
-    const auto pass = frame.pass("noodles draw");
-    tubes_.record(frame, layout_, nodes_.handle(), tubeView(frame.target.extent2d()));
+    frame.transition(nodes_, gpu::use::ComputeReadBuffer);
+    const TubeView view = tubeView(frame.target.extent2d());
+    {
+      const auto pass = frame.pass("noodles raster");
+      raster_.record(frame, layout_, nodes_.handle(), view);
+    }
+    const auto pass = frame.pass("noodles shade");
+    shade_.record(frame, layout_, nodes_.handle(), raster_.visibility(), raster_.samplesPerAxis(), view);
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
@@ -143,10 +152,8 @@ class NoodlesScene final : public Scene {
   }
 
   TubeView tubeView(VkExtent2D extent) const {
-    const CameraPose pose = camera_.pose();
-    const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
-    return {reverseZPerspective(kFieldOfViewY, aspect, kNearPlane) * lookAtZUp(pose.eye, pose.target), pose.eye,
-            settings_.radius, settings_.colour, settings_.stripe, settings_.msaa && quality_.active() == Tier::High};
+    return {screenViewOf(camera_.pose(), glm::vec2(float(extent.width), float(extent.height))), settings_.radius,
+            settings_.colour, settings_.stripe, settings_.msaa && quality_.active() == Tier::High};
   }
 
   const gpu::Device& device_;
@@ -158,7 +165,8 @@ class NoodlesScene final : public Scene {
   gpu::Buffer nodes_;
   std::optional<StrandSettings> integrated_;  // what the node buffer holds now
   IntegratePass integrate_;
-  TubePass tubes_;
+  RasterPass raster_;
+  ShadePass shade_;
   CameraRig camera_;
   std::optional<double> lastTime_;
   double writhe_ = 0.0;  // noise units the potentials have drifted

@@ -122,7 +122,10 @@ const params::Schema& schema() {
     s.add(params::boolParam<S>({"stripe", "stripe", "Paint one side of every tube, so the frames' twist shows.",
                                 "tubes"},
                                &S::stripe));
-    s.add(params::choiceParam<S>({"msaa", "msaa", "4x multisampling of the tube pass.", "tubes", kRebuilds},
+    s.add(params::choiceParam<S>({"msaa", "msaa",
+                                  "Anti-aliasing: 4x casts four rays a pixel (the standard rotated grid) and "
+                                  "averages them; off casts one, at the pixel centre.",
+                                  "tubes", kRebuilds},
                                  &S::msaa, {"off", "4x"}));
     s.add(params::customParam<S, OrbitPin>(
         {"orbit", "pinned orbit", "off, or AZIMUTH,ELEVATION,DISTANCE to hold the camera there.", "camera",

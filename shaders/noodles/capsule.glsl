@@ -1,0 +1,107 @@
+// Ray-capsule hits, ordered depth bits, sample positions and the conservative screen box of a
+// projected capsule; mirrors src/scenes/noodles/capsule.h, whose comments say why.
+#ifndef NOODLES_CAPSULE_GLSL
+#define NOODLES_CAPSULE_GLSL
+
+const float NO_HIT = -1.0;
+
+float capsuleHit(vec3 origin, vec3 direction, vec3 a, vec3 b, float radius) {
+  float shift = dot(0.5 * (a + b) - origin, direction);
+  vec3 o = origin + shift * direction;
+  vec3 ba = b - a, oa = o - a;
+  float baba = dot(ba, ba), bard = dot(ba, direction), baoa = dot(ba, oa);
+  float rdoa = dot(direction, oa), oaoa = dot(oa, oa);
+  float qa = baba - bard * bard;
+  float qb = baba * rdoa - baoa * bard;
+  float qc = baba * oaoa - baoa * baoa - radius * radius * baba;
+  float h = qb * qb - qa * qc;
+  if (h < 0.0) return NO_HIT;
+  float side = qa > 0.0 ? (-qb - sqrt(h)) / qa : 0.0;
+  float along = qa > 0.0 ? baoa + side * bard : (bard > 0.0 ? -1.0 : baba + 1.0);
+  float t = side;
+  if (along <= 0.0 || along >= baba) {
+    vec3 oc = along <= 0.0 ? oa : o - b;
+    float sb = dot(direction, oc), sc = dot(oc, oc) - radius * radius;
+    float sh = sb * sb - sc;
+    if (sh < 0.0) return NO_HIT;
+    t = -sb - sqrt(sh);
+  }
+  float hit = t + shift;
+  return hit > 0.0 ? hit : NO_HIT;
+}
+
+float alongSegment(vec3 p, vec3 a, vec3 b) {
+  vec3 ba = b - a;
+  return clamp(dot(p - a, ba) / max(dot(ba, ba), 1e-30), 0.0, 1.0);
+}
+
+bool insideCapsule(vec3 p, vec3 a, vec3 b, float radius) {
+  vec3 axis = mix(a, b, alongSegment(p, a, b));
+  return dot(p - axis, p - axis) < radius * radius * 0.998;
+}
+
+uint orderedBits(float value) {
+  uint bits = floatBitsToUint(value);
+  return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+struct ScreenView {
+  vec3 eye, right, up, forward;
+  float tanHalfX, tanHalfY, nearPlane;
+  vec2 pixels;
+};
+
+vec3 rayThrough(ScreenView view, vec2 position) {
+  vec2 ndc = position / view.pixels * 2.0 - 1.0;
+  return view.forward + ndc.x * view.tanHalfX * view.right - ndc.y * view.tanHalfY * view.up;
+}
+
+vec2 sampleOffset(uint quarter, uint samplesPerAxis) {
+  if (samplesPerAxis == 1u) return vec2(0.5);
+  const vec2 STANDARD_4[4] = vec2[4](vec2(0.375, 0.125), vec2(0.875, 0.375), vec2(0.125, 0.625), vec2(0.625, 0.875));
+  return STANDARD_4[quarter & 3u];
+}
+
+vec2 cellSamplePosition(uvec2 cell, uint samplesPerAxis) {
+  uvec2 pixel = cell / samplesPerAxis;
+  uvec2 quarter = cell - pixel * samplesPerAxis;
+  return vec2(pixel) + sampleOffset(quarter.y * 2u + quarter.x, samplesPerAxis);
+}
+
+vec3 toView(ScreenView view, vec3 p) {
+  vec3 d = p - view.eye;
+  return vec3(dot(d, view.right), dot(d, view.up), dot(d, view.forward));
+}
+
+vec2 sphereSlopes(float side, float depth, float radius) {
+  float root = radius * sqrt(max(side * side + depth * depth - radius * radius, 0.0));
+  return vec2(side * depth - root, side * depth + root) / (depth * depth - radius * radius);
+}
+
+// The sample cells (inclusive: xy the first, zw the last) that may hold a hit of the capsule;
+// x > z or y > w when none do.
+ivec4 capsuleCells(ScreenView view, vec3 a, vec3 b, float radius, uint samplesPerAxis) {
+  const ivec4 NONE = ivec4(0, 0, -1, -1);
+  vec3 va = toView(view, a), vb = toView(view, b);
+  float nearest = view.nearPlane - radius;
+  if (va.z < nearest && vb.z < nearest) return NONE;
+  if (va.z < nearest) va = mix(va, vb, (nearest - va.z) / (vb.z - va.z));
+  if (vb.z < nearest) vb = mix(vb, va, (nearest - vb.z) / (va.z - vb.z));
+  vec2 lo = vec2(0.0), hi = view.pixels;
+  if (min(va.z, vb.z) > radius * 1.001) {
+    vec2 xa = sphereSlopes(va.x, va.z, radius), xb = sphereSlopes(vb.x, vb.z, radius);
+    vec2 ya = sphereSlopes(va.y, va.z, radius), yb = sphereSlopes(vb.y, vb.z, radius);
+    float left = min(xa.x, xb.x), right = max(xa.y, xb.y);
+    float down = min(ya.x, yb.x), up = max(ya.y, yb.y);
+    lo = vec2((left / view.tanHalfX + 1.0) * 0.5 * view.pixels.x, (1.0 - up / view.tanHalfY) * 0.5 * view.pixels.y);
+    hi = vec2((right / view.tanHalfX + 1.0) * 0.5 * view.pixels.x, (1.0 - down / view.tanHalfY) * 0.5 * view.pixels.y);
+  }
+  lo = max(lo, vec2(0.0));
+  hi = min(hi, view.pixels);
+  if (!(lo.x <= hi.x && lo.y <= hi.y)) return NONE;
+  float s = float(samplesPerAxis);
+  ivec2 last = ivec2(view.pixels) * int(samplesPerAxis) - 1;
+  return ivec4(max(ivec2(floor(lo * s)), ivec2(0)), min(ivec2(floor(hi * s)), last));
+}
+
+#endif

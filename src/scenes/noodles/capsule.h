@@ -1,0 +1,184 @@
+#pragma once
+// The maths of drawing tubes by ray casting instead of triangles: every segment is a capsule (the
+// points within `radius` of the segment between its two nodes), so consecutive segments share the
+// sphere round their common node and join with no gap and no bump, and a strand's ends are round.
+//  - the eye ray through a sample position, and where the sample positions lie in a pixel;
+//  - the ray-capsule intersection;
+//  - the float -> ordered uint mapping that lets one 64-bit atomicMin keep the nearest hit;
+//  - the screen box of a projected capsule, conservative, and the sample cells it covers.
+// Mirrored by shaders/noodles/capsule.glsl; tests/unit/noodles_capsule_test.cpp checks it.
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace vitrine::noodles {
+
+inline constexpr float kNoHit = -1.0f;
+
+// Nearest t > 0 at which origin + t * direction (unit length) enters the capsule, else kNoHit; a ray
+// starting inside sees nothing (a tube the camera flies through is not drawn from within).
+// The ray is first moved to where it passes the segment's middle, so the quadratic's terms are of the
+// capsule's size, not the camera's distance: far away, float cancellation would otherwise eat the
+// radius (|o|^2 ~ 10^4 against r^2 ~ 10^-4).
+inline float capsuleHit(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm::vec3 b, float radius) {
+  const float shift = glm::dot(0.5f * (a + b) - origin, direction);
+  const glm::vec3 o = origin + shift * direction;
+  const glm::vec3 ba = b - a, oa = o - a;
+  const float baba = glm::dot(ba, ba), bard = glm::dot(ba, direction), baoa = glm::dot(ba, oa);
+  const float rdoa = glm::dot(direction, oa), oaoa = glm::dot(oa, oa);
+  const float qa = baba - bard * bard;
+  const float qb = baba * rdoa - baoa * bard;
+  const float qc = baba * oaoa - baoa * baoa - radius * radius * baba;
+  const float h = qb * qb - qa * qc;
+  if (h < 0.0f) return kNoHit;  // misses the infinite cylinder, hence both end spheres inside it
+  // Where the ray enters the infinite cylinder, as a distance along the axis times |ba|; a ray along
+  // the axis (qa = 0) enters at the end it meets first.
+  const float side = qa > 0.0f ? (-qb - std::sqrt(h)) / qa : 0.0f;
+  const float along = qa > 0.0f ? baoa + side * bard : (bard > 0.0f ? -1.0f : baba + 1.0f);
+  float t = side;
+  if (along <= 0.0f || along >= baba) {  // beyond an end: the sphere round that node
+    const glm::vec3 oc = along <= 0.0f ? oa : o - b;
+    const float sb = glm::dot(direction, oc), sc = glm::dot(oc, oc) - radius * radius;
+    const float sh = sb * sb - sc;
+    if (sh < 0.0f) return kNoHit;
+    t = -sb - std::sqrt(sh);
+  }
+  const float hit = t + shift;
+  return hit > 0.0f ? hit : kNoHit;  // entered behind the origin: it starts inside, or all is behind
+}
+
+// The point of the segment nearest p, as a fraction of the way from a to b: where along the strand
+// a hit lies (for the frames) and, with the axis point, the outward normal.
+inline float alongSegment(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
+  const glm::vec3 ba = b - a;
+  return std::clamp(glm::dot(p - a, ba) / std::max(glm::dot(ba, ba), 1e-30f), 0.0f, 1.0f);
+}
+
+// Whether p lies strictly inside the capsule (short of its surface by a part in a thousand of the
+// radius, so a point on a surface two capsules share is not "inside" either). Consecutive capsules
+// overlap round their shared node: with nothing in front, the nearer capsule's hit always hides the
+// overlap, but where the near plane cuts that hit away, the overlap's far surface would show as rings
+// inside the tube; the raster pass drops hits inside a neighbour there.
+inline bool insideCapsule(glm::vec3 p, glm::vec3 a, glm::vec3 b, float radius) {
+  const glm::vec3 axis = glm::mix(a, b, alongSegment(p, a, b));
+  return glm::dot(p - axis, p - axis) < radius * radius * 0.998f;
+}
+
+// Floats to uints in the same order (negatives below positives), so comparing the uints compares
+// the floats: the high half of a 64-bit atomicMin key.
+inline uint32_t orderedBits(float value) {
+  const uint32_t bits = std::bit_cast<uint32_t>(value);
+  return (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
+}
+
+// An empty sample: every real key is smaller, so clearing the buffer to all ones empties it.
+inline constexpr uint64_t kEmptyKey = ~uint64_t(0);
+
+inline uint64_t visibilityKey(float distance, uint32_t segment) {
+  return (uint64_t(orderedBits(distance)) << 32) | segment;
+}
+
+// The camera as the rasteriser sees it: eye, orthonormal basis, the tangents of the half field of
+// view, the near plane (no hit nearer than it along `forward` is drawn, as with the old depth clip)
+// and the image in pixels.
+struct ScreenView {
+  glm::vec3 eye, right, up, forward;
+  float tanHalfX = 1.0f, tanHalfY = 1.0f;
+  float nearPlane = 0.25f;
+  glm::vec2 pixels{1.0f};
+};
+
+// The unnormalised eye ray through a position in pixels (origin top-left, y down, as Vulkan's
+// framebuffer), matching reverseZPerspective + lookAtZUp.
+inline glm::vec3 rayThrough(const ScreenView& view, glm::vec2 position) {
+  const glm::vec2 ndc = position / view.pixels * 2.0f - 1.0f;
+  return view.forward + ndc.x * view.tanHalfX * view.right - ndc.y * view.tanHalfY * view.up;
+}
+
+// Sample positions inside a pixel. One sample: the centre. Four: Vulkan's standard 4x locations
+// (a rotated grid, so near-horizontal and near-vertical edges get four distinct steps), one in each
+// quarter of the pixel, so sample cell (x, y) of the doubled grid holds the sample in that quarter.
+inline glm::vec2 sampleOffset(uint32_t quarter, uint32_t samplesPerAxis) {
+  if (samplesPerAxis == 1) return {0.5f, 0.5f};
+  constexpr glm::vec2 kStandard4[4] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+  return kStandard4[quarter & 3u];
+}
+
+// Sample cell (x, y) of the grid samplesPerAxis times as fine as the pixels: its sample's position
+// in pixels.
+inline glm::vec2 cellSamplePosition(glm::uvec2 cell, uint32_t samplesPerAxis) {
+  const glm::uvec2 pixel = cell / samplesPerAxis;
+  const glm::uvec2 quarter = cell - pixel * samplesPerAxis;
+  return glm::vec2(pixel) + sampleOffset(quarter.y * 2u + quarter.x, samplesPerAxis);
+}
+
+// Where a point lies on the view's axes: right, up, forward (forward = depth).
+inline glm::vec3 toView(const ScreenView& view, glm::vec3 p) {
+  const glm::vec3 d = p - view.eye;
+  return {glm::dot(d, view.right), glm::dot(d, view.up), glm::dot(d, view.forward)};
+}
+
+// The tangents of the planes through the eye that touch a sphere, along one screen axis: `side` is
+// the centre's coordinate on that axis, `depth` its forward one (> radius).
+inline glm::vec2 sphereSlopes(float side, float depth, float radius) {
+  const float root = radius * std::sqrt(std::max(side * side + depth * depth - radius * radius, 0.0f));
+  const float denominator = depth * depth - radius * radius;
+  return glm::vec2(side * depth - root, side * depth + root) / denominator;
+}
+
+struct PixelBox {
+  glm::vec2 min{0.0f}, max{-1.0f};
+  bool empty() const { return !(min.x <= max.x && min.y <= max.y); }
+};
+
+// A box in pixels that holds every hit of the capsule at or beyond the near plane, clipped to the
+// image; empty when it is off-screen or wholly nearer than the near plane. Hits beyond the near plane
+// lie within `radius` of the part of the segment at depth >= near - radius; perspective keeps convex
+// sets convex, so the capsule's outline is the hull of its two end spheres' outlines, bounded exactly
+// per axis by the planes tangent to them. An end sphere reaching the eye's plane is unbounded: the
+// whole image (the tile pass takes such big boxes).
+inline PixelBox capsuleScreenBox(const ScreenView& view, glm::vec3 a, glm::vec3 b, float radius) {
+  glm::vec3 va = toView(view, a), vb = toView(view, b);
+  const float nearest = view.nearPlane - radius;
+  if (va.z < nearest && vb.z < nearest) return {};
+  if (va.z < nearest) va = glm::mix(va, vb, (nearest - va.z) / (vb.z - va.z));
+  if (vb.z < nearest) vb = glm::mix(vb, va, (nearest - vb.z) / (va.z - vb.z));
+  const glm::vec2 image = view.pixels;
+  PixelBox box{glm::vec2(0.0f), image};
+  if (std::min(va.z, vb.z) > radius * 1.001f) {
+    const glm::vec2 xa = sphereSlopes(va.x, va.z, radius), xb = sphereSlopes(vb.x, vb.z, radius);
+    const glm::vec2 ya = sphereSlopes(va.y, va.z, radius), yb = sphereSlopes(vb.y, vb.z, radius);
+    const float left = std::min(xa.x, xb.x), right = std::max(xa.y, xb.y);
+    const float down = std::min(ya.x, yb.x), up = std::max(ya.y, yb.y);
+    // slope / tanHalf is the NDC coordinate; y flips (framebuffer y points down).
+    box.min = {(left / view.tanHalfX + 1.0f) * 0.5f * image.x, (1.0f - up / view.tanHalfY) * 0.5f * image.y};
+    box.max = {(right / view.tanHalfX + 1.0f) * 0.5f * image.x, (1.0f - down / view.tanHalfY) * 0.5f * image.y};
+  }
+  box.min = glm::max(box.min, glm::vec2(0.0f));
+  box.max = glm::min(box.max, image);
+  return box;
+}
+
+// The sample cells (inclusive) whose samples may lie in the box: cell x spans pixels
+// [x / s, (x + 1) / s) and its sample lies inside it. min > max when there are none.
+struct CellBox {
+  glm::ivec2 min{0}, max{-1};
+  bool empty() const { return min.x > max.x || min.y > max.y; }
+  uint32_t count() const { return empty() ? 0u : uint32_t(max.x - min.x + 1) * uint32_t(max.y - min.y + 1); }
+};
+
+inline CellBox cellsOf(const PixelBox& box, uint32_t samplesPerAxis, glm::uvec2 pixels) {
+  if (box.empty()) return {};
+  const float s = float(samplesPerAxis);
+  const glm::ivec2 last = glm::ivec2(pixels * samplesPerAxis) - 1;
+  return {glm::max(glm::ivec2(glm::floor(box.min * s)), glm::ivec2(0)),
+          glm::min(glm::ivec2(glm::floor(box.max * s)), last)};
+}
+
+}  // namespace vitrine::noodles
