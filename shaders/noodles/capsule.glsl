@@ -104,4 +104,19 @@ ivec4 capsuleCells(ScreenView view, vec3 a, vec3 b, float radius, uint samplesPe
   return ivec4(max(ivec2(floor(lo * s)), ivec2(0)), min(ivec2(floor(hi * s)), last));
 }
 
+float nearestPossibleHit(vec3 eye, vec3 a, vec3 b, float radius) {
+  return max(distance(eye, mix(a, b, alongSegment(eye, a, b))) - radius, 0.0);
+}
+
+bool tileMayHit(ScreenView view, vec3 a, vec3 b, float radius, uvec2 firstCell, uint side, uint samplesPerAxis) {
+  float s = float(samplesPerAxis);
+  vec2 centre = (vec2(firstCell) + 0.5 * float(side)) / s;
+  vec2 slopePerPixel = vec2(2.0 * view.tanHalfX, 2.0 * view.tanHalfY) / view.pixels;
+  float angle = length(slopePerPixel * (0.5 * float(side) / s));
+  float reach = max(distance(a, view.eye), distance(b, view.eye)) + radius;
+  float fat = (radius + reach * angle) * 1.001 + 1e-6 * reach;
+  if (insideCapsule(view.eye, a, b, fat)) return true;
+  return capsuleHit(view.eye, normalize(rayThrough(view, centre)), a, b, fat) != NO_HIT;
+}
+
 #endif

@@ -1,4 +1,4 @@
-// Push constants of the tube rasteriser's passes (raster.comp, raster_tiles.comp, shade.comp);
+// Push constants of the tube rasteriser's passes (raster.comp, raster_big.comp, shade.comp);
 // mirrors RasterPush in src/scenes/noodles/raster_push.h.
 #ifndef NOODLES_RASTER_PUSH_GLSL
 #define NOODLES_RASTER_PUSH_GLSL
@@ -19,7 +19,7 @@ layout(push_constant) uniform Push {
   uint strands;          // in the whole grid, for colour
   uint colouring;
   uint stripe;           // 1: paint the side between frame angles 0 and 45 degrees
-  uint tileCapacity;     // entries the tile list holds
+  uint bigCapacity;      // entries the big-segment list holds
   uint firstStrand;      // the chunk's first strand
   uint chunkStrands;     // strands in this chunk
   uint invocationsPerRow;  // raster.comp's 2D dispatch: invocations in one row of workgroups

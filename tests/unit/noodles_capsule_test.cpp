@@ -202,5 +202,71 @@ TEST(NoodlesCapsule, BoxIsEmptyBehindTheCameraAndOffScreen) {
   EXPECT_EQ(close.max, glm::vec2(pixels));
 }
 
+// A tile the test turns away holds no hit, for random capsules near, far, crossing the near plane
+// and off-screen; and for a long, thin tube seen across the image most of its box is turned away.
+TEST(NoodlesCapsule, TilesTurnedAwayHoldNoHit) {
+  const glm::uvec2 pixels{64, 36};
+  const ScreenView view = testView({0.0f, -3.0f, 0.5f}, {0.0f, 0.0f, 0.0f}, glm::vec2(pixels));
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.005f, 0.3f), length(0.02f, 3.0f);
+  int turnedAway = 0, kept = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const glm::vec3 a{coordinate(rng), coordinate(rng) - 1.0f, coordinate(rng)};
+    const glm::vec3 b = a + length(rng) * glm::normalize(glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
+    const float r = radius(rng);
+    for (const uint32_t samples : {1u, 2u})
+      for (const uint32_t side : {4u, 8u})
+        for (uint32_t ty = 0; ty < pixels.y * samples; ty += side)
+          for (uint32_t tx = 0; tx < pixels.x * samples; tx += side) {
+            if (tileMayHit(view, a, b, r, {tx, ty}, side, samples)) {
+              ++kept;
+              continue;
+            }
+            ++turnedAway;
+            for (uint32_t y = ty; y < std::min(ty + side, pixels.y * samples); ++y)
+              for (uint32_t x = tx; x < std::min(tx + side, pixels.x * samples); ++x) {
+                const glm::vec3 direction = glm::normalize(rayThrough(view, cellSamplePosition({x, y}, samples)));
+                ASSERT_EQ(capsuleHit(view.eye, direction, a, b, r), kNoHit)
+                    << "trial " << trial << " tile " << tx << "," << ty << " side " << side << " cell " << x << "," << y;
+              }
+          }
+  }
+  EXPECT_GT(turnedAway, kept);  // the random tubes are thin: most tiles are turned away
+
+  // A thin diagonal tube across the view: its box is the whole image, its tiles mostly empty.
+  const glm::vec3 a{-1.5f, 0.0f, -0.8f}, b{1.5f, 0.0f, 1.8f};
+  const CellBox box = cellsOf(capsuleScreenBox(view, a, b, 0.01f), 2, pixels);
+  uint32_t tiles = 0, mayHit = 0;
+  for (int y = box.min.y; y <= box.max.y; y += 8)
+    for (int x = box.min.x; x <= box.max.x; x += 8) {
+      ++tiles;
+      if (tileMayHit(view, a, b, 0.01f, glm::uvec2(x, y), 8, 2)) ++mayHit;
+    }
+  EXPECT_GT(tiles, 100u);
+  EXPECT_LT(mayHit * 3, tiles) << mayHit << " of " << tiles << " tiles kept";
+}
+
+// No hit of random rays at random capsules lies nearer than the bound, and the bound is reached: a
+// ray straight at the axis' nearest point hits at it.
+TEST(NoodlesCapsule, NoHitIsNearerThanTheNearestPossible) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.01f, 0.5f);
+  const glm::vec3 eye{0.0f, -4.0f, 0.3f};
+  int hits = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const glm::vec3 a{coordinate(rng), coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng), coordinate(rng)};
+    const float r = radius(rng);
+    const glm::vec3 target = glm::mix(a, b, 0.5f) + 0.3f * glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+    const float t = capsuleHit(eye, glm::normalize(target - eye), a, b, r);
+    if (t == kNoHit) continue;
+    ++hits;
+    EXPECT_GE(t, nearestPossibleHit(eye, a, b, r) * (1.0f - 1e-5f)) << "trial " << trial;
+  }
+  EXPECT_GT(hits, 200);
+  const glm::vec3 a{-1.0f, 0.0f, 0.0f}, b{1.0f, 0.0f, 0.0f};
+  EXPECT_NEAR(capsuleHit(eye, glm::normalize(glm::vec3(0.0f) - eye), a, b, 0.2f), nearestPossibleHit(eye, a, b, 0.2f),
+              1e-5f);
+}
+
 }  // namespace
 }  // namespace vitrine::noodles

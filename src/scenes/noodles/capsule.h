@@ -181,4 +181,28 @@ inline CellBox cellsOf(const PixelBox& box, uint32_t samplesPerAxis, glm::uvec2 
           glm::min(glm::ivec2(glm::floor(box.max * s)), last)};
 }
 
+// No ray from `eye` meets the capsule nearer than this: the distance to its axis' nearest point, less
+// the radius. A sample already holding a nearer hit needs no ray cast for it.
+inline float nearestPossibleHit(glm::vec3 eye, glm::vec3 a, glm::vec3 b, float radius) {
+  return std::max(glm::distance(eye, glm::mix(a, b, alongSegment(eye, a, b))) - radius, 0.0f);
+}
+
+// Whether a square of side x side sample cells, from firstCell, may hold a hit of the capsule (the
+// rasteriser skips the tiles of a big box that cannot). Conservative: every ray of the tile turns
+// from the ray through its centre by at most `angle` (the tile's half-diagonal on the image plane at
+// distance 1, which the turn onto the unit sphere only shrinks), so a hit at distance t on any of them
+// has a point of the centre ray within t * angle of it, and t is at most `reach`. The centre ray then
+// meets the capsule fattened by reach * angle, or starts inside it.
+inline bool tileMayHit(const ScreenView& view, glm::vec3 a, glm::vec3 b, float radius, glm::uvec2 firstCell,
+                       uint32_t side, uint32_t samplesPerAxis) {
+  const float s = float(samplesPerAxis);
+  const glm::vec2 centre = (glm::vec2(firstCell) + 0.5f * float(side)) / s;
+  const glm::vec2 slopePerPixel = glm::vec2(2.0f * view.tanHalfX, 2.0f * view.tanHalfY) / view.pixels;
+  const float angle = glm::length(slopePerPixel * (0.5f * float(side) / s));
+  const float reach = std::max(glm::distance(a, view.eye), glm::distance(b, view.eye)) + radius;
+  const float fat = (radius + reach * angle) * 1.001f + 1e-6f * reach;  // rounding never turns a hit away
+  if (insideCapsule(view.eye, a, b, fat)) return true;
+  return capsuleHit(view.eye, glm::normalize(rayThrough(view, centre)), a, b, fat) != kNoHit;
+}
+
 }  // namespace vitrine::noodles

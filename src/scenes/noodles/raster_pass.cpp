@@ -14,7 +14,7 @@ namespace {
 
 constexpr uint32_t kSegmentGroupSize = 64;   // raster.comp's local size
 constexpr VkDeviceSize kKeyBytes = 8;        // one uint64_t key a sample
-constexpr VkDeviceSize kTileEntryBytes = 8;  // uvec2 (segment, tile)
+constexpr VkDeviceSize kBigEntryBytes = 4;  // a chunk-local segment index
 
 const gpu::ProgramLayout kRasterLayout{{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -39,13 +39,13 @@ gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
 RasterPass::RasterPass(const SceneContext& context)
     : device_(context.device),
       segments_(programsWithInt64Atomics(context), "noodles/raster.comp", kRasterLayout),
-      tiles_(context.programs, "noodles/raster_tiles.comp", kRasterLayout),
-      tileList_(context.device, kTileCapacity * kTileEntryBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                gpu::MemoryUse::Device, "noodles tile list"),
+      bigSegments_(context.programs, "noodles/raster_big.comp", kRasterLayout),
+      bigList_(context.device, kBigCapacity * kBigEntryBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                gpu::MemoryUse::Device, "noodles big segments"),
       counters_(
           context.device, 4 * sizeof(uint32_t),
           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-          gpu::MemoryUse::Device, "noodles tile counters") {}
+          gpu::MemoryUse::Device, "noodles big-segment counters") {}
 
 void RasterPass::ensureVisibility(VkExtent2D extent, bool multisample) {
   const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
@@ -69,18 +69,18 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
   gpu::fillBuffer(frame.cmd, visibility_, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
   RasterPush push = rasterPush(view, layout, samplesPerAxis_);
-  push.tileCapacity = kTileCapacity;
+  push.bigCapacity = kBigCapacity;
   const uint32_t maxGroupsX = device_.limits().maxComputeWorkGroupCount[0];
   for (const StrandChunk& chunk : layout.chunks) {
-    // No tiles listed yet; the tile pass's y and z group counts are 1.
+    // Nothing listed yet; the big-segment pass's y and z group counts are 1.
     constexpr std::array<uint32_t, 4> kReset{0, 1, 1, 0};
     frame.upload(counters_, 0, std::as_bytes(std::span(kReset)), gpu::use::ComputeReadWriteBuffer);
-    tileList_.use(frame.cmd, gpu::use::ComputeWriteBuffer);
+    bigList_.use(frame.cmd, gpu::use::ComputeWriteBuffer);
     visibility_.use(frame.cmd, gpu::use::ComputeReadWriteBuffer);
     const gpu::Bindings bindings = gpu::Bindings()
                                        .storageBuffer(nodes, chunk.offset, chunk.bytes)
                                        .storageBuffer(visibility_.handle())
-                                       .storageBuffer(tileList_.handle())
+                                       .storageBuffer(bigList_.handle())
                                        .storageBuffer(counters_.handle());
     // One invocation a segment, in rows of workgroups when there are more than one row may hold.
     const uint64_t groups = (uint64_t(chunk.strandCount) * layout.segments + kSegmentGroupSize - 1) / kSegmentGroupSize;
@@ -94,11 +94,11 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
     segments_.constants(frame.cmd, push);
     vkCmdDispatch(frame.cmd, groupsX, groupsY, 1);
 
-    tileList_.use(frame.cmd, gpu::use::ComputeReadBuffer);
+    bigList_.use(frame.cmd, gpu::use::ComputeReadBuffer);
     visibility_.use(frame.cmd, gpu::use::ComputeReadWriteBuffer);
-    tiles_.bind(frame.cmd);
-    tiles_.push(frame.cmd, bindings);
-    tiles_.constants(frame.cmd, push);
+    bigSegments_.bind(frame.cmd);
+    bigSegments_.push(frame.cmd, bindings);
+    bigSegments_.constants(frame.cmd, push);
     gpu::dispatchIndirect(frame.cmd, counters_);
   }
 }

@@ -2,9 +2,10 @@
 // The compute rasteriser of the tubes: clears the visibility buffer (one 64-bit key a sample: the
 // nearest hit's ordered distance over its segment's id), then per chunk of strands one invocation
 // per segment culls and bounds its capsule and casts the rays of a small box itself, listing a big
-// box's 8x8-cell tiles for a second, indirect dispatch in which a workgroup takes each tile.
-// The pass owns the visibility buffer (sized to the target and the sample count), the tile list and
-// its counters; shade_pass.h reads the visibility buffer after it.
+// segment for a second, indirect dispatch in which a workgroup takes each, tile by tile, skipping the
+// tiles its tube cannot reach.
+// The pass owns the visibility buffer (sized to the target and the sample count), the big-segment
+// list and its counters; shade_pass.h reads the visibility buffer after it.
 #include "gpu/program.h"
 #include "gpu/resources.h"
 #include "scenes/noodles/strand_layout.h"
@@ -13,8 +14,8 @@
 
 namespace vitrine::noodles {
 
-// Listed tiles (32 MiB): 10^6 segments at 1080p list ~3.7 M; past it raster.comp casts them itself.
-inline constexpr uint32_t kTileCapacity = 1u << 22;
+// Listed big segments (16 MiB): past it raster.comp casts a big box itself.
+inline constexpr uint32_t kBigCapacity = 1u << 22;
 
 class RasterPass {
  public:
@@ -30,10 +31,10 @@ class RasterPass {
 
   const gpu::Device& device_;
   gpu::ComputeProgram segments_;
-  gpu::ComputeProgram tiles_;
+  gpu::ComputeProgram bigSegments_;
   gpu::Buffer visibility_;
-  gpu::Buffer tileList_;
-  gpu::Buffer counters_;  // VkDispatchIndirectCommand for the tile pass, then the tile count
+  gpu::Buffer bigList_;
+  gpu::Buffer counters_;  // VkDispatchIndirectCommand for the big-segment pass, then the listed count
   VkExtent2D extent_{0, 0};
   uint32_t samplesPerAxis_ = 0;
 };

@@ -56,7 +56,7 @@ struct RasterPush {
   uint32_t strands;
   uint32_t colouring;
   uint32_t stripe;
-  uint32_t tileCapacity;
+  uint32_t bigCapacity;
   uint32_t firstStrand;
   uint32_t chunkStrands;
   uint32_t invocationsPerRow;
