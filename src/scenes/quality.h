@@ -33,6 +33,17 @@ class AutoTier {
   // Feeds one frame's GPU time; returns the tier to use next.
   Tier observe(double gpuMs, double targetMs) {
     if (gpuMs <= 0.0) return current_;
+    // Frames of seconds (noodles' high tier on a CPU device) must not wait out eight of themselves:
+    // two in a row far over the target step down at once, to the lowest tier when eight times over.
+    // One alone (a shader compiling, a scene starting) is a hitch, not a verdict.
+    if (gpuMs > targetMs * 4.0 && current_ != Tier::Low) {
+      if (++farOver_ >= 2) {
+        current_ = gpuMs > targetMs * 8.0 ? Tier::Low : Tier(int(current_) + 1);
+        farOver_ = slow_ = fast_ = 0;
+      }
+      return current_;
+    }
+    farOver_ = 0;
     if (gpuMs > targetMs * 1.1) {
       fast_ = 0;
       if (++slow_ >= 8 && current_ != Tier::Low) current_ = Tier(int(current_) + 1), slow_ = 0;
@@ -48,7 +59,7 @@ class AutoTier {
 
  private:
   Tier current_ = Tier::High;
-  uint32_t slow_ = 0, fast_ = 0;
+  uint32_t slow_ = 0, fast_ = 0, farOver_ = 0;
 };
 
 // A render scale per tier, the common case: high 1, medium 0.7, low 0.5 (a quarter of the pixels).

@@ -140,5 +140,21 @@ TEST(AutoTier, StepsDownWhenSlowAndBackUpWhenFast) {
   EXPECT_EQ(tier.current(), Tier::Medium);
 }
 
+TEST(AutoTier, FramesFarOverTheTargetStepDownAtOnceButOneHitchDoesNot) {
+  AutoTier tier;
+  tier.observe(100.0, 16.0);  // one hitch, then back on target
+  tier.observe(16.0, 16.0);
+  EXPECT_EQ(tier.current(), Tier::High);
+  tier.observe(100.0, 16.0);  // two in a row, 6x over: one tier
+  tier.observe(100.0, 16.0);
+  EXPECT_EQ(tier.current(), Tier::Medium);
+
+  AutoTier seconds;  // noodles' high tier on lavapipe: ~3 s a frame against 16 ms
+  seconds.observe(2900.0, 16.0);
+  EXPECT_EQ(seconds.current(), Tier::High);
+  seconds.observe(2900.0, 16.0);
+  EXPECT_EQ(seconds.current(), Tier::Low) << "straight to the lowest tier, after two frames, not sixteen";
+}
+
 }  // namespace
 }  // namespace vitrine
