@@ -7,6 +7,8 @@ set -uo pipefail
 mode=$1 target=$2
 export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}
+# Third-party leaks only, each with its reason (fuzz/lsan.supp).
+export LSAN_OPTIONS=suppressions=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}
 case $mode in
 fuzz)
   seconds=$3 work=$4 seeds=$5

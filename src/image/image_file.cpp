@@ -1,6 +1,7 @@
 #include "image/image_file.h"
 
 #include <fcntl.h>
+#include <OpenEXR/openexr.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -32,6 +33,21 @@ std::string_view fileKind(mode_t mode) {
 }
 
 std::string osReason(int error) { return std::system_category().message(error); }
+
+// OpenEXR's first complaint about a header, kept for the error message (its messages quote attribute
+// names and types straight from the file: bytes that are not printable ASCII are written as \xNN).
+thread_local std::string exrComplaint;
+
+void keepExrComplaint(exr_const_context_t, exr_result_t code, const char* message) {
+  if (!exrComplaint.empty()) return;
+  std::string text;
+  for (const char* c = message ? message : ""; *c; ++c) {
+    const auto byte = static_cast<unsigned char>(*c);
+    if (byte >= 0x20 && byte < 0x7f) text += *c;
+    else text += fmt::format("\\x{:02x}", byte);
+  }
+  exrComplaint = fmt::format("{} ({})", text, exr_get_error_code_as_string(code));
+}
 
 }  // namespace
 
@@ -69,10 +85,44 @@ void checkExrFile(const std::filesystem::path& path) {
   if (got < 0) throw Error(fmt::format("Cannot read {}: {}.", path.string(), osReason(error)));
   if (got == 0) throw Error(fmt::format("Cannot read {}: it is empty, not an EXR.", path.string()));
   const std::string_view format = sniffImageFormat(std::span(head.data(), size_t(got)));
-  if (format == "EXR") return;
+  if (format == "EXR") return checkExrHeader(path);
   if (!format.empty()) throw Error(fmt::format("Cannot read {}: it is a {} file, not an EXR.", path.string(), format));
   throw Error(fmt::format("Cannot read {}: it is not an EXR (its first bytes are not the EXR magic number).",
                           path.string()));
+}
+
+void checkExrHeader(const std::filesystem::path& path) {
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.error_handler_fn = keepExrComplaint;
+  init.max_image_width = init.max_image_height = kMaxExrSide;
+  init.max_tile_width = init.max_tile_height = kMaxExrSide;
+  // Strict: an attribute that claims more bytes than the file holds, a window or tile size out of range,
+  // a required attribute missing, each ends the parse with an error instead of a guess.
+  init.flags = EXR_CONTEXT_FLAG_STRICT_HEADER;
+  exrComplaint.clear();
+  exr_context_t context = nullptr;
+  const exr_result_t result = exr_start_read(&context, path.c_str(), &init);
+  exr_finish(&context);
+  if (result == EXR_ERR_SUCCESS) return;
+  std::string why = exrComplaint.empty()
+                        ? fmt::format("{} ({})", exr_get_default_error_message(result), exr_get_error_code_as_string(result))
+                        : exrComplaint;
+  exrComplaint.clear();
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  throw Error(fmt::format("Cannot read {}: its EXR header is inconsistent, refused before decoding: {}{}.",
+                          path.string(), why, ec ? "" : fmt::format("; the file is {} bytes", bytes)));
+}
+
+bool startsLikeExr(const std::filesystem::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  std::array<unsigned char, 4> head{};
+  const ssize_t got = ::read(fd, head.data(), head.size());
+  ::close(fd);
+  return got == ssize_t(head.size()) && sniffImageFormat(std::span(head.data(), head.size())) == "EXR";
 }
 
 }  // namespace vitrine

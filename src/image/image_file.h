@@ -12,7 +12,22 @@ namespace vitrine {
 // are enough); empty when none of them.
 std::string_view sniffImageFormat(std::span<const unsigned char> head);
 
-// Throws vitrine::Error naming the path unless it is a regular file whose bytes begin like an EXR.
+// Throws vitrine::Error naming the path unless it is a regular file whose bytes begin like an EXR and
+// whose header OpenEXR's C core reads whole (checkExrHeader).
 void checkExrFile(const std::filesystem::path& path);
+
+// The largest EXR side Vitrine reads (a panorama, a backdrop, a golden frame).
+constexpr int kMaxExrSide = 16384;
+
+// Throws vitrine::Error naming the path and what is wrong unless OpenEXR's C core (OpenEXRCore,
+// exr_start_read with strict header checks) parses the whole header of the EXR file at `path`: every
+// attribute inside the file, sizes and windows consistent, at most kMaxExrSide pixels a side. It reads
+// the header only, in well under a millisecond, and runs before OpenImageIO or OpenEXR's C++ library
+// see the file: the C++ library trusts an attribute's declared size and allocated and cleared 1.7 GB
+// for an 857-byte file (fuzz/image_exr; tests/fuzz-regressions/image_exr/huge-attribute-*).
+void checkExrHeader(const std::filesystem::path& path);
+
+// True when `path` is a regular file whose first bytes are the EXR magic number (whatever its name).
+bool startsLikeExr(const std::filesystem::path& path);
 
 }  // namespace vitrine

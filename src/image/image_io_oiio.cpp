@@ -79,6 +79,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
+  if (startsLikeExr(path)) checkExrHeader(path);  // whatever its name: OpenImageIO picks by content too
   OIIO::ImageBuf source = openFresh(path);
   if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
     throw Error(fmt::format("Cannot read {}: {}", path.string(), readError(source)));

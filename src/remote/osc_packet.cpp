@@ -60,6 +60,14 @@ struct MessageDeleter {
 };
 using OwnedMessage = std::unique_ptr<std::remove_pointer_t<lo_message>, MessageDeleter>;
 
+// A number of type T from an argument's bytes, copied out (they need not be aligned for T); 0 without bytes.
+template <typename T>
+T load(const char* data) {
+  T value{};
+  if (data) std::memcpy(&value, data, sizeof value);
+  return value;
+}
+
 }  // namespace
 
 bool splitOscPacket(std::span<const std::byte> packet, std::vector<std::span<const std::byte>>& messages,
@@ -85,16 +93,21 @@ bool decodeOscMessage(std::span<const std::byte> bytes, OscMessage& message, std
   const int argc = lo_message_get_argc(decoded.get());
   for (int i = 0; i < argc && types && types[i]; ++i) {
     OscArgument arg{.type = types[i]};
-    const lo_arg& value = *argv[i];
+    // An argument's bytes, as liblo points at them: null for the types that carry none (T, F, N, I), and
+    // only 4-byte aligned in the packet, so an 8-byte lo_arg (h, d) is never read in place (UBSan found
+    // both: a reference bound to a null and to a misaligned lo_arg).
+    const char* data = reinterpret_cast<const char*>(argv ? argv[i] : nullptr);
     switch (types[i]) {
-      case LO_INT32: arg.number = value.i; break;
-      case LO_INT64: arg.number = double(value.h); break;
-      case LO_FLOAT: arg.number = value.f; break;
-      case LO_DOUBLE: arg.number = value.d; break;
+      case LO_INT32: arg.number = load<int32_t>(data); break;
+      case LO_INT64: arg.number = double(load<int64_t>(data)); break;
+      case LO_FLOAT: arg.number = load<float>(data); break;
+      case LO_DOUBLE: arg.number = load<double>(data); break;
       case LO_TRUE: arg.number = 1.0; break;
       case LO_FALSE: arg.number = 0.0; break;
       case LO_STRING:
-      case LO_SYMBOL: arg.text = &value.s; break;
+      case LO_SYMBOL:
+        if (data) arg.text = data;
+        break;
       default: break;  // blobs, MIDI, time tags, nil, infinitum: kept as a type the parsers refuse
     }
     message.args.push_back(std::move(arg));

@@ -12,6 +12,7 @@
 #include "support/temp_folder.h"
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -141,6 +142,42 @@ TEST_F(ImageFiles, AFileReplacedUnderTheSameNameIsReadAsItIsNow) {
       if (std::string_view(format) == "exr") EXPECT_EQ(readImage(path).width, i == 2 ? 8u : 7u);
     }
   }
+}
+
+// A fuzzed EXR (tests/fuzz-regressions/image_exr/huge-attribute-*, 857 bytes) whose first attribute
+// claims 1 768 882 176 bytes: OpenEXR's C++ library, inside OpenImageIO, allocated and cleared that much
+// before finding the file too short (over 10 s under ASan). OpenEXR's C core now reads the header
+// first: both readers refuse the file at once, saying which attribute is wrong and how big the file is.
+TEST_F(ImageFiles, AnExrHeaderClaimingMoreThanTheFileIsRefusedAtOnce) {
+  const auto kept = std::filesystem::path(VITRINE_FUZZ_REGRESSION_DIR) / "image_exr" / "huge-attribute-0c69f309.exr";
+  for (const char* name : {"panorama.exr", "backdrop.jpg"}) {  // readPicture judges by content, not name
+    const auto path = folder_ / name;
+    std::filesystem::copy_file(kept, path);
+    const auto start = std::chrono::steady_clock::now();
+    const std::string why = readError(path);
+    std::string pictureWhy = "no error";
+    try {
+      readPicture(path, 2048);
+    } catch (const Error& e) {
+      pictureWhy = e.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    for (const std::string& message : {why, pictureWhy}) {
+      EXPECT_TRUE(contains(message, "Cannot read " + path.string() + ": its EXR header is inconsistent")) << message;
+      EXPECT_TRUE(contains(message, "'Exif:ImageHistoring'")) << message;
+      EXPECT_TRUE(contains(message, "1768882176")) << message;
+      EXPECT_TRUE(contains(message, "the file is 857 bytes")) << message;
+    }
+  }
+}
+
+// Every EXR Vitrine ships or makes passes the header check: the seeds' compressions, the goldens.
+TEST_F(ImageFiles, WellFormedExrHeadersPassTheCheck) {
+  const auto path = folder_ / "written.exr";
+  writeImage(path, flat(8, 8, 0.5f));
+  EXPECT_NO_THROW(checkExrHeader(path));
+  for (const char* pair : {"stale-cache-1.exr", "stale-cache-2.exr"})
+    EXPECT_NO_THROW(checkExrHeader(std::filesystem::path(VITRINE_FUZZ_REGRESSION_DIR) / "image_exr" / pair));
 }
 
 TEST(ImageFormat, SniffsTheCommonFormats) {
