@@ -22,6 +22,11 @@ void main() {
   if (cells.x > cells.z || cells.y > cells.w) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
   if (size.x * size.y <= MOST_CELLS_INLINE) {
+    if (pc.samplesPerAxis == 2u) {
+      for (int y = cells.y >> 1; y <= cells.w >> 1; ++y)
+        for (int x = cells.x >> 1; x <= cells.z >> 1; ++x) rasterPixel(uvec2(x, y), cells, s);
+      return;
+    }
     for (int y = cells.y; y <= cells.w; ++y)
       for (int x = cells.x; x <= cells.z; ++x) rasterSample(uvec2(x, y), s);
     return;

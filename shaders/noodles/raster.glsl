@@ -49,17 +49,9 @@ Segment loadSegment(uint index) {
   return s;
 }
 
-void rasterSample(uvec2 cell, Segment s) {
-  uvec2 pixel = cell / pc.samplesPerAxis;
-  uvec2 quarter = cell - pixel * pc.samplesPerAxis;
-  uint sample_ = (pixel.y * uint(pc.pixels.x) + pixel.x) * pc.samplesPerAxis * pc.samplesPerAxis +
-                 quarter.y * pc.samplesPerAxis + quarter.x;
-  // Keys only fall, so a plain read already nearer than anything this segment can put there (stale,
-  // or even torn: its high half is still some key's depth) spares the ray, and one nearer than the
-  // ray's hit spares the atomic: at ~16 hits a sample (10^6 segments at 1080p) most are skipped so.
-  // (The ray test before the read: 4.0 ms for 10^6 segments on the H100; the read first: 3.25 ms.)
-  uint held = uint(keys[sample_] >> 32);
-  if (s.nearestBits > held) return;
+// The ray of sample cell `cell` (key `sample_`, whose depth bits read `held`) at the segment: its
+// hit, if nearer than what the key holds, goes in with an atomicMin.
+void castSample(uvec2 cell, uint sample_, uint held, Segment s) {
   vec3 direction = normalize(rayThrough(screenView(), cellSamplePosition(cell, pc.samplesPerAxis)));
   float t = capsuleHit(pc.eye, direction, s.a, s.b, pc.radius);
   if (t == NO_HIT || t * dot(direction, pc.forward) < pc.nearPlane) return;
@@ -69,6 +61,32 @@ void rasterSample(uvec2 cell, Segment s) {
   uint depth = orderedBits(t);
   if (depth > held) return;
   atomicMin(keys[sample_], (uint64_t(depth) << 32) | uint64_t(s.id));
+}
+
+// Keys only fall, so a plain read already nearer than anything this segment can put there (stale,
+// or even torn: its high half is still some key's depth) spares the ray, and one nearer than the
+// ray's hit spares the atomic: at ~16 hits a sample (10^6 segments at 1080p) most are skipped so.
+// (The ray test before the read: 4.0 ms for 10^6 segments on the H100; the read first: 3.25 ms.)
+void rasterSample(uvec2 cell, Segment s) {
+  uvec2 pixel = cell / pc.samplesPerAxis;
+  uvec2 quarter = cell - pixel * pc.samplesPerAxis;
+  uint sample_ = (pixel.y * uint(pc.pixels.x) + pixel.x) * pc.samplesPerAxis * pc.samplesPerAxis +
+                 quarter.y * pc.samplesPerAxis + quarter.x;
+  uint held = uint(keys[sample_] >> 32);
+  if (s.nearestBits <= held) castSample(cell, sample_, held, s);
+}
+
+// The four samples of a pixel (two samples an axis) at once: their keys are adjacent, one read
+// between them, and a pixel whose four samples all hold nearer hits is passed over whole.
+void rasterPixel(uvec2 pixel, ivec4 cells, Segment s) {
+  uint first = (pixel.y * uint(pc.pixels.x) + pixel.x) * 4u;
+  uvec4 held = uvec4(keys[first] >> 32, keys[first + 1u] >> 32, keys[first + 2u] >> 32, keys[first + 3u] >> 32);
+  if (all(greaterThan(uvec4(s.nearestBits), held))) return;
+  for (uint q = 0u; q < 4u; ++q) {
+    uvec2 cell = pixel * 2u + uvec2(q & 1u, q >> 1u);
+    if (s.nearestBits <= held[q] && all(greaterThanEqual(ivec2(cell), cells.xy)) && all(lessThanEqual(ivec2(cell), cells.zw)))
+      castSample(cell, first + q, held[q], s);
+  }
 }
 
 #endif
