@@ -370,7 +370,10 @@ TEST(NoodlesLayout, TenMillionSegmentsSplitIntoAlignedChunks) {
     EXPECT_EQ(chunk.offset, strands * layout.strandBytes);
     EXPECT_EQ(chunk.offset % budget.storageOffsetAlignment, 0u);
     EXPECT_LE(chunk.bytes, budget.maxStorageBufferRange);
-    EXPECT_GE(uint64_t(chunk.groupsX) * chunk.groupsY * kIntegrateGroupSize, chunk.strandCount);
+    EXPECT_GE(uint64_t(chunk.integrateGroups.x) * chunk.integrateGroups.y * kIntegrateGroupSize, chunk.strandCount);
+    EXPECT_GE(uint64_t(chunk.rasterGroups.x) * chunk.rasterGroups.y * kRasterGroupSize,
+              uint64_t(chunk.strandCount) * layout.segments);
+    EXPECT_LE(chunk.rasterGroups.x, budget.maxGroupCountX);
     strands += chunk.strandCount;
   }
   EXPECT_EQ(strands, layout.strands);

@@ -57,10 +57,10 @@ void IntegratePass::record(VkCommandBuffer cmd, const StrandLayout& layout, VkBu
   for (const StrandChunk& chunk : layout.chunks) {
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    push.invocationsPerRow = chunk.groupsX * kIntegrateGroupSize;
+    push.invocationsPerRow = chunk.integrateGroups.x * kIntegrateGroupSize;
     program_.push(cmd, gpu::Bindings().storageBuffer(nodes, chunk.offset, chunk.bytes));
     program_.constants(cmd, push);
-    vkCmdDispatch(cmd, chunk.groupsX, chunk.groupsY, 1);
+    vkCmdDispatch(cmd, chunk.integrateGroups.x, chunk.integrateGroups.y, 1);
   }
 }
 

@@ -12,7 +12,6 @@
 namespace vitrine::noodles {
 namespace {
 
-constexpr uint32_t kSegmentGroupSize = 64;   // raster.comp's local size
 constexpr VkDeviceSize kKeyBytes = 8;        // one uint64_t key a sample
 constexpr VkDeviceSize kBigEntryBytes = 4;  // a chunk-local segment index
 
@@ -70,7 +69,6 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
 
   RasterPush push = rasterPush(view, layout, samplesPerAxis_);
   push.bigCapacity = kBigCapacity;
-  const uint32_t maxGroupsX = device_.limits().maxComputeWorkGroupCount[0];
   for (const StrandChunk& chunk : layout.chunks) {
     // Nothing listed yet; the big-segment pass's y and z group counts are 1.
     constexpr std::array<uint32_t, 4> kReset{0, 1, 1, 0};
@@ -82,17 +80,13 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
                                        .storageBuffer(visibility_.handle())
                                        .storageBuffer(bigList_.handle())
                                        .storageBuffer(counters_.handle());
-    // One invocation a segment, in rows of workgroups when there are more than one row may hold.
-    const uint64_t groups = (uint64_t(chunk.strandCount) * layout.segments + kSegmentGroupSize - 1) / kSegmentGroupSize;
-    const uint32_t groupsX = uint32_t(std::min<uint64_t>(groups, maxGroupsX));
-    const uint32_t groupsY = uint32_t((groups + groupsX - 1) / groupsX);
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    push.invocationsPerRow = groupsX * kSegmentGroupSize;
+    push.invocationsPerRow = chunk.rasterGroups.x * kRasterGroupSize;
     segments_.bind(frame.cmd);
     segments_.push(frame.cmd, bindings);
     segments_.constants(frame.cmd, push);
-    vkCmdDispatch(frame.cmd, groupsX, groupsY, 1);
+    vkCmdDispatch(frame.cmd, chunk.rasterGroups.x, chunk.rasterGroups.y, 1);  // one invocation a segment
 
     bigList_.use(frame.cmd, gpu::use::ComputeReadBuffer);
     visibility_.use(frame.cmd, gpu::use::ComputeReadWriteBuffer);

@@ -17,6 +17,7 @@ class Device;
 namespace vitrine::noodles {
 
 inline constexpr uint32_t kIntegrateGroupSize = 64;  // invocations per workgroup, one strand each
+inline constexpr uint32_t kRasterGroupSize = 64;     // raster.comp's, one segment each
 
 // The device limits that bound the strand buffer.
 struct DeviceBudget {
@@ -30,12 +31,19 @@ struct DeviceBudget {
 
 DeviceBudget deviceBudget(const gpu::Device& device);
 
+// A 1D dispatch laid out in rows of workgroups, for counts past maxComputeWorkGroupCount[0]: x
+// workgroups a row, y rows; a shader finds its index as row * (x * group size) + column.
+struct GroupRows {
+  uint32_t x = 0, y = 0;
+};
+
 struct StrandChunk {
   uint32_t firstStrand = 0;
   uint32_t strandCount = 0;
   uint64_t offset = 0;  // bytes into the node buffer
   uint64_t bytes = 0;
-  uint32_t groupsX = 0, groupsY = 0;  // the integrate dispatch
+  GroupRows integrateGroups;  // one invocation a strand
+  GroupRows rasterGroups;     // one invocation a segment
 };
 
 struct StrandLayout {
