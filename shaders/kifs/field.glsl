@@ -73,4 +73,15 @@ float field(vec3 p, int step, out vec3 trap) {
 float marchStep(float d, int step) { return step == 1 ? abs(d) + 0.015 : abs(d) * 0.45 + 0.015; }
 float emission(float d) { return 0.0035 / (abs(d) + 0.005); }
 
+const vec3 COL_HOT = vec3(1.0, 0.84, 0.42);
+const vec3 COL_AMBER = vec3(0.961, 0.620, 0.043);
+const vec3 COL_EMBER = vec3(0.45, 0.10, 0.03);
+
+// Amber, and from stage 7 the orbit trap's gold core and rust recesses.
+vec3 sampleColour(vec3 trap, int step) {
+  if (step < 7) return COL_AMBER;
+  vec3 colour = mix(COL_HOT, COL_AMBER, smoothstep(0.0, 1.0, trap.x));
+  return mix(colour, COL_EMBER, smoothstep(0.0, 1.0, trap.y));
+}
+
 #endif

@@ -20,9 +20,6 @@ layout(push_constant) uniform Push {
 } pc;
 
 const vec3 NAVY = vec3(0.027, 0.043, 0.098);
-const vec3 COL_HOT = vec3(1.0, 0.84, 0.42);
-const vec3 COL_AMBER = vec3(0.961, 0.620, 0.043);
-const vec3 COL_EMBER = vec3(0.45, 0.10, 0.03);
 
 void main() {
   ivec2 size = imageSize(target);
@@ -36,18 +33,14 @@ void main() {
   vec3 rd = tumble(normalize(vec3(uv, 1.0)), pc.step, pc.angles);
   uvec2 up = uvec2(pixel);
 
+  // The march is marchGlow in src/scenes/kifs/kifs_math.h.
   // Stage 9: jitter the ray start so neighbouring pixels sample the volume out of step.
   float t = pc.step >= 9 ? hash01(uvec3(up, pc.jitterFrame * 3u + pc.seed * 7919u)) * 0.05 : 0.0;
   vec3 glow = vec3(0.0);
   for (int i = 0; i < pc.maxSteps; ++i) {
     vec3 trap;
     float d = field(ro + rd * t, pc.step, trap);
-    vec3 colour = COL_AMBER;
-    if (pc.step >= 7) {  // orbit trap: gold at the core, amber, rust in the recesses
-      colour = mix(COL_HOT, COL_AMBER, smoothstep(0.0, 1.0, trap.x));
-      colour = mix(colour, COL_EMBER, smoothstep(0.0, 1.0, trap.y));
-    }
-    glow += colour * emission(d);
+    glow += sampleColour(trap, pc.step) * emission(d);
     t += marchStep(d, pc.step);
     if (t > 10.0 || max(glow.r, max(glow.g, glow.b)) > 4.0) break;  // past the scene, or saturated
   }

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace vitrine {
 namespace {
@@ -126,6 +128,55 @@ TEST(Field, MarchAlwaysAdvances) {
 TEST(Vignette, QuadraticFalloff) {
   EXPECT_FLOAT_EQ(kifs::vignette({0, 0}), 1.0f);
   EXPECT_NEAR(kifs::vignette({0.5f, 0.5f}), 1.0f - 0.55f * 0.5f, 1e-6f);
+}
+
+// The finished picture's display value along a grid of the shader's rays (stage 9, no jitter), at a
+// march budget: what a tier's budget changes is measured on the rays themselves.
+std::vector<glm::vec3> displayRays(int maxSteps) {
+  const glm::vec2 angles = 3.0f * kifs::kTumbleRate;
+  std::vector<glm::vec3> out;
+  for (int y = 0; y < 36; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const glm::vec2 uv{(x + 0.5f - 32.0f) / 36.0f, -(y + 0.5f - 18.0f) / 36.0f};
+      const glm::vec3 ro = kifs::tumble({0.0f, 0.0f, -4.5f}, 9, angles);
+      const glm::vec3 rd = kifs::tumble(glm::normalize(glm::vec3(uv, 1.0f)), 9, angles);
+      const glm::vec3 glow = kifs::marchGlow(ro, rd, 0.0f, 9, maxSteps) * kifs::vignette(uv) * 0.9f;
+      out.push_back(kifs::kNavy + maths::acesNarkowicz(glow));
+    }
+  return out;
+}
+
+// Share of rays whose display value moves by more than the golden metric's 0.1 per channel.
+double shareMoved(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+  size_t moved = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const glm::vec3 d = glm::abs(a[i] - b[i]);
+    moved += std::max(d.x, std::max(d.y, d.z)) > 0.1f;
+  }
+  return double(moved) / double(a.size());
+}
+
+TEST(KifsTiers, EveryTierMarchesThePictureOfTheFullBudget) {
+  const auto full = displayRays(kifs::kTierMarch[int(Tier::High)].marchSteps);
+  double fullMean = 0.0;
+  for (const auto& c : full) fullMean += c.r + c.g + c.b;
+  for (const Tier tier : {Tier::Medium, Tier::Low}) {
+    const auto rays = displayRays(kifs::kTierMarch[int(tier)].marchSteps);
+    double mean = 0.0;
+    for (const auto& c : rays) mean += c.r + c.g + c.b;
+    EXPECT_LT(shareMoved(full, rays), 0.005) << "tier " << int(tier) << " changes the picture";
+    EXPECT_NEAR(mean / fullMean, 1.0, 0.01) << "tier " << int(tier) << " dims the frame";
+  }
+  // The old low tier's 40 steps cut the core's rays short: stripes across it, a dimmer frame.
+  EXPECT_GT(shareMoved(full, displayRays(40)), 0.01);
+}
+
+TEST(KifsTiers, LowerTiersCostLess) {
+  for (int t = int(Tier::High); t < int(Tier::Low); ++t) {
+    const auto& a = kifs::kTierMarch[t];
+    const auto& b = kifs::kTierMarch[t + 1];
+    EXPECT_LT(b.marchSteps * b.renderScale * b.renderScale, a.marchSteps * a.renderScale * a.renderScale);
+  }
 }
 
 TEST(AutoTier, StepsDownWhenSlowAndBackUpWhenFast) {

@@ -17,19 +17,7 @@ const std::vector<std::string> kStageNames = {
     "1 glowing sphere",  "2 under-stepped march", "3 hard union",      "4 smooth union",          "5 domain warp",
     "6 fold + scale",    "7 orbit trap",          "8 ACES + vignette", "9 jitter + grain (final)"};
 
-// What a tier changes here: the march budget and the render scale.
-struct TierSettings {
-  int marchSteps;
-  float renderScale;
-};
-
-TierSettings settingsFor(Tier tier) {
-  switch (tier) {
-    case Tier::Medium: return {56, 0.66f};
-    case Tier::Low: return {40, 0.5f};
-    default: return {90, 1.0f};
-  }
-}
+TierMarch settingsFor(Tier tier) { return kTierMarch[int(tier)]; }
 
 struct Push {
   glm::vec2 angles;

@@ -100,7 +100,7 @@ class NoodlesScene final : public Scene {
   // (Re)allocates the node buffer when grid or segments changed; the old one is retired, since
   // frames in flight may still read it. Nothing is allocated in frames where they did not change.
   void ensureStrands() {
-    const glm::uvec3 grid = seedGrid();
+    const glm::uvec3 grid = settings_.grid;
     const uint32_t segments = uint32_t(settings_.segments);
     if (nodes_ && layout_.grid == grid && layout_.segments == segments) return;
     StrandLayout layout = planStrands(grid, segments, budget_);
@@ -115,25 +115,13 @@ class NoodlesScene final : public Scene {
     StrandSettings s;
     s.grid = layout_.grid;
     s.segments = layout_.segments;
-    s.spacing = seedSpacing();
+    s.spacing = settings_.spacing;
     s.step = settings_.step;
     s.field = fieldAtTime(settings_.field, settings_.noiseScale, settings_.lift, reducedMotion_ ? 0.0 : writhe_);
     s.integrator = settings_.integrator;
     s.tangent = settings_.tangent;
     s.frames = settings_.frames;
     return s;
-  }
-
-  // The low tier seeds every other strand along each axis, spaced out to span the same nest: an
-  // eighth of the strands, the same shape.
-  glm::uvec3 seedGrid() const {
-    return quality_.active() == Tier::Low ? (settings_.grid + 1u) / 2u : settings_.grid;
-  }
-  float seedSpacing() const {
-    if (quality_.active() != Tier::Low) return settings_.spacing;
-    const uint32_t longest = std::max(settings_.grid.x, std::max(settings_.grid.y, settings_.grid.z));
-    const uint32_t seeded = (longest + 1) / 2;
-    return seeded > 1 ? settings_.spacing * float(longest - 1) / float(seeded - 1) : settings_.spacing;
   }
 
   // Roughly how far the strands reach from the nest centre: half the seed grid plus most of a
@@ -151,9 +139,11 @@ class NoodlesScene final : public Scene {
     return {0.0f, 0.0f, 0.5f * float(settings_.segments) * settings_.step * climb};
   }
 
+  // Every tier casts the samples msaa asks for: one a pixel breaks tubes thinner than a pixel into
+  // dots, so lower tiers render fewer pixels instead.
   TubeView tubeView(VkExtent2D extent) const {
     return {screenViewOf(camera_.pose(), glm::vec2(float(extent.width), float(extent.height))), settings_.radius,
-            settings_.colour, settings_.stripe, settings_.msaa && quality_.active() == Tier::High};
+            settings_.colour, settings_.stripe, settings_.msaa};
   }
 
   const gpu::Device& device_;

@@ -47,7 +47,7 @@ struct NoodleSettings {
   bool stripe = false;  // paint one side of every tube, so the frames' twist shows
   bool msaa = true;
   OrbitPin orbit;
-  Tier tier = Tier::Auto;  // high: as set; medium: 0.7 scale, no MSAA; low: also an eighth of the strands
+  Tier tier = Tier::Auto;  // high: as set; medium, low: 0.7 and 0.5 render scale
   float targetMs = 16.0f;
 };
 
