@@ -1,6 +1,7 @@
 #pragma once
-// The one module that touches image files. Built on OpenImageIO (EXR and PNG) or, with
-// VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR alone (EXR only).
+// The one module that touches image files. Built on OpenImageIO (every format) or, with
+// VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR, libpng and libjpeg (EXR, PNG
+// and JPEG).
 #include "image/image.h"
 
 #include <cstdint>
@@ -24,7 +25,7 @@ struct Picture {
 };
 // Reads any format the image library knows (JPEG, PNG, WebP, TIFF, EXR, ...) scaled down, keeping its
 // aspect, so that neither side exceeds maxSide; grey and RGB gain opaque alpha. Throws vitrine::Error
-// naming the path and the reason, also when the build has no general image reader (EXR-only builds).
+// naming the path and the reason (the build without OpenImageIO reads PNG, JPEG and EXR only).
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide);
 bool canReadPictures();
 

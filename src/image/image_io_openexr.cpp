@@ -1,6 +1,20 @@
+// The image module without OpenImageIO (the packed GPU-machine binary): EXR through OpenEXR, PNG
+// through libpng's simplified API and JPEG through libjpeg(-turbo), both of which the packed binary
+// already carries for FreeType and costs next to nothing.
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
 #include <fmt/format.h>
+#include <jpeglib.h>
+#include <png.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <fstream>
+#include <memory>
 
 #include "core/error.h"
 #include "core/atomic_file.h"
@@ -9,21 +23,144 @@
 
 namespace vitrine {
 
-bool canWritePng() { return false; }
+namespace {
 
-bool canReadPictures() { return false; }
+bool hasExtension(const std::filesystem::path& path, std::string_view lower) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == lower;
+}
 
-Picture readPicture(const std::filesystem::path& path, uint32_t) {
-  throw Error(fmt::format("Cannot read {}: this build reads EXR only (built with VITRINE_WITH_OIIO=OFF).",
-                          path.string()));
+Picture readPng(const std::filesystem::path& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str()))
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), image.message));
+  image.format = PNG_FORMAT_RGBA;
+  Picture picture{image.width, image.height, std::vector<uint8_t>(PNG_IMAGE_SIZE(image))};
+  if (!png_image_finish_read(&image, nullptr, picture.rgba.data(), 0, nullptr)) {
+    const std::string why = image.message;
+    png_image_free(&image);
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), why));
+  }
+  return picture;
+}
+
+// libjpeg reports a fatal error by calling error_exit, which must not return: it jumps back here.
+struct JpegError {
+  jpeg_error_mgr manager;
+  std::jmp_buf back;
+  char message[JMSG_LENGTH_MAX];
+};
+
+Picture readJpeg(const std::filesystem::path& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw Error(fmt::format("Cannot read {}: it cannot be opened.", path.string()));
+  jpeg_decompress_struct info{};
+  JpegError error{};
+  info.err = jpeg_std_error(&error.manager);
+  error.manager.error_exit = [](j_common_ptr common) {
+    auto* e = reinterpret_cast<JpegError*>(common->err);
+    e->manager.format_message(common, e->message);
+    std::longjmp(e->back, 1);
+  };
+  Picture picture;
+  if (setjmp(error.back)) {
+    jpeg_destroy_decompress(&info);
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), error.message));
+  }
+  jpeg_create_decompress(&info);
+  jpeg_stdio_src(&info, file.get());
+  jpeg_read_header(&info, TRUE);
+  info.out_color_space = JCS_EXT_RGBA;
+  jpeg_start_decompress(&info);
+  picture.width = info.output_width, picture.height = info.output_height;
+  picture.rgba.resize(size_t(picture.width) * picture.height * 4);
+  while (info.output_scanline < info.output_height) {
+    JSAMPROW row = picture.rgba.data() + size_t(info.output_scanline) * picture.width * 4;
+    jpeg_read_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_decompress(&info);
+  jpeg_destroy_decompress(&info);
+  return picture;
+}
+
+// A box filter down to fit maxSide: each output texel the mean of the source texels it covers.
+Picture fitWithin(Picture source, uint32_t maxSide) {
+  const uint32_t longest = std::max(source.width, source.height);
+  if (longest <= maxSide || maxSide == 0) return source;
+  const double scale = double(maxSide) / double(longest);
+  Picture out{std::max(1u, uint32_t(source.width * scale)), std::max(1u, uint32_t(source.height * scale)), {}};
+  out.rgba.resize(size_t(out.width) * out.height * 4);
+  for (uint32_t y = 0; y < out.height; ++y) {
+    const uint32_t y0 = uint32_t(uint64_t(y) * source.height / out.height);
+    const uint32_t y1 = std::max(y0 + 1, uint32_t(uint64_t(y + 1) * source.height / out.height));
+    for (uint32_t x = 0; x < out.width; ++x) {
+      const uint32_t x0 = uint32_t(uint64_t(x) * source.width / out.width);
+      const uint32_t x1 = std::max(x0 + 1, uint32_t(uint64_t(x + 1) * source.width / out.width));
+      uint32_t sum[4] = {0, 0, 0, 0};
+      for (uint32_t sy = y0; sy < y1; ++sy)
+        for (uint32_t sx = x0; sx < x1; ++sx)
+          for (int c = 0; c < 4; ++c) sum[c] += source.rgba[(size_t(sy) * source.width + sx) * 4 + c];
+      const uint32_t n = (y1 - y0) * (x1 - x0);
+      for (int c = 0; c < 4; ++c) out.rgba[(size_t(y) * out.width + x) * 4 + c] = uint8_t((sum[c] + n / 2) / n);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool canWritePng() { return true; }
+
+bool canReadPictures() { return true; }
+
+Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
+  std::array<unsigned char, 16> head{};
+  {
+    std::ifstream in(path, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head.data()), head.size());
+    head.back() = in.gcount() == std::streamsize(head.size()) ? head.back() : 0;
+  }
+  const std::string_view format = sniffImageFormat(head);
+  Picture picture;
+  if (format == "PNG") {
+    picture = readPng(path);
+  } else if (format == "JPEG") {
+    picture = readJpeg(path);
+  } else if (format == "EXR") {
+    const ImageRgba linear = readImage(path);
+    picture = {linear.width, linear.height, std::vector<uint8_t>(linear.pixels.size())};
+    for (size_t i = 0; i < linear.pixels.size(); ++i)
+      picture.rgba[i] = uint8_t(std::lround(255.0f * (i % 4 == 3 ? std::clamp(linear.pixels[i], 0.0f, 1.0f)
+                                                                 : linearToSrgb(linear.pixels[i]))));
+  } else {
+    throw Error(fmt::format("Cannot read {}: {} this build reads PNG, JPEG and EXR only (built with "
+                            "VITRINE_WITH_OIIO=OFF).", path.string(),
+                            format.empty() ? std::string("it is no image format known, and") :
+                                             fmt::format("it is a {} file, and", format)));
+  }
+  return fitWithin(std::move(picture), maxSide);
 }
 
 void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
-  if (path.extension() != ".exr" && path.extension() != ".EXR")
-    throw Error(
-        fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
-                    "(configure with -DVITRINE_WITH_OIIO=ON for PNG).",
-                    path.string()));
+  if (hasExtension(path, ".png")) {
+    std::vector<uint8_t> encoded(image.pixels.size());
+    for (size_t i = 0; i < encoded.size(); ++i)
+      encoded[i] = uint8_t(std::lround(255.0f * (i % 4 == 3 ? std::clamp(image.pixels[i], 0.0f, 1.0f)
+                                                            : linearToSrgb(image.pixels[i]))));
+    replaceAtomically(path, [&](const std::filesystem::path& temporary) {
+      png_image png{};
+      png.version = PNG_IMAGE_VERSION;
+      png.width = image.width, png.height = image.height, png.format = PNG_FORMAT_RGBA;
+      if (!png_image_write_to_file(&png, temporary.c_str(), 0, encoded.data(), 0, nullptr))
+        throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
+    });
+    return;
+  }
   replaceAtomically(path, [&](const std::filesystem::path& temporary) {
     try {
       std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
