@@ -118,7 +118,7 @@ const char* usage() {
           [--events FILE]
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
           [--preset [SCENE.]NAME]... --json FILE
-  vitrine compare REFERENCE.exr CANDIDATE.exr
+  vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
   vitrine --list-params [SCENE]
   vitrine --list-devices | --list-scenes | --help | --version
 
@@ -161,7 +161,26 @@ Options parseOptions(int argc, const char* const* argv) {
     ++i;
   } else if (argc > 1 && std::string_view(argv[1]) == "compare") {
     options.mode = Mode::Compare;
-    for (i = 2; i < argc; ++i) options.compare.emplace_back(argv[i]);
+    // The golden metric's per-case loosening (tests/golden/cases.txt), so any binary checks a case as
+    // the suite does (scripts/golden-cases).
+    auto metric = [&](std::string_view flag, double lo, double hi) {
+      if (i + 1 >= argc) throw Error(fmt::format("compare {} needs a number.", flag));
+      const std::string text = argv[++i];
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(v >= lo && v <= hi))
+        throw Error(fmt::format("compare {} takes a number from {:g} to {:g}, not '{}'.", flag, lo, hi, text));
+      return v;
+    };
+    auto& t = options.compareThresholds;
+    for (i = 2; i < argc; ++i) {
+      const std::string_view arg = argv[i];
+      if (arg == "--fail-fraction") t.failFraction = metric(arg, 0.0, 1.0);
+      else if (arg == "--hard-limit") t.hardLimit = float(metric(arg, 0.0, 1e9));
+      else if (arg == "--lowpass") t.block = int(metric(arg, 0.0, 4096.0));
+      else if (arg.starts_with("--")) throw Error(fmt::format("compare does not take {}; see vitrine --help.", arg));
+      else options.compare.emplace_back(arg);
+    }
     if (options.compare.size() != 2) throw Error("compare expects two EXR files: REFERENCE CANDIDATE.");
     return options;
   }

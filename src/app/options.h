@@ -1,6 +1,8 @@
 #pragma once
 // The command line, parsed into one value. Bad input is a vitrine::Error with a sentence that says
 // what was wrong and what would be right; main turns it into a non-zero exit.
+#include "image/image_compare.h"
+
 #include <vulkan/vulkan.h>
 
 #include <optional>
@@ -38,6 +40,7 @@ struct Options {
   std::vector<SceneSetting> parameters;  // --set [SCENE.]KEY=VALUE, in command-line order
   std::vector<SceneSetting> presets;     // --preset [SCENE.]NAME, in command-line order
   std::vector<std::string> compare;  // compare REF CANDIDATE
+  CompareThresholds compareThresholds;  // compare --fail-fraction F --hard-limit H --lowpass N
   std::string listParams;            // --list-params [SCENE]: empty for every scene
   std::string input;                 // --input FILE (headless): scripted input
   std::string events;                // --events FILE (headless): the scene's events, as JSON lines

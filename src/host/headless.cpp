@@ -91,7 +91,7 @@ int runHeadless(const Options& options) {
 int runCompare(const Options& options) {
   const ImageRgba reference = readImage(options.compare[0]);
   const ImageRgba candidate = readImage(options.compare[1]);
-  const CompareResult result = compareImages(reference, candidate);
+  const CompareResult result = compareImages(reference, candidate, options.compareThresholds);
   if (!result.sizeMatches) {  // readImage read both, so both are EXRs
     std::fprintf(stderr, "%s (reference %s and candidate %s, both EXR)\n", result.summary().c_str(),
                  options.compare[0].c_str(), options.compare[1].c_str());
