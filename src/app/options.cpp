@@ -108,10 +108,10 @@ const char* usage() {
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
           [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
           [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
-          [--remote [--remote-bind ADDR:PORT] [--remote-saves]]
+          [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]... [--remote-saves]]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
-          [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT]]
+          [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
           --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
@@ -130,7 +130,8 @@ its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --
 A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
 --kiosk shows each scene for --dwell seconds (45) with a cross-fade; a touch holds the scene, cycling resumes
 after 30 s alone (the dwell when shorter, 10 s at least). --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
-changes it); it prints the page's address with its access token. Remote changes are not saved unless --remote-saves.
+changes it); it prints the page's address with its access token. Bound beyond loopback, OSC is taken only from
+--remote-allow networks (192.168.1.0/24) or senders that sent the token. Remote changes are not saved unless --remote-saves.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
 )";
@@ -216,6 +217,7 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--remote") options.remote = true;
     else if (arg == "--remote-bind") options.remoteBind = value(arg), options.remote = true;
     else if (arg == "--remote-saves") options.remoteSaves = true;
+    else if (arg == "--remote-allow") options.remoteAllow.push_back(value(arg));
     else if (arg == "--fps") options.fps = parsePositive(arg, value(arg), 1000.0);
     else if (arg == "--seconds") options.seconds = parsePositive(arg, value(arg), 86400.0);
     else if (arg == "--spp") options.spp = parseWhole(arg, value(arg), 1);
@@ -269,6 +271,7 @@ Options parseOptions(int argc, const char* const* argv) {
   if (options.remote && options.mode != Mode::Gallery && options.mode != Mode::Headless)
     throw Error("--remote is for the gallery and --headless runs.");
   if (options.remoteSaves && !options.remote) throw Error("--remote-saves needs --remote.");
+  if (!options.remoteAllow.empty() && !options.remote) throw Error("--remote-allow needs --remote.");
   if (options.mode == Mode::Gallery && options.size &&
       (options.size->width > kMaxWindowSide || options.size->height > kMaxWindowSide))
     throw Error(fmt::format("--size expects each side of the gallery window from 1 to {}, not '{}x{}'.",

@@ -57,6 +57,7 @@ struct Options {
   double dwell = 45.0;               // --dwell SECONDS: how long each scene shows in kiosk mode
   bool remote = false;               // --remote: OSC and the web control page (gallery and headless)
   std::string remoteBind = "127.0.0.1:8730";  // --remote-bind ADDR:PORT
+  std::vector<std::string> remoteAllow;  // --remote-allow CIDR (repeatable): OSC senders needing no token
   bool remoteSaves = false;          // --remote-saves: remote changes are written to the settings file too
 };
 

@@ -177,7 +177,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
       programs_(checkWindowSize(device_, options.size), VITRINE_SHADER_SOURCE_DIR, /*preferNewerSources=*/true),
-      settings_(params::defaultSettingsPath(), options.resetSettings),
+      settings_(params::defaultSettingsPath(), options.resetSettings, /*keepScene=*/options.kiosk),
       renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
@@ -190,7 +190,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
   renderer_->setAudioSink(&audio_);
   renderer_->setRealtime(true);
   remoteSaves_ = options.remoteSaves;
-  if (options.remote) remote_.emplace(options.remoteBind);
+  if (options.remote) remote_.emplace(options.remoteBind, options.remoteAllow);
   if (options.kiosk) {
     uiHidden_ = true;
     window_.setCursorHidden(true);
@@ -324,15 +324,17 @@ std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) 
     renderer.clear();
     return e.what();
   }
-  if (auto why = renderer.applyParameters(settings_.valuesFor(info.name)); !why.empty()) {
-    // Saved values that do not fit together on this device (each one was valid on its own).
-    std::fprintf(stderr, "vitrine: settings for %.*s not used (%s); starting from the defaults\n",
-                 int(info.name.size()), info.name.data(), why.c_str());
-    params::resetToDefaults(renderer.parameters());
-  }
-  if (remote_)
-    if (const auto waiting = remote_->takeWaiting(info.name); !waiting.empty() && renderer.applyParameters(waiting).empty())
-      for (const auto& [key, value] : waiting) remoteKeys_[std::string(info.name)].insert(key);
+  // Saved values that do not fit together on this device (each one was valid on its own): the ones
+  // that conflict are dropped, the rest kept.
+  const params::FittedValues fitted = params::applyWhatFits(
+      settings_.valuesFor(info.name), [&](const params::KeyValues& values) { return renderer.applyParameters(values); });
+  if (!fitted.dropped.empty())
+    std::fprintf(stderr, "vitrine: settings for %.*s: dropped %s (%s); the other saved values are kept\n",
+                 int(info.name.size()), info.name.data(), fmt::format("{}", fmt::join(fitted.dropped, ", ")).c_str(),
+                 fitted.why.c_str());
+  if (remote_)  // values a client sent while it was away, through the same guard as the live ones
+    for (const auto& [key, value] : remote_->applyWaiting(renderer, frameMs()))
+      remoteKeys_[std::string(info.name)].insert(key);
   return {};
 }
 
@@ -361,7 +363,7 @@ void Gallery::switchScene(const SceneInfo& info) {
   costlyEdit_.reset();
   panel_.forget();
   panelError_.clear();
-  settings_.showing(chosen->name, Clock::now());
+  if (!kiosk_) settings_.showing(chosen->name, Clock::now());  // the kiosk's cycle is not the gallery's choice
   input_.frame = 0;
   input_.time = 0.0;
   steps_.restart();
@@ -408,7 +410,6 @@ void Gallery::finishFade() {
   panel_.forget();
   panelError_.clear();
   missingAssets_ = assets_.missing();
-  settings_.showing(renderer_->info().name, Clock::now());
   window_.setTitle(fmt::format("Vitrine — {}", renderer_->info().title));
   if (remote_) remote_->publish(*renderer_, true);
 }

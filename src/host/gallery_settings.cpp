@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <set>
 
 #include "core/error.h"
 #include "scenes/scene.h"
@@ -14,12 +17,31 @@ const params::Schema* schemaOfScene(std::string_view scene) {
   return info ? &info->schema() : nullptr;
 }
 
-GallerySettings::GallerySettings(std::filesystem::path path, bool reset) : path_(std::move(path)) {
+namespace {
+
+// The text a key stands for in a scene's saved values: its own, or its default when the file has none.
+std::optional<std::string> effectiveText(std::string_view scene, const params::KeyValues& values, const std::string& key) {
+  for (const auto& [k, text] : values)
+    if (k == key) return text;
+  const params::Schema* schema = schemaOfScene(scene);
+  const params::Param* param = schema ? schema->find(key) : nullptr;
+  if (!param) return std::nullopt;
+  const auto defaults = schema->makeDefaults();
+  return param->format(defaults.get());
+}
+
+}  // namespace
+
+GallerySettings::GallerySettings(std::filesystem::path path, bool reset, bool keepScene)
+    : path_(std::move(path)), keepScene_(keepScene) {
   if (path_.empty()) {
     warnings_.push_back("no settings folder (neither XDG_CONFIG_HOME nor HOME is set): settings are not kept");
     return;
   }
-  if (reset) return;
+  if (reset) {
+    changes_.all = !keepScene_;  // the file starts over at the first save (a kiosk merges, keeping the scene)
+    return;
+  }
   params::LoadResult loaded = params::loadSettings(path_, schemaOfScene);
   settings_ = std::move(loaded.settings);
   for (auto& warning : loaded.warnings) warnings_.push_back(fmt::format("{}: {}", path_.string(), warning));
@@ -41,13 +63,23 @@ params::KeyValues GallerySettings::valuesFor(std::string_view scene) const {
 void GallerySettings::remember(std::string_view scene, params::KeyValues values, Clock::time_point now) {
   auto& stored = settings_.scenes[std::string(scene)];
   if (stored == values) return;
+  std::set<std::string>* changed = nullptr;
+  const auto mark = [&](const std::string& key) {
+    if (!changed) changed = &changes_.keys[std::string(scene)];
+    changed->insert(key);
+  };
+  for (const auto& [key, text] : values)
+    if (effectiveText(scene, stored, key) != text) mark(key);
+  for (const auto& [key, text] : stored)
+    if (std::none_of(values.begin(), values.end(), [&](const auto& kv) { return kv.first == key; })) mark(key);
   stored = std::move(values);
-  saver_.markDirty(now);
+  if (changed) saver_.markDirty(now);
 }
 
 void GallerySettings::showing(std::string_view scene, Clock::time_point now) {
-  if (settings_.scene == scene) return;
+  if (keepScene_ || settings_.scene == scene) return;
   settings_.scene = std::string(scene);
+  changes_.scene = true;
   saver_.markDirty(now);
 }
 
@@ -62,8 +94,17 @@ void GallerySettings::flush() {
 void GallerySettings::save() {
   if (path_.empty()) return;
   try {
-    params::saveSettings(path_, settings_, schemaOfScene);
-  } catch (const Error& e) {  // a full disk or a read-only home must not end the session
+    // Another gallery may have saved since: what it changed stays, unless this one changed it too.
+    // A file gone or unreadable now is written from this gallery's values alone.
+    std::error_code ec;
+    params::Settings merged = settings_;
+    if (!changes_.all && std::filesystem::exists(path_, ec))
+      if (params::LoadResult disk = params::loadSettings(path_, schemaOfScene, params::LoadMode::LeaveAlone);
+          disk.readable)
+        merged = params::mergeSettings(std::move(disk.settings), settings_, changes_);
+    params::saveSettings(path_, merged, schemaOfScene);
+    changes_ = {};
+  } catch (const std::exception& e) {  // a full disk or a read-only home must not end the session
     warnings_.push_back(e.what());
     std::fprintf(stderr, "vitrine: %s\n", e.what());
   }

@@ -17,8 +17,9 @@ class GallerySettings {
   using Clock = params::SettingsSaver::Clock;
 
   // `path` empty: nothing is read or written. `reset`: start from defaults (the file is rewritten on
-  // the first change). Problems with the file become warnings(), never errors.
-  GallerySettings(std::filesystem::path path, bool reset);
+  // the first change). Problems with the file become warnings(), never errors. `keepScene` (kiosk
+  // mode): the scene to start with is the gallery's to choose; showing() leaves it as it is.
+  GallerySettings(std::filesystem::path path, bool reset, bool keepScene = false);
   ~GallerySettings();  // flushes
 
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -28,7 +29,9 @@ class GallerySettings {
   // What a scene starts with: its saved values (validated key by key when loaded).
   params::KeyValues valuesFor(std::string_view scene) const;
   // After any change, or when a scene is left: its current values (all of them, transient ones too,
-  // so a switch back restores them; only non-transient ones are written).
+  // so a switch back restores them; only non-transient ones are written). Saving merges with the
+  // file as it is then, key by key: only keys whose value this gallery changed (a missing key counts
+  // as its default) are written over what another gallery on the same file may have saved.
   void remember(std::string_view scene, params::KeyValues values, Clock::time_point now);
   void showing(std::string_view scene, Clock::time_point now);  // the scene to start with next time
   void tick(Clock::time_point now);  // writes when a burst of changes has settled
@@ -37,7 +40,9 @@ class GallerySettings {
  private:
   void save();
   std::filesystem::path path_;
+  bool keepScene_ = false;
   params::Settings settings_;
+  params::SettingsChanges changes_;  // since the last save
   params::SettingsSaver saver_;
   std::vector<std::string> warnings_;
 };

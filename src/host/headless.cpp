@@ -47,7 +47,7 @@ int runHeadless(const Options& options) {
     if (options.remote) {
       // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
       // SIGTERM ends the run early (the last frame is still written).
-      remote.emplace(options.remoteBind);
+      remote.emplace(options.remoteBind, options.remoteAllow);
       std::signal(SIGTERM, [](int) { stopHeadless = 1; });
       std::signal(SIGINT, [](int) { stopHeadless = 1; });
     }

@@ -17,17 +17,35 @@ constexpr auto kPublishInterval = std::chrono::milliseconds(100);
 constexpr auto kTouchHold = std::chrono::seconds(2);
 constexpr size_t kRefusalsLogged = 20;  // then every hundredth: a broken client cannot flood the console
 
-remote::RemoteControl listen(const std::string& bind) {
+remote::RemoteControl listen(const std::string& bind, const std::vector<std::string>& allow) {
+  remote::RemoteConfig config;
+  for (const std::string& network : allow) {
+    try {
+      config.oscAllow.push_back(remote::parseNetwork(network));
+    } catch (const std::exception& e) {
+      throw Error(fmt::format("--remote-allow {}: {}", network, e.what()));
+    }
+  }
   try {
-    return remote::RemoteControl(remote::RemoteConfig{remote::parseBind(bind)});
+    config.bind = remote::parseBind(bind);
+    return remote::RemoteControl(std::move(config));
   } catch (const std::exception& e) {
     throw Error(fmt::format("--remote-bind {}: {}", bind, e.what()));
   }
 }
 
+// One value from a client for the scene showing: refused when it would freeze the window (a client
+// cannot be asked, so it is not applied), else applied if the scene accepts it. Why, or empty.
+std::string judge(SceneRenderer& renderer, const std::pair<std::string, std::string>& value, double frameMs) {
+  std::string refused = freezeWarning(renderer.costRatio({value}), frameMs);
+  if (refused.empty()) refused = renderer.applyParameters({value});
+  return refused;
+}
+
 }  // namespace
 
-RemoteLink::RemoteLink(const std::string& bind) : control_(listen(bind)) {
+RemoteLink::RemoteLink(const std::string& bind, const std::vector<std::string>& allow)
+    : control_(listen(bind, allow)) {
   std::printf("vitrine: remote control on %s (OSC over UDP, this page over HTTP):\n  %s\n",
               remote::formatBind(control_.bind()).c_str(), control_.pageUrl().c_str());
   std::fflush(stdout);
@@ -44,14 +62,15 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
         applied.scene = findScene(command.scene);
         break;
       case remote::RemoteCommand::Kind::Set:
-        if (command.scene != showing) {
-          waiting_[command.scene].emplace_back(command.key, command.value);
+        if (command.scene != showing) {  // kept (bounded) until its scene opens, judged then
+          if (!waiting_.put(command.client, command.scene, command.key, command.value))
+            refused = fmt::format("{}.{}: too many values waiting for scenes that are not showing", command.scene,
+                                  command.key);
           break;
         }
         // Checked against the schema on a server thread; the scene's cross-parameter check runs here,
         // and a change that would freeze the window waits for someone at the panel.
-        refused = freezeWarning(renderer.costRatio({{command.key, command.value}}), frameMs);
-        if (refused.empty()) refused = renderer.applyParameters({{command.key, command.value}});
+        refused = judge(renderer, {command.key, command.value}, frameMs);
         if (refused.empty()) {
           applied.values.emplace_back(command.key, command.value);
           if (events) events->emit(time, showing, {"remote_set", {{"key", command.key}, {"value", command.value}}});
@@ -75,12 +94,18 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
   return applied;
 }
 
-params::KeyValues RemoteLink::takeWaiting(std::string_view scene) {
-  const auto it = waiting_.find(scene);
-  if (it == waiting_.end()) return {};
-  params::KeyValues values = std::move(it->second);
-  waiting_.erase(it);
-  return values;
+params::KeyValues RemoteLink::applyWaiting(SceneRenderer& renderer, double frameMs) {
+  params::KeyValues applied;
+  for (auto& value : waiting_.take(renderer.info().name)) {
+    if (std::string refused = judge(renderer, value, frameMs); !refused.empty()) {
+      ++refused_;
+      std::fprintf(stderr, "vitrine: remote value for %s.%s refused: %s\n", std::string(renderer.info().name).c_str(),
+                   value.first.c_str(), refused.c_str());
+      continue;
+    }
+    applied.push_back(std::move(value));
+  }
+  return applied;
 }
 
 std::optional<Pointer> RemoteLink::pointer(VkExtent2D framebuffer) {

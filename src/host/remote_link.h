@@ -7,6 +7,7 @@
 #include "host/pointer.h"
 #include "host/scene_renderer.h"
 #include "remote/remote_control.h"
+#include "remote/waiting_values.h"
 
 #include <chrono>
 #include <map>
@@ -26,13 +27,18 @@ struct RemoteApplied {
 class RemoteLink {
  public:
   // Listens on `bind` ("ADDR:PORT"); prints the page's address with its token. Throws vitrine::Error.
-  explicit RemoteLink(const std::string& bind);
+  // `allow`: --remote-allow networks ("192.168.1.0/24") whose OSC senders need no token.
+  explicit RemoteLink(const std::string& bind, const std::vector<std::string>& allow = {});
 
   // Applies the commands that arrived since the last call to `renderer`'s scene. `frameMs`: the frame
   // time now, to refuse a change that would freeze the window (host/cost_guard.h).
   RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs = 0.0);
-  // Values sent for `scene` while it was not showing, to apply when it opens (then forgotten).
-  params::KeyValues takeWaiting(std::string_view scene);
+  // Applies the values clients sent for `renderer`'s scene while it was not showing (then forgets
+  // them), each through the same checks as a live one: the freeze guard with `frameMs`, then the
+  // scene's validation. Returns those applied.
+  params::KeyValues applyWaiting(SceneRenderer& renderer, double frameMs);
+  size_t waiting() const { return waiting_.size(); }  // values waiting for their scene, for tests
+  uint16_t port() const { return control_.port(); }
   // The phone's touch as a pointer over an output of `framebuffer` pixels, while a phone drives it.
   std::optional<Pointer> pointer(VkExtent2D framebuffer);
   // Tells every page what the scene showing is and its values (a few times a second at most).
@@ -42,7 +48,7 @@ class RemoteLink {
 
  private:
   remote::RemoteControl control_;
-  std::map<std::string, params::KeyValues, std::less<>> waiting_;
+  remote::WaitingValues waiting_;  // bounded: last value per key, capped per client and in all
   std::optional<glm::vec2> touch_;  // the latest pointer position from a phone
   bool down_ = false, pressed_ = false;
   std::chrono::steady_clock::time_point lastTouch_{}, lastPublish_{};

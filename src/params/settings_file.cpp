@@ -5,7 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -35,6 +38,10 @@ Json parseLimited(const std::string& text) {
   } catch (const Json::parse_error& e) {
     // Not e.what(): it quotes the bytes it stopped at, and those may be binary.
     throw NotSettings{e.byte > text.size() ? "not JSON: it ends too early" : fmt::format("not JSON at byte {}", e.byte)};
+  } catch (const Json::out_of_range&) {  // a number no double holds (1e400), anywhere in the file
+    throw NotSettings{"a number out of range"};
+  } catch (const Json::exception& e) {  // any other refusal of the parser is the same: not settings
+    throw NotSettings{fmt::format("not JSON (error {})", e.id)};
   }
 }
 
@@ -146,7 +153,9 @@ fs::path defaultSettingsPath() {
   return {};
 }
 
-LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
+namespace {
+
+LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, LoadMode mode) {
   LoadResult result;
   const std::string where = path.string();
   std::error_code ec;
@@ -168,13 +177,11 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
     if (fs::file_size(path, ec) > kMaxSettingsBytes && !ec)
       throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      result.warnings.push_back(fmt::format("{}: cannot open it; starting from the defaults", where));
-      return result;
-    }
+    if (!in) throw NotSettings{fmt::format("cannot open it: {}", std::strerror(errno))};
     // Read one byte past the limit, in case the file grew since file_size.
     text.resize(kMaxSettingsBytes + 1);
     in.read(text.data(), std::streamsize(text.size()));
+    if (in.bad()) throw NotSettings{"cannot read it"};
     text.resize(size_t(in.gcount()));
     if (text.size() > kMaxSettingsBytes) throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
     root = parseLimited(text);
@@ -182,7 +189,9 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
     if (root.contains("version") && root["version"] != kSettingsVersion)
       throw NotSettings{fmt::format("version {}, this build reads version {}", root["version"].dump(), kSettingsVersion)};
   } catch (const NotSettings& bad) {
-    result.warnings.push_back(fmt::format("{} is not a settings file ({}); {}", where, bad.why, moveAside(path)));
+    result.readable = false;
+    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) : "left as it is";
+    result.warnings.push_back(fmt::format("{} is not a settings file ({}); {}", where, bad.why, fallback));
     return result;
   }
 
@@ -212,6 +221,22 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor) {
     }
   }
   return result;
+}
+
+}  // namespace
+
+LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor, LoadMode mode) {
+  try {
+    return loadChecked(path, schemaFor, mode);
+  } catch (const std::exception& e) {
+    // Whatever else goes wrong reading it (memory, a library's surprise) ends like a file that does
+    // not parse: the gallery, and above all the kiosk, must never be stopped by its own saved state.
+    LoadResult result;
+    result.readable = false;
+    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) : "left as it is";
+    result.warnings.push_back(fmt::format("{} could not be read ({}); {}", path.string(), e.what(), fallback));
+    return result;
+  }
 }
 
 Json valuesJson(const Bound& bound, bool includeTransient) {
@@ -249,12 +274,77 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
   }
   // replace: a key from a hand-edited file with bad UTF-8 must not make the save throw.
   const std::string text = out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-  replaceAtomically(path, [&](const fs::path& temporary) {
+  replaceAtomically(resolveLinks(path), [&](const fs::path& temporary) {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     file.write(text.data(), std::streamsize(text.size()));
     file.close();
     if (!file) throw Error(fmt::format("Cannot write {}", temporary.string()));
   });
+}
+
+fs::path resolveLinks(const fs::path& path) {
+  constexpr int kMaxLinks = 40;  // the kernel's own limit (ELOOP) for following links
+  fs::path resolved = path;
+  for (int hops = 0; hops <= kMaxLinks; ++hops) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(resolved, ec))) return resolved;
+    const fs::path target = fs::read_symlink(resolved, ec);
+    if (ec) throw Error(fmt::format("Cannot follow the link {}: {}", resolved.string(), ec.message()));
+    resolved = target.is_absolute() ? target : resolved.parent_path() / target;
+  }
+  throw Error(fmt::format("Cannot write {}: more than {} symbolic links in a row (a loop?)", path.string(), kMaxLinks));
+}
+
+Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChanges& changed) {
+  if (changed.all) return ours;
+  if (changed.scene) disk.scene = ours.scene;
+  for (const auto& [scene, keys] : changed.keys) {
+    const auto mine = ours.scenes.find(scene);
+    KeyValues& theirs = disk.scenes[scene];
+    for (const std::string& key : keys) {
+      const auto has = [&](const auto& kv) { return kv.first == key; };
+      const auto there = std::find_if(theirs.begin(), theirs.end(), has);
+      const auto it = mine == ours.scenes.end() ? KeyValues::const_iterator{}
+                                                : std::find_if(mine->second.begin(), mine->second.end(), has);
+      if (mine == ours.scenes.end() || it == mine->second.end()) {
+        if (there != theirs.end()) theirs.erase(there);  // changed here to no value: gone
+      } else if (there != theirs.end()) {
+        there->second = it->second;  // in its place, for a reader of the file
+      } else {
+        theirs.push_back(*it);
+      }
+    }
+    if (theirs.empty() && mine == ours.scenes.end()) disk.scenes.erase(scene);
+  }
+  return disk;
+}
+
+FittedValues applyWhatFits(const KeyValues& values, const std::function<std::string(const KeyValues&)>& apply) {
+  FittedValues fitted;
+  fitted.why = values.empty() ? std::string() : apply(values);
+  if (fitted.why.empty()) {
+    fitted.kept = values;
+    return fitted;
+  }
+  const auto text = [](const auto& kv) { return kv.first + "=" + kv.second; };
+  for (size_t skip = values.size(); skip-- > 0;) {
+    KeyValues others = values;
+    others.erase(others.begin() + std::ptrdiff_t(skip));
+    if (apply(others).empty()) {
+      fitted.kept = std::move(others);
+      fitted.dropped.push_back(text(values[skip]));
+      return fitted;
+    }
+  }
+  for (const auto& kv : values) {
+    KeyValues candidate = fitted.kept;
+    candidate.push_back(kv);
+    if (apply(candidate).empty())
+      fitted.kept = std::move(candidate);
+    else
+      fitted.dropped.push_back(text(kv));
+  }
+  return fitted;
 }
 
 void SettingsSaver::markDirty(Clock::time_point now) {

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,7 +43,12 @@ struct Settings {
 struct LoadResult {
   Settings settings;
   std::vector<std::string> warnings;  // one sentence each, for the log or the overlay
+  bool readable = true;               // false: the file was there but is not settings (see loadSettings)
 };
+
+// What a reader does with a file that is not settings: the gallery at start moves it aside; a save
+// that merges with the file on disk only looks and leaves it.
+enum class LoadMode { MoveBadAside, LeaveAlone };
 
 // Returns a scene's schema, or null for a scene this build does not have. A scene without parameters
 // should return an empty schema, not null.
@@ -51,21 +57,55 @@ using SchemaLookup = std::function<const Schema*(std::string_view scene)>;
 // Never throws for what is in or around the file: every problem is a warning and the defaults apply.
 // A bad value is dropped (one warning naming scene, key and why); a file that is not settings (not
 // JSON, not an object, another version, over kMaxSettingsBytes, nested deeper than any settings file)
-// is renamed to "settings.json.bad-YYYYMMDD-HHMMSS" beside it; a missing file is no warning.
+// is renamed to "settings.json.bad-YYYYMMDD-HHMMSS" beside it; a missing file is no warning. Every
+// other failure to read a regular file (cannot open it, a number out of range such as 1e400 anywhere
+// in it, any exception while reading) ends the same way: one warning, moved aside, the defaults.
 // Values are checked one by one on a default struct: a scene's cross-parameter check is for whoever
 // applies them (applyValues with the scene's check).
-LoadResult loadSettings(const std::filesystem::path& path, const SchemaLookup& schemaFor);
+LoadResult loadSettings(const std::filesystem::path& path, const SchemaLookup& schemaFor,
+                        LoadMode mode = LoadMode::MoveBadAside);
 
 // Creates the folder and replaces the file atomically; throws vitrine::Error on failure. Transient
 // parameters are left out; the schema gives each value its JSON type (a key no schema knows is
-// written as a string).
+// written as a string). A path that is a symbolic link (a settings file kept in a dotfiles folder)
+// stays one: the file it points to is replaced, beside itself.
 void saveSettings(const std::filesystem::path& path, const Settings& settings, const SchemaLookup& schemaFor);
+
+// The file `path` names once its symbolic links are followed (relative ones from the link's folder);
+// `path` itself when it is no link. The last link may dangle: its target is where a save creates the
+// file. Throws vitrine::Error for a loop of links.
+std::filesystem::path resolveLinks(const std::filesystem::path& path);
+
+// What one gallery changed since its last save, so that two galleries on one file do not undo each
+// other: only these are written over what is on disk.
+struct SettingsChanges {
+  bool all = false;    // write everything (--reset-settings: the file starts over)
+  bool scene = false;  // the scene to start with
+  std::map<std::string, std::set<std::string>> keys;  // per scene, the keys changed (or removed)
+  bool empty() const { return !all && !scene && keys.empty(); }
+};
+// `disk` (the file as it is now) with `ours` written over it where `changed` says, key by key; a
+// changed key `ours` no longer holds is removed. Everything else on disk stays as the other writer
+// left it, unknown keys included.
+Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChanges& changed);
 
 // A value as the settings file and the benchmark's JSON write it: Float/Int as numbers, Bool as
 // true/false, the rest (and a key no schema knows: param null) as its text.
 nlohmann::ordered_json typedValue(const Param* param, const std::string& text);
 // Every parameter of a live scene as one JSON object, typed as above.
 nlohmann::ordered_json valuesJson(const Bound& bound, bool includeTransient = true);
+
+// Saved values that a scene's cross-parameter check refuses together (each was valid alone): keep
+// what fits, drop only what conflicts. `apply` is the scene's batch apply (applyValues with its check,
+// SceneRenderer::applyParameters): it changes nothing and returns why when it refuses. Tries all of
+// them; then all but one, each in turn from the last (a later value is the likelier newcomer); then
+// one by one in order, keeping each that fits with those kept before.
+struct FittedValues {
+  KeyValues kept;                    // applied
+  std::vector<std::string> dropped;  // "key=value", in the file's order
+  std::string why;                   // the check's reason for refusing them all together
+};
+FittedValues applyWhatFits(const KeyValues& values, const std::function<std::string(const KeyValues&)>& apply);
 
 // When to save: after the values stop changing for `delay`, so a dragged slider writes once, after it
 // settles. Pure logic; the caller passes the time and does the writing.

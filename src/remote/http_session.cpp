@@ -19,10 +19,24 @@ template <typename Request> std::string_view targetOf(const Request& request) {
 }
 }  // namespace
 
-HttpSession::HttpSession(boost::asio::ip::tcp::socket&& socket, WebHub& hub)
-    : stream_(std::move(socket)), hub_(hub), slot_(std::in_place, hub),
+HttpSession::HttpSession(boost::asio::ip::tcp::socket&& socket, WebHub& hub, std::string address)
+    : stream_(std::move(socket)), hub_(hub), slot_(std::in_place, hub, address),
       // The buffer holds at most one whole request: headers and body within their limits.
-      buffer_(hub.limits.maxRequestHeader + hub.limits.maxRequestBody) {}
+      buffer_(hub.limits.maxRequestHeader + hub.limits.maxRequestBody), address_(std::move(address)),
+      stranger_(hub.strangers.insert(hub.strangers.end(), this)) {}
+
+HttpSession::~HttpSession() { trusted(); }
+
+void HttpSession::trusted() {
+  if (stranger_) hub_.strangers.erase(*std::exchange(stranger_, std::nullopt));
+}
+
+void HttpSession::evict() {
+  trusted();
+  slot_.reset();
+  beast::error_code ignored;
+  stream_.socket().close(ignored);  // the pending read ends with an error, and the session with it
+}
 
 void HttpSession::start() { read(); }
 
@@ -30,7 +44,8 @@ void HttpSession::read() {
   parser_.emplace();
   parser_->header_limit(std::uint32_t(hub_.limits.maxRequestHeader));
   parser_->body_limit(hub_.limits.maxRequestBody);
-  stream_.expires_after(hub_.limits.requestTimeout);
+  // A stranger has a few seconds to send its request; a holder of the token, the usual time.
+  stream_.expires_after(stranger_ ? hub_.limits.firstRequestTimeout : hub_.limits.requestTimeout);
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&HttpSession::onRead, shared_from_this()));
 }
 
@@ -53,6 +68,7 @@ void HttpSession::onRead(beast::error_code error, size_t) {
     return;
   }
   Request request = parser_->release();
+  if (tokensEqual(queryValue(targetOf(request), "token"), hub_.token)) trusted();
   if (boost::beast::websocket::is_upgrade(request)) return upgrade(std::move(request));
   const bool close = !request.keep_alive();
   write(respond(request), close);

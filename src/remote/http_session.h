@@ -13,8 +13,13 @@ namespace vitrine::remote {
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(boost::asio::ip::tcp::socket&& socket, WebHub& hub);
+  HttpSession(boost::asio::ip::tcp::socket&& socket, WebHub& hub, std::string address);
+  ~HttpSession();
   void start();
+  const std::string& address() const { return address_; }
+  // Closes a connection that has not shown the token, to make room for a new one: it leaves the
+  // hub's strangers and gives its slot back now, before its pending read ends.
+  void evict();
 
  private:
   using Request = boost::beast::http::request<boost::beast::http::string_body>;
@@ -26,6 +31,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   Response respond(const Request& request);
   void write(Response response, bool close);
   void onWrite(bool close, boost::beast::error_code error, size_t bytes);
+  void trusted();  // it sent the token: no longer a stranger
 
   boost::beast::tcp_stream stream_;
   WebHub& hub_;
@@ -33,6 +39,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   boost::beast::flat_buffer buffer_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
   std::shared_ptr<Response> response_;  // alive until written
+  std::string address_;
+  std::optional<std::list<HttpSession*>::iterator> stranger_;  // in hub_.strangers until trusted
 };
 
 }  // namespace vitrine::remote

@@ -1,5 +1,6 @@
 #include "remote/osc_server.h"
 
+#include "remote/access_token.h"
 #include "remote/messages.h"
 #include "remote/osc_packet.h"
 #include "remote/socket_address.h"
@@ -10,6 +11,7 @@
 #include <sys/eventfd.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -19,8 +21,9 @@
 namespace vitrine::remote {
 
 OscServer::OscServer(const BindAddress& bind, const Catalogue& catalogue, RemoteInbox& inbox, RemoteStats& stats,
-                     OscLimits limits)
+                     OscLimits limits, OscAccess access)
     : catalogue_(catalogue), inbox_(inbox), stats_(stats), limits_(limits), budgets_(limits.perSender),
+      access_(std::move(access)),
       buffer_(limits.maxDatagram + 1) {
   const SocketAddress address = socketAddress(bind);
   const auto failed = [&](std::string_view what) {
@@ -94,6 +97,17 @@ void OscServer::handleMessage(std::span<const std::byte> bytes, const std::strin
     count(stats_.malformed);
     return;
   }
+  if (!allowed(sender)) {
+    if (message.path == "/vitrine/token" && message.args.size() == 1 && message.args[0].type == 's' &&
+        !access_.token.empty() && tokensEqual(message.args[0].text, access_.token)) {
+      trust(sender);
+      count(stats_.accepted);
+    } else {
+      count(stats_.unauthorised);
+    }
+    return;
+  }
+  if (message.path == "/vitrine/token") return count(stats_.accepted);  // harmless from a trusted sender
   ParseResult parsed = commandFromOsc(message.path, message.args, catalogue_);
   if (!parsed.command) {
     count(stats_.malformed);
@@ -106,6 +120,19 @@ void OscServer::handleMessage(std::span<const std::byte> bytes, const std::strin
   parsed.command->client = "osc " + sender;
   if (inbox_.push(std::move(*parsed.command))) count(stats_.accepted);
   else count(stats_.dropped);
+}
+
+bool OscServer::allowed(const std::string& sender) const {
+  if (access_.open) return true;
+  for (const Network& network : access_.allow)
+    if (contains(network, sender)) return true;
+  return std::find(trusted_.begin(), trusted_.end(), sender) != trusted_.end();
+}
+
+void OscServer::trust(const std::string& sender) {
+  if (std::find(trusted_.begin(), trusted_.end(), sender) != trusted_.end()) return;
+  if (trusted_.size() >= access_.maxTrusted) trusted_.erase(trusted_.begin());
+  trusted_.push_back(sender);
 }
 
 }  // namespace vitrine::remote

@@ -17,8 +17,11 @@ RemoteControl::RemoteControl(RemoteConfig config, Catalogue catalogue)
   // UDP first: with port 0 the kernel picks one, and TCP then asks for the same number, which is
   // almost always free too; if not, both try again with a new pick.
   constexpr int kAttempts = 16;
+  OscAccess access{.open = isLoopbackAddress(bind_.address), .allow = config.oscAllow, .token = token_};
+  access.allow.push_back(parseNetwork("127.0.0.0/8"));  // a wildcard bind hears this computer too
+  access.allow.push_back(parseNetwork("::1"));
   for (int attempt = 0;; ++attempt) {
-    osc_ = std::make_unique<OscServer>(bind_, *catalogue_, inbox_, stats_, config.osc);
+    osc_ = std::make_unique<OscServer>(bind_, *catalogue_, inbox_, stats_, config.osc, access);
     try {
       web_ = std::make_unique<WebServer>(BindAddress{bind_.address, osc_->port()}, token_, *catalogue_, inbox_,
                                          stats_, config.web);

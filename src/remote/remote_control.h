@@ -29,6 +29,9 @@ struct RemoteConfig {
   size_t inboxCapacity = 1024;
   OscLimits osc{};
   WebLimits web{};
+  // --remote-allow: beyond a loopback bind, OSC from these networks needs no token (this computer's
+  // own loopback addresses never do); anyone else must send the token first (OscAccess).
+  std::vector<Network> oscAllow;
 };
 
 class RemoteControl {

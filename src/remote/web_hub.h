@@ -8,6 +8,8 @@
 #include "remote/web_server.h"
 
 #include <atomic>
+#include <list>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -16,6 +18,7 @@
 namespace vitrine::remote {
 
 class SocketSession;
+class HttpSession;
 
 struct WebHub {
   std::string token;
@@ -29,22 +32,37 @@ struct WebHub {
   std::shared_ptr<const std::string> lastState;    // sent to each socket when it opens
   std::atomic<size_t> sockets{0};                  // sessions alive, handshaking or open
   size_t connections = 0;                          // TCP connections alive, HTTP or WebSocket
+  std::map<std::string, size_t, std::less<>> perAddress;  // connections alive per client IP address
+  // Connections that have not yet sent a request with the token, oldest first: the ones given up
+  // when a new connection needs room, so idle strangers can never lock out a phone with the token.
+  std::list<HttpSession*> strangers;
 };
 
-// Counts a TCP connection for as long as it lives (moved from the HTTP session to its socket).
+// Counts a TCP connection, in all and for its address, for as long as it lives (moved from the HTTP
+// session to its socket).
 class ConnectionSlot {
  public:
-  explicit ConnectionSlot(WebHub& hub) : hub_(&hub) { ++hub_->connections; }
-  ~ConnectionSlot() {
-    if (hub_) --hub_->connections;
+  ConnectionSlot(WebHub& hub, std::string address) : hub_(&hub), address_(std::move(address)) {
+    ++hub_->connections;
+    ++hub_->perAddress[address_];
   }
-  ConnectionSlot(ConnectionSlot&& other) noexcept : hub_(other.hub_) { other.hub_ = nullptr; }
+  ~ConnectionSlot() {
+    if (!hub_) return;
+    --hub_->connections;
+    if (const auto it = hub_->perAddress.find(address_); it != hub_->perAddress.end() && --it->second == 0)
+      hub_->perAddress.erase(it);
+  }
+  ConnectionSlot(ConnectionSlot&& other) noexcept : hub_(other.hub_), address_(std::move(other.address_)) {
+    other.hub_ = nullptr;
+  }
   ConnectionSlot(const ConnectionSlot&) = delete;
   ConnectionSlot& operator=(const ConnectionSlot&) = delete;
   ConnectionSlot& operator=(ConnectionSlot&&) = delete;
+  const std::string& address() const { return address_; }
 
  private:
   WebHub* hub_;
+  std::string address_;
 };
 
 }  // namespace vitrine::remote

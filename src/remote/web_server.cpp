@@ -61,15 +61,39 @@ struct WebServer::Impl {
         });
         return;
       }
-      if (hub.connections >= hub.limits.maxConnections) {
-        count(hub.stats.connectionsRefused);
-        boost::system::error_code ignored;
-        socket.close(ignored);
+      boost::system::error_code ignored;
+      const std::string address = socket.remote_endpoint(ignored).address().to_string();
+      if (makeRoom(address)) {
+        std::make_shared<HttpSession>(std::move(socket), hub, address)->start();
       } else {
-        std::make_shared<HttpSession>(std::move(socket), hub)->start();
+        count(hub.stats.connectionsRefused);
+        socket.close(ignored);
       }
       accept();
     });
+  }
+
+  // Whether a new connection from `address` fits, once the oldest strangers in its way are closed:
+  // its address's own first when that address is at its limit, else anyone's. Holders of the token
+  // are never closed for a newcomer; when they alone fill a limit, the newcomer is refused.
+  bool makeRoom(const std::string& address) {
+    const auto fromAddress = [&] {
+      const auto it = hub.perAddress.find(address);
+      return it == hub.perAddress.end() ? size_t(0) : it->second;
+    };
+    const auto evictOldest = [&](bool sameAddress) {
+      for (HttpSession* stranger : hub.strangers)
+        if (!sameAddress || stranger->address() == address) {
+          stranger->evict();  // leaves the list and gives its slot back at once
+          return true;
+        }
+      return false;
+    };
+    while (fromAddress() >= hub.limits.maxPerAddress)
+      if (!evictOldest(true)) return false;
+    while (hub.connections >= hub.limits.maxConnections || hub.strangers.size() >= hub.limits.maxStrangers)
+      if (!evictOldest(false)) return false;
+    return true;
   }
 
   // On the I/O thread: the state as JSON, sent to every open socket unless unchanged.

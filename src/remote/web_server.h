@@ -23,6 +23,12 @@ struct WebLimits {
   size_t maxSocketMessage = 4096;      // bytes of one WebSocket message; larger closes the socket
   size_t maxSockets = 32;              // open WebSockets (phones) at once
   size_t maxConnections = 64;          // TCP connections of any kind at once
+  size_t maxPerAddress = 16;           // from one IP address (a browser opens six at most)
+  // Connections that have not shown the token yet, at most; the rest of maxConnections is kept for
+  // those that have. A new connection beyond either limit takes the place of the oldest stranger
+  // (from its own address first), which is closed: a phone's request, sent at once, always gets in.
+  size_t maxStrangers = 48;
+  std::chrono::milliseconds firstRequestTimeout{3'000};  // for a connection that has not shown the token
   size_t maxQueuedReplies = 8;         // per socket, for a client that reads slowly; more are dropped
   std::chrono::milliseconds requestTimeout{10'000};  // to send one whole request (slow clients)
   std::chrono::milliseconds socketIdle{30'000};      // silence before a ping, and again before closing

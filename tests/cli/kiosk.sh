@@ -2,10 +2,15 @@
 # kiosk.sh VITRINE OUTDIR: the gallery in kiosk mode on a virtual X display (xvfb-run). A scene that
 # cannot start is skipped, the scenes cycle with cross-fades, an injected lost device after a few
 # seconds ends that gallery with a log line and a fresh one starts on the next scene; SIGTERM (what a
-# service manager sends) then stops it cleanly, with exit 0 and no validation messages.
+# service manager sends) then stops it cleanly, with exit 0 and no validation messages. Its own saved
+# state never stops it: a settings file holding a number out of range (1e400, which once ended every
+# start with "unexpected error") is moved aside; and the kiosk's cycle does not become the scene the
+# gallery starts with next time.
 set -u
 vitrine=$1; out=$2
-rm -rf "$out"; mkdir -p "$out/config"
+rm -rf "$out"; mkdir -p "$out/config/vitrine"
+settings=$out/config/vitrine/settings.json
+echo '{"version": 1, "scene": "noodles", "window": {"zoom": 1e400}}' >"$settings"
 log=$out/kiosk.log
 # Thirty seconds of kiosk, then SIGTERM as a service manager sends it; the exit status is vitrine's.
 XDG_CONFIG_HOME=$out/config VITRINE_INJECT=scene-start:glass,device-lost:40 \
@@ -20,4 +25,9 @@ grep -q "The GPU stopped responding" "$log" || fail "the injected lost device wa
 grep -q "kiosk: restarting in 1 s" "$log" || fail "the kiosk did not restart"
 grep -q "validation messages" "$log" && fail "validation messages"
 [ "$code" = 0 ] || fail "exit $code after SIGTERM (0 expected)"
+ls "$out/config/vitrine" | grep -q '^settings.json.bad-' || fail "the unreadable settings file was not moved aside"
+grep -q "is not a settings file (a number out of range)" "$log" || fail "no warning about the settings file"
+# The --set values are remembered, as in the gallery; the scene to start with is not the kiosk's to write.
+[ -f "$settings" ] || fail "the kiosk's --set values were not saved"
+grep -q '"scene":' "$settings" && fail "the kiosk wrote the gallery's last scene: $(cat "$settings")"
 echo "kiosk ok"

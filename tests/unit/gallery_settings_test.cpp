@@ -4,6 +4,7 @@
 #include "scenes/scene.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <sstream>
@@ -66,6 +67,53 @@ TEST(GallerySettings, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
   for (const auto& entry : std::filesystem::directory_iterator(folder))
     movedAside += entry.path().filename().string().starts_with("settings.json.bad-");
   EXPECT_EQ(movedAside, 1u) << "a file that does not parse is kept, beside";
+}
+
+TEST(GallerySettings, AnOutOfRangeNumberIsAWarningNotAnError) {
+  const auto folder = freshFolder("out-of-range");
+  const auto path = folder / "settings.json";
+  std::ofstream(path) << R"({"version": 1, "scene": "kifs", "elsewhere": {"n": 1e400}})";
+  GallerySettings settings(path, false);  // threw nlohmann's out_of_range: "unexpected error", every start
+  ASSERT_EQ(settings.warnings().size(), 1u);
+  EXPECT_NE(settings.warnings()[0].find("moved it to"), std::string::npos) << settings.warnings()[0];
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// Two galleries on one file: each writes only what it changed, so neither undoes the other.
+TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
+  const auto path = freshFolder("two-galleries") / "settings.json";
+  std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 4}}})";
+  const auto now = GallerySettings::Clock::now();
+  GallerySettings first(path, false), second(path, false);
+  // The first moves kifs to step 6; the second touches noodles and shows it, and (like a switch
+  // away from kifs) remembers every kifs value it holds, unchanged: default ones and step 4.
+  first.remember("kifs", {{"step", "6"}}, now);
+  first.flush();
+  auto kifs = second.valuesFor("kifs");
+  kifs.emplace_back("tier", "auto");
+  second.remember("kifs", kifs, now);
+  second.remember("noodles", {{"segments", "24"}}, now);
+  second.showing("noodles", now);
+  second.flush();
+  const auto json = nlohmann::json::parse(read(path));
+  EXPECT_EQ(json["scenes"]["kifs"]["step"], 6) << "the second gallery did not change step: " << json.dump();
+  EXPECT_EQ(json["scenes"]["noodles"]["segments"], 24);
+  EXPECT_EQ(json["scene"], "noodles");
+}
+
+// A kiosk cycles through the scenes; the scene the gallery starts with next time stays the user's.
+TEST(GallerySettings, AKioskKeepsTheGallerysLastScene) {
+  const auto path = freshFolder("kiosk") / "settings.json";
+  std::ofstream(path) << R"({"version": 1, "scene": "glass"})";
+  const auto now = GallerySettings::Clock::now();
+  {
+    GallerySettings kiosk(path, false, /*keepScene=*/true);
+    kiosk.showing("neon", now);
+    kiosk.remember("neon", {{"chains", "256"}}, now);
+  }
+  const auto json = nlohmann::json::parse(read(path));
+  EXPECT_EQ(json["scene"], "glass");
+  EXPECT_EQ(json["scenes"]["neon"]["chains"], 256);
 }
 
 // Declaration mistakes (a default out of its own range, a preset naming an unknown key) throw when a

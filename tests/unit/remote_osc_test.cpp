@@ -22,10 +22,17 @@ using testing::eventually;
 // A UDP socket aimed at the server: sends whatever bytes a test makes.
 class UdpSender {
  public:
-  explicit UdpSender(uint16_t port) : fd_(::socket(AF_INET, SOCK_DGRAM, 0)) {
+  // `from`: the loopback address to send from (any of 127.0.0.0/8 is this computer's), else 127.0.0.1.
+  explicit UdpSender(uint16_t port, const char* from = nullptr) : fd_(::socket(AF_INET, SOCK_DGRAM, 0)) {
     address_.sin_family = AF_INET;
     address_.sin_port = htons(port);
     address_.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (from) {
+      sockaddr_in source{};
+      source.sin_family = AF_INET;
+      inet_pton(AF_INET, from, &source.sin_addr);
+      EXPECT_EQ(::bind(fd_, reinterpret_cast<const sockaddr*>(&source), sizeof source), 0) << from;
+    }
   }
   ~UdpSender() { ::close(fd_); }
   void send(const std::vector<std::byte>& bytes) const {
@@ -176,6 +183,33 @@ TEST_F(RemoteOsc, FullInboxDropsAndCounts) {
   ASSERT_TRUE(eventually([&] { return total(stats.snapshot()) == 5; }));
   EXPECT_EQ(stats.snapshot().accepted, 2u);
   EXPECT_EQ(stats.snapshot().dropped, 3u);
+}
+
+// Beyond loopback (here: a server told it is not open, on loopback addresses only), OSC comes only
+// from allowed networks or senders that sent the token; the rest is counted as unauthorised.
+TEST_F(RemoteOsc, BeyondLoopbackOnlyAllowedNetworksAndTokenHoldersAreHeard) {
+  const OscAccess access{.open = false, .allow = {parseNetwork("127.0.0.2/32")}, .token = "secret-token"};
+  OscServer server({"127.0.0.1", 0}, catalogue, inbox, stats, {}, access);
+  const auto step = osc("/vitrine/kifs/step", [](lo_message m) { lo_message_add_int32(m, 3); });
+  const auto token = [](const char* text) {
+    return osc("/vitrine/token", [text](lo_message m) { lo_message_add_string(m, text); });
+  };
+  UdpSender allowed(server.port(), "127.0.0.2"), stranger(server.port(), "127.0.0.3"),
+      holder(server.port(), "127.0.0.4");
+  stranger.send(step);
+  stranger.send(token("wrong-token"));
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().unauthorised == 2; }));
+  allowed.send(step);
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted == 1; }));
+  holder.send(token("secret-token"));
+  holder.send(step);
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().accepted == 3; }));
+  stranger.send(step);  // still unknown
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().unauthorised == 3; }));
+  const auto commands = inbox.drain();
+  ASSERT_EQ(commands.size(), 2u);
+  EXPECT_EQ(commands[0].client, "osc 127.0.0.2");
+  EXPECT_EQ(commands[1].client, "osc 127.0.0.4");
 }
 
 TEST_F(RemoteOsc, RefusesAnAddressInUse) {

@@ -14,7 +14,10 @@
 #include <nlohmann/json.hpp>
 #include <sys/socket.h>
 
+#include <fmt/format.h>
+
 #include <optional>
+#include <vector>
 
 namespace vitrine::remote {
 namespace {
@@ -34,6 +37,16 @@ void limitReads(tcp::socket& socket) {
   ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
 }
 
+// One request on an open connection, and its response.
+template <typename Body>
+http::response<http::string_body> roundTrip(tcp::socket& socket, const http::request<Body>& request) {
+  http::write(socket, request);
+  beast::flat_buffer buffer;
+  http::response<http::string_body> response;
+  http::read(socket, buffer, response);
+  return response;
+}
+
 http::response<http::string_body> get(uint16_t port, std::string target, http::verb verb = http::verb::get,
                                       std::string extraHeader = {}) {
   net::io_context io;
@@ -43,11 +56,7 @@ http::response<http::string_body> get(uint16_t port, std::string target, http::v
   http::request<http::string_body> request{verb, target, 11};
   request.set(http::field::host, "127.0.0.1");
   if (!extraHeader.empty()) request.set("X-Padding", extraHeader);
-  http::write(socket, request);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(socket, buffer, response);
-  return response;
+  return roundTrip(socket, request);
 }
 
 // A phone's socket, synchronous.
@@ -91,11 +100,7 @@ unsigned handshakeStatus(uint16_t port, const std::string& target) {
   request.set(http::field::connection, "Upgrade");
   request.set(http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
   request.set(http::field::sec_websocket_version, "13");
-  http::write(socket, request);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(socket, buffer, response);
-  return response.result_int();
+  return roundTrip(socket, request).result_int();
 }
 
 class RemoteWeb : public ::testing::Test {
@@ -208,6 +213,73 @@ TEST_F(RemoteWeb, ClientCountIsLimited) {
   ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
   EXPECT_EQ(handshakeStatus(server.port(), socketTarget), 503u);
   EXPECT_EQ(stats.snapshot().connectionsRefused, 1u);
+}
+
+// A TCP connection from `from` (a loopback address) that sends nothing.
+tcp::socket idleConnection(net::io_context& io, uint16_t port, const std::string& from) {
+  tcp::socket socket(io);
+  socket.open(tcp::v4());
+  socket.bind({net::ip::make_address(from), 0});
+  socket.connect({net::ip::make_address("127.0.0.1"), port});
+  return socket;
+}
+
+// How many of `loads` page requests with the token are answered 200 (a refused one is closed).
+int pagesServed(uint16_t port, int loads) {
+  int served = 0;
+  for (int i = 0; i < loads; ++i) {
+    try {
+      served += get(port, "/?token=" + kToken).result() == http::status::ok;
+    } catch (const std::exception&) {  // closed unanswered
+    }
+  }
+  return served;
+}
+
+// The lock-out: 64 idle connections without a token refused 13 of a phone's 14 page loads.
+// Strangers from one address, then from 64 addresses, give way to the phone each time.
+TEST_F(RemoteWeb, IdleStrangersCannotLockOutAPhone) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
+  net::io_context io;
+  std::vector<tcp::socket> idle;
+  for (int i = 0; i < 64; ++i) idle.push_back(idleConnection(io, server.port(), "127.0.0.1"));
+  EXPECT_EQ(pagesServed(server.port(), 14), 14);
+  idle.clear();
+  for (int i = 0; i < 64; ++i) idle.push_back(idleConnection(io, server.port(), fmt::format("127.0.1.{}", i + 1)));
+  EXPECT_EQ(pagesServed(server.port(), 14), 14);
+}
+
+TEST_F(RemoteWeb, HoldersOfTheTokenKeepTheirConnections) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats,
+                   {.maxConnections = 4, .maxPerAddress = 4, .maxStrangers = 2});
+  net::io_context io;
+  tcp::socket phone(io);
+  phone.connect({net::ip::make_address("127.0.0.1"), server.port()});
+  limitReads(phone);
+  const auto request = [&] {
+    http::request<http::string_body> page{http::verb::get, "/?token=" + kToken, 11};
+    page.set(http::field::host, "127.0.0.1");
+    return roundTrip(phone, page).result();
+  };
+  ASSERT_EQ(request(), http::status::ok);  // keep-alive: the connection stays open, trusted
+  std::vector<tcp::socket> idle;
+  for (int i = 0; i < 10; ++i) idle.push_back(idleConnection(io, server.port(), "127.0.0.1"));
+  EXPECT_EQ(pagesServed(server.port(), 1), 1) << "a newcomer still gets in";
+  EXPECT_EQ(request(), http::status::ok) << "the phone's connection was not given up for strangers";
+}
+
+TEST_F(RemoteWeb, StrangersThatSendNothingAreClosedSoon) {
+  WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats,
+                   {.firstRequestTimeout = std::chrono::milliseconds(100)});
+  net::io_context io;
+  tcp::socket idle = idleConnection(io, server.port(), "127.0.0.1");
+  limitReads(idle);  // two seconds, far longer than the stranger's time
+  const auto start = std::chrono::steady_clock::now();
+  char byte = 0;
+  beast::error_code error;
+  idle.read_some(net::buffer(&byte, 1), error);
+  EXPECT_EQ(error, net::error::eof) << error.message();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(1500));
 }
 
 TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {

@@ -266,6 +266,101 @@ TEST_F(SettingsFile, UnreadableFilesAreMovedAsideNotDeleted) {
   expectMovedAside(R"({"scenes": {}, "pad": ")" + std::string(kMaxSettingsBytes, ' ') + R"("})", "over 1 MiB");
 }
 
+// nlohmann's parser refuses a number no double holds with an exception of its own (out_of_range), not
+// a parse error: it escaped as "unexpected error" and stopped the gallery and the kiosk on every start.
+TEST_F(SettingsFile, AnOutOfRangeNumberAnywhereIsMovedAsideLikeAnyUnreadableFile) {
+  expectMovedAside(R"({"version": 1, "scenes": {"kifs": {"step": 1e400}}})", "under a known key");
+  expectMovedAside(R"({"version": 1, "window": {"zoom": -1e400}, "scenes": {}})", "under an unknown key");
+  expectMovedAside(R"({"version": 1e400})", "as the version");
+}
+
+TEST_F(SettingsFile, AFileThatCannotBeOpenedIsMovedAside) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root opens a file without read permission";
+  writeAll(path_, R"({"version": 1, "scene": "kifs"})");
+  fs::permissions(path_, fs::perms::none);
+  const LoadResult result = load();
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_NE(result.warnings[0].find("cannot open it"), std::string::npos) << result.warnings[0];
+  EXPECT_NE(result.warnings[0].find("moved it to"), std::string::npos) << result.warnings[0];
+  EXPECT_FALSE(fs::exists(path_));
+  EXPECT_EQ(asideFiles().size(), 1u);
+  EXPECT_FALSE(result.readable);
+}
+
+// A settings file kept in a dotfiles folder and linked into ~/.config stays a link; the file it points
+// to gets the new content (the rename happens beside the target, not over the link).
+TEST_F(SettingsFile, ASymlinkedFileStaysALink) {
+  fs::create_directories(dir_ / "dotfiles");
+  const fs::path real = dir_ / "dotfiles" / "vitrine.json";
+  writeAll(real, R"({"version": 1, "scene": "kifs"})");
+  fs::create_symlink("dotfiles/vitrine.json", path_);  // relative, as `ln -s` usually makes them
+  fs::create_symlink(path_, dir_ / "second-link.json");  // and a link to that link
+  Settings settings = load().settings;
+  settings.scenes["kifs"] = {{"step", "5"}};
+  saveSettings(dir_ / "second-link.json", settings, schemaFor);
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "second-link.json")));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(path_)));
+  EXPECT_EQ(nlohmann::json::parse(readAll(real))["scenes"]["kifs"]["step"], 5);
+  EXPECT_EQ(resolveLinks(dir_ / "second-link.json"), dir_ / "dotfiles" / "vitrine.json");
+  // A dangling link: the save creates the file it names.
+  fs::remove(real);
+  saveSettings(path_, settings, schemaFor);
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(path_)));
+  EXPECT_TRUE(fs::is_regular_file(real));
+  // A loop of links is an error, not a hang.
+  fs::create_symlink("loop-b", dir_ / "loop-a");
+  fs::create_symlink("loop-a", dir_ / "loop-b");
+  EXPECT_THROW(saveSettings(dir_ / "loop-a", settings, schemaFor), Error);
+}
+
+TEST(SettingsMerge, OnlyChangedKeysOverwriteWhatIsOnDisk) {
+  Settings disk;
+  disk.scene = "noodles";
+  disk.scenes["kifs"] = {{"step", "2"}, {"tier", "low"}};
+  disk.scenes["glass"] = {{"ior", "1.5"}};
+  disk.unknown["window"] = {{"w", 1280}};
+  Settings ours;
+  ours.scene = "kifs";
+  ours.scenes["kifs"] = {{"step", "7"}, {"tier", "high"}, {"grain", "off"}};
+  SettingsChanges changed;
+  changed.keys["kifs"] = {"step", "grain", "label"};  // label: changed, then gone from ours
+  Settings merged = mergeSettings(disk, ours, changed);
+  EXPECT_EQ(merged.scene, "noodles") << "the scene was not changed here";
+  EXPECT_EQ(merged.scenes.at("kifs"), (KeyValues{{"step", "7"}, {"tier", "low"}, {"grain", "off"}}));
+  EXPECT_EQ(merged.scenes.at("glass"), (KeyValues{{"ior", "1.5"}}));
+  EXPECT_EQ(merged.unknown["window"]["w"], 1280);
+  changed.scene = true;
+  EXPECT_EQ(mergeSettings(disk, ours, changed).scene, "kifs");
+  changed.all = true;
+  EXPECT_EQ(mergeSettings(disk, ours, changed).scenes, ours.scenes) << "--reset-settings starts over";
+}
+
+// A check spanning two parameters (tier low needs step 5 or less), as a scene's checkParameters.
+TEST(SettingsConflicts, OnlyTheValuesThatConflictAreDropped) {
+  Kifs kifs;
+  const Bound bound = bindSettings(kifsSchema(), kifs);
+  const auto apply = [&](const KeyValues& values) {
+    return applyValues(bound, values, [&] { return kifs.tier == Tier::Low && kifs.step > 5 ? std::string("tier low needs step <= 5") : std::string(); });
+  };
+  const FittedValues fitted =
+      applyWhatFits({{"step", "8"}, {"target_ms", "20"}, {"tier", "low"}, {"grain", "off"}}, apply);
+  EXPECT_EQ(fitted.why, "tier low needs step <= 5");
+  EXPECT_EQ(fitted.dropped, (std::vector<std::string>{"tier=low"}));
+  EXPECT_EQ(fitted.kept, (KeyValues{{"step", "8"}, {"target_ms", "20"}, {"grain", "off"}}));
+  EXPECT_EQ(kifs.step, 8);
+  EXPECT_EQ(kifs.targetMs, 20.0f) << "the valid values are kept, not replaced by the defaults";
+  EXPECT_FALSE(kifs.grain);
+  EXPECT_EQ(kifs.tier, Tier::High);
+
+  // Values that fit are applied as they are, with nothing dropped.
+  Kifs fresh;
+  kifs = fresh;
+  const FittedValues fine = applyWhatFits({{"step", "3"}, {"tier", "low"}}, apply);
+  EXPECT_TRUE(fine.dropped.empty());
+  EXPECT_EQ(kifs.step, 3);
+  EXPECT_EQ(kifs.tier, Tier::Low);
+}
+
 TEST_F(SettingsFile, TwoBadFilesInOneSecondBothKept) {
   writeAll(path_, "garbage one");
   load();
