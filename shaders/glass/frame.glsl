@@ -54,9 +54,10 @@ vec2 worldToPixel(vec3 p) {
   return (ndc * 0.5 + 0.5) * F.view.zw;
 }
 
-// Equirectangular lookup: +y up, the panorama turned by the environment rotation.
+// Equirectangular lookup, the original's convention (src/scenes/glass/studio.h): longitude atan2(d.x, d.z)
+// plus the environment rotation, +y up; an unturned panorama shows its u = 0 seam straight ahead.
 vec2 equirectUv(vec3 d) {
-  float phi = atan(d.x, -d.z) + F.environment.y;
+  float phi = atan(d.x, d.z) + F.environment.y;
   float theta = acos(clamp(d.y, -1.0, 1.0));
   return vec2(fract(phi / (2.0 * PI) + 0.5), theta / PI);
 }

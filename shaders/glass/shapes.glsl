@@ -21,7 +21,7 @@ const float TWO_PI = 6.28318530718;
 // 48 bytes in std140 and std430 alike, as the C++ ShapeDims.
 struct ShapeDims {
   vec4 sizeEdge;  // xyz: size along x, y, z; w: edge rounding radius (pill, cube, plate)
-  vec4 wave;      // plate: amplitude, wavelength, phase; w: 1 gives the pill a squircle rim
+  vec4 wave;      // plate: amplitude, wavelength, phase; w: 1 for smooth curvature (pill, cube, plate)
   int kind;       // SHAPE_*
   int pad0;
   int pad1;
@@ -30,16 +30,34 @@ struct ShapeDims {
 
 float shapeScale(ShapeDims s) { return max(s.sizeEdge.x, max(s.sizeEdge.y, s.sizeEdge.z)); }
 
-// Stadium slab, rim rounded by r = min(edge, T/2, H/2); the squircle rim measures the rounding in the L4 norm.
+// Smooth curvature: L4 squircle rims, their radius compensated so that they cut as much off the corner's
+// diagonal as a circle of the edge radius (shapes.h derives k).
+const float SQUIRCLE_COMPENSATION = 1.8408964;
+float rimRadius(float edge, float room, bool squircle) { return min(squircle ? edge * SQUIRCLE_COMPENSATION : edge, room); }
+float lengthL4(vec2 v) {
+  vec2 s = v * v;
+  return sqrt(sqrt(dot(s, s)));
+}
+float lengthL4(vec3 v) {
+  vec3 s = v * v;
+  return sqrt(sqrt(dot(s, s)));
+}
+
+float sdRoundedRect(vec2 p, vec2 halfSize, float c) {
+  vec2 q = abs(p) - (halfSize - c);
+  return length(max(q, 0.0)) + min(max(q.x, q.y), 0.0) - c;
+}
+
+// A rounded rectangle in XY (corners min(edge, H/2, L/2)) through the thickness; rim r = min(edge, T/2, H/2),
+// or an L4 rim of the compensated radius when smooth.
 float sdPill(vec3 p, vec3 size, float edge, bool squircle) {
-  float endRadius = 0.5 * size.y;
-  float r = min(edge, min(0.5 * size.z, endRadius));
-  float straight = max(0.5 * size.x - endRadius, 0.0);  // half the length between the end centres
-  float stadium = length(vec2(max(abs(p.x) - straight, 0.0), p.y)) - endRadius;
-  vec2 w = vec2(stadium + r, abs(p.z) - (0.5 * size.z - r));
+  vec2 halfSize = 0.5 * size.xy;
+  float corner = min(edge, min(halfSize.x, halfSize.y));
+  float r = rimRadius(edge, min(0.5 * size.z, halfSize.y), squircle);
+  float outline = sdRoundedRect(p.xy, halfSize, corner);
+  vec2 w = vec2(outline + r, abs(p.z) - (0.5 * size.z - r));
   vec2 o = max(w, 0.0);
-  float rim = squircle ? sqrt(sqrt(o.x * o.x * o.x * o.x + o.y * o.y * o.y * o.y)) : length(o);
-  return min(max(w.x, w.y), 0.0) + rim - r;
+  return min(max(w.x, w.y), 0.0) + (squircle ? lengthL4(o) : length(o)) - r;
 }
 
 // Exact distance to an isosceles triangle in YZ (base size.y at z = -size.z/2, apex up), extruded along x.
@@ -56,9 +74,15 @@ float sdPrism(vec3 p, vec3 size) {
   return min(max(w.x, w.y), 0.0) + length(max(w, 0.0));
 }
 
-float sdRoundedBox(vec3 p, vec3 halfSize, float r) {
+float sdRoundedBox(vec3 p, vec3 halfSize, float r, bool squircle) {
   vec3 q = abs(p) - (halfSize - r);
-  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - r;
+  vec3 o = max(q, 0.0);
+  return (squircle ? lengthL4(o) : length(o)) + min(max(q.x, max(q.y, q.z)), 0.0) - r;
+}
+
+float sdCube(vec3 p, vec4 sizeEdge, bool squircle) {
+  vec3 halfSize = 0.5 * sizeEdge.xyz;
+  return sdRoundedBox(p, halfSize, rimRadius(sizeEdge.w, min(halfSize.x, min(halfSize.y, halfSize.z)), squircle), squircle);
 }
 
 float plateHeight(vec2 xy, vec4 wave) {
@@ -80,18 +104,16 @@ float plateLipschitz(vec4 wave) {
 
 float sdPlate(vec3 p, vec4 sizeEdge, vec4 wave) {
   vec3 halfSize = 0.5 * sizeEdge.xyz;
-  float r = min(sizeEdge.w, min(halfSize.z, min(halfSize.x, halfSize.y)));
+  bool squircle = wave.w > 0.5;
+  float r = rimRadius(sizeEdge.w, min(halfSize.z, min(halfSize.x, halfSize.y)), squircle);
   vec3 q = vec3(p.xy, p.z - plateHeight(p.xy, wave));
-  return sdRoundedBox(q, halfSize, r) / plateLipschitz(wave);
+  return sdRoundedBox(q, halfSize, r, squircle) / plateLipschitz(wave);
 }
 
 float shapeSdf(ShapeDims s, vec3 p) {
   if (s.kind == SHAPE_PILL) return sdPill(p, s.sizeEdge.xyz, s.sizeEdge.w, s.wave.w > 0.5);
   if (s.kind == SHAPE_PRISM) return sdPrism(p, s.sizeEdge.xyz);
-  if (s.kind == SHAPE_CUBE) {
-    vec3 halfSize = 0.5 * s.sizeEdge.xyz;
-    return sdRoundedBox(p, halfSize, min(s.sizeEdge.w, min(halfSize.x, min(halfSize.y, halfSize.z))));
-  }
+  if (s.kind == SHAPE_CUBE) return sdCube(p, s.sizeEdge, s.wave.w > 0.5);
   if (s.kind == SHAPE_PLATE) return sdPlate(p, s.sizeEdge, s.wave);
   return diamondSdf(p);
 }
@@ -132,19 +154,17 @@ bool shapeBoxRange(vec3 ro, vec3 rd, vec3 halfSize, out float t0, out float t1) 
   return t0 <= t1;
 }
 
-// Exit from inside the stadium in XY (end centres at x = ±a, radius rr); d.xy need not be unit.
-float stadiumExit(vec2 p, vec2 d, float a, float rr) {
+// Exit from inside the rectangle of half size halfSize with corners rounded by c, in XY (d.xy need not be
+// unit): the rectangle's exit, unless it lands in a corner's square: then that corner disc's far root.
+float roundedRectExit(vec2 p, vec2 d, vec2 halfSize, float c) {
   if (dot(d, d) < 1e-12) return SHAPE_FAR;
-  float side = d.x;
-  if (abs(d.y) > 1e-12) {
-    float t = ((d.y > 0.0 ? rr : -rr) - p.y) / d.y;
-    float x = p.x + t * d.x;
-    if (abs(x) <= a) return t;  // through a straight side
-    side = x;
-  }
-  // Past the straight part, the ray is in the end disc on that side and leaves it at the far root.
-  vec2 o = p - vec2(side > 0.0 ? a : -a, 0.0);
-  float qa = dot(d, d), qb = dot(o, d), qc = dot(o, o) - rr * rr;
+  vec2 inv = 1.0 / mix(d, vec2(1e-20), lessThan(abs(d), vec2(1e-20)));
+  vec2 far = max((-halfSize - p) * inv, (halfSize - p) * inv);
+  float t = min(far.x, far.y);
+  vec2 at = p + t * d, inner = halfSize - c;
+  if (abs(at.x) <= inner.x || abs(at.y) <= inner.y) return t;  // through a straight side
+  vec2 o = p - vec2(at.x > 0.0 ? inner.x : -inner.x, at.y > 0.0 ? inner.y : -inner.y);
+  float qa = dot(d, d), qb = dot(o, d), qc = dot(o, o) - c * c;
   return (-qb + sqrt(max(qb * qb - qa * qc, 0.0))) / qa;
 }
 
@@ -234,20 +254,21 @@ bool shapeExit(ShapeDims s, vec3 p, vec3 d, out float t, out vec3 n, out int fac
   float seed;
   int steps;
   if (s.kind == SHAPE_PILL) {
-    float a = max(0.5 * (size.x - size.y), 0.0);
-    seed = min(stadiumExit(p.xy, d.xy, a, 0.5 * size.y), slabExit(p.z, d.z, 0.5 * size.z));
-    steps = 4;
+    vec2 halfSize = 0.5 * size.xy;
+    float corner = min(s.sizeEdge.w, min(halfSize.x, halfSize.y));
+    seed = min(roundedRectExit(p.xy, d.xy, halfSize, corner), slabExit(p.z, d.z, 0.5 * size.z));
+    steps = s.wave.w > 0.5 ? 6 : 4;  // the L4 rim's larger radius leaves the seed further out
   } else if (s.kind == SHAPE_CUBE) {
     float t0;
     shapeBoxRange(p, d, 0.5 * size, t0, seed);
-    steps = 4;
+    steps = s.wave.w > 0.5 ? 6 : 4;
   } else {  // plate: the vertical rim or a wavy face, then onto the rounded rim
     float tolerance = 1e-4 * shapeScale(s);
     float side = min(slabExit(p.x, d.x, 0.5 * size.x), slabExit(p.y, d.y, 0.5 * size.y));
     float top = plateFaceExit(p, d, s.wave, 0.5 * size.z, tolerance);
     float bottom = plateFaceExit(p, d, s.wave, -0.5 * size.z, tolerance);
     seed = min(side, min(top, bottom));
-    steps = 2;
+    steps = s.wave.w > 0.5 ? 3 : 2;
   }
   if (!(seed < SHAPE_FAR)) return false;
   t = refineExit(s, p, d, seed, steps);

@@ -32,10 +32,12 @@ TEST_F(GlassDiamondProbe, ShaderMatchesTheCppReference) {
   const glass::DiamondGeometry stone = glass::makeDiamond(kDiameter);
   const std::vector<glass::ShapeDims> shapes = {
       glass::pillDims({400.0f, 115.0f, 62.0f}, 100.0f),
-      glass::pillDims({400.0f, 115.0f, 62.0f}, 100.0f, true),
       glass::prismDims({393.0f, 149.0f, 117.0f}),
+      glass::pillDims({400.0f, 115.0f, 62.0f}, 12.0f, true),  // smooth, its outline a rounded rectangle
       glass::cubeDims(230.0f, 44.0f),
+      glass::cubeDims(230.0f, 44.0f, true),
       glass::plateDims({346.0f, 346.0f, 60.0f}, 10.5f, 17.0f, 535.0f, 0.7f),
+      glass::plateDims({346.0f, 346.0f, 60.0f}, 10.5f, 17.0f, 535.0f, 0.7f, true),
       glass::diamondDims(kDiameter),  // the same diameter as the planes in the buffer
   };
 

@@ -77,7 +77,7 @@ TEST_P(MaterialTest, IndexIsFiniteAndAboveOneAcrossTheVisible) {
       const float n = glass::materialIor(m, l, sellmeier);
       ASSERT_TRUE(std::isfinite(n)) << l;
       ASSERT_GT(n, 1.0f) << l;  // strictly: the floor is never what holds it up in the visible
-      ASSERT_LT(n, 7.0f) << l;  // void crystal reaches 6.14 at 380 nm
+      ASSERT_LT(n, 5.0f) << l;  // unobtanium reaches 4.36 at 380 nm
     }
 }
 
@@ -100,7 +100,10 @@ TEST_P(MaterialTest, ValuesAreInTheirGroupsRange) {
   EXPECT_LE(m.nd, 3.5f);
   EXPECT_GE(m.vd, 2.0f);
   if (m.fantasy) {
-    EXPECT_LE(m.vd, 8.0f) << "a fantasy material should disperse more than any real one";
+    for (const Material& real : kMaterials)
+      if (!real.fantasy)
+        EXPECT_GT(principalDispersion(m), principalDispersion(real)) << "a fantasy material should disperse more "
+                                                                        "than any real one, here " << real.key;
     EXPECT_FALSE(m.sellmeier) << "invented materials have no measured law";
   } else {
     EXPECT_GE(m.vd, 20.0f);
@@ -111,10 +114,32 @@ TEST_P(MaterialTest, ValuesAreInTheirGroupsRange) {
 
 INSTANTIATE_TEST_SUITE_P(All, MaterialTest, ::testing::ValuesIn(allMaterials()), materialName);
 
-TEST(Materials, FifteenElevenRealThenFourFantasy) {
-  ASSERT_EQ(kMaterials.size(), 15u);
-  for (size_t i = 0; i < kMaterials.size(); ++i) EXPECT_EQ(kMaterials[i].fantasy, i >= 11) << kMaterials[i].key;
-  EXPECT_EQ(sellmeierMaterials().size(), 7u);
+// The original demo's fifteen, in its order and with its figures (Spectral Glass' material list), then the
+// two extra real glasses.
+TEST(Materials, TheOriginalsFifteenThenTwoMoreRealGlasses) {
+  struct Expected {
+    const char* key;
+    float nd, vd;
+  };
+  const Expected original[] = {
+      {"water", 1.333f, 55.7f},         {"fused_silica", 1.458f, 67.7f}, {"acrylic", 1.491f, 58.0f},
+      {"bk7", 1.517f, 64.2f},           {"polycarbonate", 1.586f, 30.0f}, {"lead_crystal", 1.600f, 32.0f},
+      {"sf10", 1.728f, 28.4f},          {"sf11", 1.785f, 25.4f},         {"cubic_zirconia", 2.150f, 30.0f},
+      {"diamond", 2.418f, 55.0f},       {"moissanite", 2.648f, 31.0f},   {"rainbow_glass", 1.55f, 8.0f},
+      {"fire_crystal", 2.2f, 12.0f},    {"unobtanium", 3.2f, 4.0f},      {"rainbow_soap", 1.272f, 2.0f},
+  };
+  ASSERT_EQ(glass::kOriginalMaterials, std::size(original));
+  ASSERT_EQ(kMaterials.size(), std::size(original) + 2);
+  for (size_t i = 0; i < std::size(original); ++i) {
+    EXPECT_EQ(kMaterials[i].key, original[i].key) << i;
+    EXPECT_EQ(kMaterials[i].nd, original[i].nd) << original[i].key;
+    EXPECT_EQ(kMaterials[i].vd, original[i].vd) << original[i].key;
+    EXPECT_EQ(kMaterials[i].fantasy, i >= 11) << original[i].key;
+  }
+  EXPECT_EQ(kMaterials[15].key, "f2");
+  EXPECT_EQ(kMaterials[16].key, "sapphire");
+  EXPECT_FALSE(kMaterials[15].fantasy || kMaterials[16].fantasy);
+  EXPECT_EQ(sellmeierMaterials().size(), 7u);  // fused silica, BK7, SF11, cubic zirconia, diamond, F2, sapphire
 }
 
 TEST(Materials, KeysAreUniqueAndUnknownKeysAreNull) {
@@ -126,12 +151,13 @@ TEST(Materials, KeysAreUniqueAndUnknownKeysAreNull) {
 }
 
 TEST(Materials, CatalogueAnchors) {
-  EXPECT_FLOAT_EQ(glass::findMaterial("bk7")->nd, 1.5168f);
-  EXPECT_FLOAT_EQ(glass::findMaterial("bk7")->vd, 64.17f);
-  EXPECT_FLOAT_EQ(glass::findMaterial("diamond")->nd, 2.4175f);
-  EXPECT_FLOAT_EQ(glass::findMaterial("opaline")->nd, 1.272f);
-  EXPECT_FLOAT_EQ(glass::findMaterial("opaline")->vd, 2.0f);
-  EXPECT_FLOAT_EQ(glass::findMaterial("void_crystal")->nd, 3.5f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("bk7")->nd, 1.517f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("bk7")->vd, 64.2f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("diamond")->nd, 2.418f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("rainbow_soap")->nd, 1.272f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("rainbow_soap")->vd, 2.0f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("unobtanium")->nd, 3.2f);
+  EXPECT_FLOAT_EQ(glass::findMaterial("f2")->nd, 1.62004f);
 }
 
 // --- Materials with a published Sellmeier law -------------------------------------------------------
@@ -142,11 +168,17 @@ class SellmeierTest : public ::testing::TestWithParam<size_t> {
   float n(float lambda) const { return glass::sellmeierIor(lambda, *m.sellmeier); }
 };
 
-TEST_P(SellmeierTest, MatchesTheTablesNd) { EXPECT_NEAR(n(glass::kLambdaD), m.nd, 1e-4f); }
+// The table holds the original's rounded handbook figures; each law agrees with them to 1e-3 in n_d and
+// 1.5 % in V_d, but for cubic zirconia's gem-trade 2.150 / 30 (materials.h says why): 0.01 and 12 %.
+bool gemTradeFigures(const Material& m) { return m.key == "cubic_zirconia"; }
+
+TEST_P(SellmeierTest, MatchesTheTablesNd) {
+  EXPECT_NEAR(n(glass::kLambdaD), m.nd, gemTradeFigures(m) ? 1e-2f : 1e-3f);
+}
 
 TEST_P(SellmeierTest, MatchesTheTablesAbbeNumber) {
   const float vd = (n(glass::kLambdaD) - 1.0f) / (n(glass::kLambdaF) - n(glass::kLambdaC));
-  EXPECT_NEAR(vd, m.vd, 2e-3f * m.vd);
+  EXPECT_NEAR(vd, m.vd, (gemTradeFigures(m) ? 0.12f : 0.015f) * m.vd);
 }
 
 TEST_P(SellmeierTest, DispersionIsNormalAcrossTheVisible) {
@@ -160,10 +192,12 @@ TEST_P(SellmeierTest, DispersionIsNormalAcrossTheVisible) {
 // The two-term Cauchy law through (n_d, V_d) is an interpolation between F and C: there it stays within 2% of
 // n_F - n_C of the measured law, but toward 380 nm it misses the curvature of the UV resonances, worst for the
 // dense flints (N-SF11: 38% of n_F - n_C, 0.012 in n).
+// (Cauchy through the law's own n_d and V_d: the table's rounding is the test above's business.)
 TEST_P(SellmeierTest, CauchyTracksItBetweenFAndCAndLooselyInTheBlue) {
-  const float spread = principalDispersion(m);
+  const float nd = n(glass::kLambdaD), vd = (nd - 1.0f) / (n(glass::kLambdaF) - n(glass::kLambdaC));
+  const float spread = (nd - 1.0f) / vd;
   for (float l = glass::kLambdaMin; l <= glass::kLambdaMax; l += 1.0f) {
-    const float error = std::fabs(glass::cauchyIor(l, m.nd, m.vd) - n(l));
+    const float error = std::fabs(glass::cauchyIor(l, nd, vd) - n(l));
     const bool inside = l >= glass::kLambdaF && l <= glass::kLambdaC;
     ASSERT_LE(error, (inside ? 0.02f : 0.4f) * spread) << l;
   }
@@ -188,9 +222,10 @@ TEST_P(Bk7LineTest, SellmeierMatchesTheDataSheet) {
   EXPECT_NEAR(glass::sellmeierIor(GetParam().lambda, glass::kSellmeierBk7), GetParam().n, 1e-5f + 5e-6f);
 }
 
+// Cauchy through the data sheet's own n_d 1.5168 and V_d 64.17 (the table holds the original's rounded
+// 1.517 / 64.2, 2e-4 above it).
 TEST_P(Bk7LineTest, CauchyIsWithinTwoTenThousandths) {
-  const Material& bk7 = *glass::findMaterial("bk7");
-  EXPECT_NEAR(glass::cauchyIor(GetParam().lambda, bk7.nd, bk7.vd), GetParam().n, 2e-4f);
+  EXPECT_NEAR(glass::cauchyIor(GetParam().lambda, 1.5168f, 64.17f), GetParam().n, 2e-4f);
 }
 
 INSTANTIATE_TEST_SUITE_P(

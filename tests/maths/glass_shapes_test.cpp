@@ -85,10 +85,14 @@ struct ShapeCase {
 const std::vector<ShapeCase>& shapeCases() {
   static const std::vector<ShapeCase> cases = {
       {"Pill", pillDims({400.0f, 115.0f, 62.0f}, 100.0f), {mirror(0), mirror(1), mirror(2)}},
-      {"SquirclePill", pillDims({400.0f, 115.0f, 62.0f}, 100.0f, true), {mirror(0), mirror(1), mirror(2)}},
+      {"SmoothPill", pillDims({400.0f, 115.0f, 62.0f}, 100.0f, true), {mirror(0), mirror(1), mirror(2)}},
+      {"RoundedRectPill", pillDims({400.0f, 115.0f, 62.0f}, 30.0f), {mirror(0), mirror(1), mirror(2)}},
+      {"SmoothRoundedRectPill", pillDims({400.0f, 115.0f, 62.0f}, 12.0f, true), {mirror(0), mirror(1), mirror(2)}},
       {"Prism", prismDims({393.0f, 149.0f, 117.0f}), {mirror(0), mirror(1)}},
       {"Cube", cubeDims(230.0f, 44.0f), {mirror(0), mirror(1), mirror(2), kSwapXY}},
+      {"SmoothCube", cubeDims(230.0f, 44.0f, true), {mirror(0), mirror(1), mirror(2), kSwapXY}},
       {"Plate", plateDims({346.0f, 346.0f, 60.0f}, 10.5f, 17.0f, 535.0f, 0.7f), {kSwapXY}},
+      {"SmoothPlate", plateDims({346.0f, 346.0f, 60.0f}, 10.5f, 17.0f, 535.0f, 0.7f, true), {kSwapXY}},
       {"Diamond",
        diamondDims(400.0f),
        {mirror(1), rotationZ(glm::quarter_pi<float>()), mirrorAt(glm::pi<float>() / 8.0f),
@@ -265,7 +269,7 @@ TEST(Pill, ExactDistances) {
 
 TEST(Pill, RimRadiusClampsToHalfTheThickness) {
   const ShapeDims preset = pillDims({400.0f, 115.0f, 62.0f}, 100.0f),
-                  clamped = pillDims({400.0f, 115.0f, 62.0f}, 31.0f);
+                  clamped = pillDims({400.0f, 115.0f, 62.0f}, 57.5f);  // the outline's corners stop at H/2
   const ShapeDims sharper = pillDims({400.0f, 115.0f, 62.0f}, 10.0f);
   float differs = 0.0f;
   for (uint32_t i = 0; i < 2000; ++i) {
@@ -288,6 +292,61 @@ TEST(Pill, SquircleRimAgreesOnTheFacesAndBulgesAtTheRim) {
     const glm::vec3 p = randomSigned(i, 37u) * glm::vec3(220.0f, 70.0f, 45.0f);
     ASSERT_LE(shapeSdf(squircle, p), shapeSdf(round, p) + 1e-4f);
   }
+}
+
+// An edge below half the height makes the outline a rounded rectangle, not a stadium.
+TEST(Pill, OutlineIsARoundedRectangleWhenTheEdgeIsBelowHalfTheHeight) {
+  const ShapeDims s = pillDims({400.0f, 115.0f, 62.0f}, 30.0f);  // corners of 30 about (170, 27.5); rim 30
+  const float q = std::sqrt(25.0f * 25.0f + 22.5f * 22.5f);
+  EXPECT_NEAR(shapeSdf(s, {195.0f, 50.0f, 0.0f}), q - 30.0f, 1e-3f);  // a stadium would be 15 away here
+  EXPECT_LT(shapeSdf(s, {185.0f, 45.0f, 0.0f}), -5.0f);                // outside a stadium, inside this pill
+  EXPECT_NEAR(shapeSdf(s, {205.0f, 0.0f, 0.0f}), 5.0f, 1e-4f);          // the flat end
+  EXPECT_NEAR(shapeSdf(pillDims({400.0f, 115.0f, 62.0f}, 80.0f), {195.0f, 50.0f, 0.0f}),
+              std::sqrt(52.5f * 52.5f + 50.0f * 50.0f) - 57.5f, 1e-3f);  // at or above H/2: the stadium
+}
+
+// Smooth curvature: an L4 rim whose radius is compensated so it cuts the corner's diagonal as much as a
+// circle of the edge radius does; it agrees with the round rim on the faces and holds it elsewhere.
+TEST(Squircle, CompensationIsTheDiagonalCutRatio) {
+  EXPECT_NEAR(kSquircleCompensation, (1.0 - std::sqrt(0.5)) / (1.0 - std::pow(2.0, -0.25)), 1e-6);
+  EXPECT_NEAR(lengthL4(glm::vec2(1.0f, 1.0f)), std::pow(2.0f, 0.25f), 1e-6f);
+  EXPECT_NEAR(lengthL4(glm::vec3(3.0f, 0.0f, 0.0f)), 3.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(rimRadius(20.0f, 100.0f, true), 20.0f * kSquircleCompensation);
+  EXPECT_FLOAT_EQ(rimRadius(20.0f, 100.0f, false), 20.0f);
+  EXPECT_FLOAT_EQ(rimRadius(100.0f, 31.0f, true), 31.0f);
+}
+
+TEST(Squircle, CubeRimCutsTheCornerLikeTheRoundRim) {
+  const ShapeDims round = cubeDims(230.0f, 20.0f), smooth = cubeDims(230.0f, 20.0f, true);
+  // The round rim's 45-degree point on the edge between the +x and +y faces, half way up.
+  const float c = 95.0f + 20.0f * std::sqrt(0.5f);
+  EXPECT_NEAR(shapeSdf(round, {c, c, 0.0f}), 0.0f, 1e-3f);
+  EXPECT_NEAR(shapeSdf(smooth, {c, c, 0.0f}), 0.0f, 1e-3f);
+  const float r = 20.0f * kSquircleCompensation;  // the smooth rim's own 45-degree point, from its centre
+  EXPECT_NEAR(shapeSdf(smooth, glm::vec3(115.0f - r + r * std::pow(2.0f, -0.25f)) * glm::vec3(1, 1, 0)), 0.0f, 1e-3f);
+  EXPECT_NEAR(shapeSdf(smooth, {0.0f, 0.0f, 120.0f}), 5.0f, 1e-4f);  // the faces are where they were
+  EXPECT_NEAR(shapeSdf(smooth, {121.0f, 10.0f, -30.0f}), 6.0f, 1e-4f);
+}
+
+TEST(Squircle, RimsCurveFromZeroWhereTheyMeetTheFaces) {
+  // Along the rim's section (x, y) = (115 - R + u, 115 - R + v), the L4 profile leaves the face y = 115 as
+  // v = R(1 - (u/R)^4)^(1/4): a drop of about u^4/(4 R^3), where a circle drops u^2/(2 R) at once.
+  const ShapeDims smooth = cubeDims(230.0f, 44.0f, true);
+  const float r = 44.0f * kSquircleCompensation, inner = 115.0f - r;
+  for (float u : {0.1f, 0.2f, 0.3f}) {
+    const float v = r * std::pow(1.0f - std::pow(u, 4.0f), 0.25f);
+    EXPECT_NEAR(shapeSdf(smooth, {inner + u * r, inner + v, 0.0f}), 0.0f, 2e-3f) << u;
+    EXPECT_LT(r - v, 0.25f * u * u * r) << "flatter than a circle of the same radius near the face, u = " << u;
+  }
+}
+
+TEST(Squircle, PlateAndPillRimsUseTheCompensatedRadius) {
+  const ShapeDims plate = plateDims({346.0f, 346.0f, 60.0f}, 10.5f, 0.0f, 535.0f, 0.0f, true);
+  const glm::vec3 p{100.0f, 180.0f, 27.0f};
+  EXPECT_NEAR(shapeSdf(plate, p), sdRoundedBox(p, {173.0f, 173.0f, 30.0f}, 10.5f * kSquircleCompensation, true), 1e-4f);
+  const ShapeDims pill = pillDims({400.0f, 115.0f, 62.0f}, 12.0f, true);  // rim 22.1, outline corners 12
+  const float r = 12.0f * kSquircleCompensation, s = r * std::pow(2.0f, -0.25f);
+  EXPECT_NEAR(shapeSdf(pill, {0.0f, 57.5f - r + s, 31.0f - r + s}), 0.0f, 1e-3f);
 }
 
 TEST(Prism, ExactDistances) {

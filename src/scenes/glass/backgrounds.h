@@ -29,6 +29,15 @@ struct BackdropSource {
 // "page", "photo", "gradient", "checker", or a path to an image file or a folder of them.
 BackdropSource resolveBackdrop(std::string_view value, const Assets& assets);
 
+// Why `value` cannot serve as the background ("" when it can), naming the value: not one of the keywords
+// nor an existing picture file or a folder holding pictures (a misspelt "chcker", "/nonexistent.png"),
+// not a regular file ("/dev/zero"), a file the image library cannot read, or any file in a build that
+// reads no pictures (VITRINE_WITH_OIIO=OFF). Reads a named file to know (the scene keeps the answer).
+std::string backgroundProblem(std::string_view value, const Assets& assets);
+// Why `value` cannot serve as the panorama ("" when it can): the built-in studio, a fetched name, or a
+// regular file that starts like an EXR.
+std::string panoramaProblem(std::string_view value, const Assets& assets);
+
 // The picture a backdrop shows now, cycling with next(); a picture that cannot be read is skipped and
 // its reason kept (problem()).
 class PictureCycle {
@@ -52,8 +61,11 @@ struct Panorama {
   uint32_t width = 0, height = 0;
   std::vector<uint16_t> halves;  // width * height * 4
 };
+// "photo_studio" is the built-in studio (studio.h), baked at kStudioWidth x kStudioWidth/2.
 bool loadPanorama(std::string_view nameOrPath, const Assets& assets, Panorama& out, std::string& problem);
-// The names of the fetched panoramas, for the panel's help.
+inline constexpr uint32_t kStudioWidth = 2048;  // 0.18 degrees a texel: the strip lights' 3.4 degrees are 19 texels
+void bakeStudio(uint32_t width, uint32_t height, Panorama& out);
+// The built-in studio's name, then the fetched panoramas', for the panel's help.
 std::vector<std::string> panoramaNames(const Assets& assets);
 
 }  // namespace vitrine::glass

@@ -103,6 +103,7 @@ class GlassScene final : public Scene {
  public:
   explicit GlassScene(const SceneContext& context)
       : device_(context.device),
+        realtime_(context.realtime),
         quality_(context),
         resources_(context.resources),
         assets_(context.assets),
@@ -158,6 +159,9 @@ class GlassScene final : public Scene {
   void update(const FrameInput& input) override;
   void record(const FrameContext& frame) override;
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  // A background or panorama that names nothing usable refuses the change: headless runs stop with the
+  // value named, the gallery's panel shows why and keeps what it had.
+  std::string checkParameters() const override;
   float renderScale() const override { return tierScale(quality_.active()); }
   void drawPanel() override;
 
@@ -216,6 +220,7 @@ class GlassScene final : public Scene {
   void recordSpectral(const FrameContext& frame, const gpu::StreamSlice& block);
 
   const gpu::Device& device_;
+  bool realtime_;  // the gallery: a file that fails to load is a panel warning; headless, an error
   AdaptiveQuality quality_;
   gpu::FrameResources& resources_;
   const Assets& assets_;
@@ -258,6 +263,9 @@ class GlassScene final : public Scene {
   bool photoLoaded_ = false;
   bool backdropDirty_ = true;
   std::string backgroundProblem_, panoramaProblem_;
+  // checkParameters' last answers, so a slider's drag does not read the named file again at every step.
+  mutable std::pair<std::string, std::string> checkedBackground_, checkedPanorama_;
+  void warn(const std::string& problem);
   glm::vec2 photoSize_{1.0f};
 };
 
@@ -265,14 +273,14 @@ ShapeDims GlassScene::dims() const {
   const Settings& s = settings_;
   switch (s.shape) {
     case ShapeKind::Pill:
-      return pillDims({s.pillLength, s.pillHeight, s.pillThickness}, s.pillEdge, s.squircle);
+      return pillDims({s.pillLength, s.pillHeight, s.pillThickness}, s.pillEdge, s.smoothCurvature);
     case ShapeKind::Prism:
       return prismDims({s.prismLength, s.prismWidth, s.prismDepth});
     case ShapeKind::Cube:
-      return cubeDims(s.cubeSize, s.cubeEdge);
+      return cubeDims(s.cubeSize, s.cubeEdge, s.smoothCurvature);
     case ShapeKind::Plate:
       return plateDims({s.plateSize, s.plateSize, s.plateThickness}, s.plateEdge, s.waveAmplitude, s.waveLength,
-                       plateWavePhase(float(time_)));
+                       plateWavePhase(float(time_)), s.smoothCurvature);
     case ShapeKind::Diamond:
       break;
   }
@@ -412,6 +420,25 @@ void GlassScene::update(const FrameInput& input) {
   else pausedFrames_ = 0;
 }
 
+std::string GlassScene::checkParameters() const {
+  auto cached = [](std::pair<std::string, std::string>& entry, const std::string& value, auto judge) {
+    if (entry.first != value || value.empty()) entry = {value, judge(value)};
+    return entry.second;
+  };
+  std::string why = cached(checkedBackground_, settings_.background,
+                           [&](const std::string& v) { return backgroundProblem(v, assets_); });
+  if (why.empty())
+    why = cached(checkedPanorama_, settings_.panorama, [&](const std::string& v) { return panoramaProblem(v, assets_); });
+  return why;
+}
+
+// What could not be shown: an error in headless runs and tests (the picture would silently be another),
+// in the gallery a line on stderr and the panel's warning.
+void GlassScene::warn(const std::string& problem) {
+  if (!realtime_) throw Error(problem);
+  std::fprintf(stderr, "vitrine: glass: %s\n", problem.c_str());
+}
+
 // Reads the backdrop's picture here, not while recording: its texels upload as the next frame begins.
 void GlassScene::loadBackdrop() {
   photoLoaded_ = true;
@@ -419,8 +446,19 @@ void GlassScene::loadBackdrop() {
   backgroundProblem_ = backdropSource_.problem;
   Picture picture;
   if (!pictures_.load(kMaxPictureSide, picture)) {
-    if (backgroundProblem_.empty()) backgroundProblem_ = pictures_.problem();
     photoSize_ = {0.0f, 0.0f};
+    const bool named = backdropSource_.kind == BackdropKind::Photo && settings_.background != "photo";
+    if (backgroundProblem_.empty()) backgroundProblem_ = pictures_.problem();
+    if (!backgroundProblem_.empty() && named) return warn(fmt::format("background {}", backgroundProblem_));
+    if (backdropSource_.kind == BackdropKind::Page || backdropSource_.kind == BackdropKind::Photo) {
+      // No photo to lie on: say so rather than draw the gradient in silence (not an error: the page reads).
+      backgroundProblem_ = !canReadPictures() ? "this build reads no pictures (VITRINE_WITH_OIIO=OFF): the gradient "
+                                                "stands in for the photo"
+                           : backgroundProblem_.empty() ? "no photos fetched (scripts/setup): the gradient stands in"
+                                                        : backgroundProblem_ + ": the gradient stands in";
+      std::fprintf(stderr, "vitrine: glass: background %s: %s\n", settings_.background.c_str(),
+                   backgroundProblem_.c_str());
+    }
     return;
   }
   photoSize_ = {float(picture.width), float(picture.height)};
@@ -435,6 +473,7 @@ void GlassScene::loadPanorama() {
   appliedPanorama_ = settings_.panorama;
   Panorama pano;
   if (!glass::loadPanorama(settings_.panorama, assets_, pano, panoramaProblem_)) {
+    warn(panoramaProblem_);
     // A sky from two colours stands in: dim ground, bright zenith, so the glass still has light to bend.
     pano = {2, 2, {}};
     for (float v : {0.9f, 1.0f, 1.2f, 1.0f, 0.9f, 1.0f, 1.2f, 1.0f, 0.12f, 0.1f, 0.08f, 1.0f, 0.12f, 0.1f, 0.08f, 1.0f})
@@ -667,8 +706,13 @@ void GlassScene::drawPanel() {
     const std::string name = pictures_.currentName();
     ImGui::Text("backdrop: %s%s", settings_.background.c_str(), name.empty() ? "" : (" - " + name).c_str());
   }
-  if (!backgroundProblem_.empty()) ImGui::TextWrapped("%s", backgroundProblem_.c_str());
-  if (settings_.environment && !panoramaProblem_.empty()) ImGui::TextWrapped("%s", panoramaProblem_.c_str());
+  const auto warning = [](const std::string& line) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", line.c_str());
+    ImGui::PopStyleColor();
+  };
+  if (!backgroundProblem_.empty()) warning(backgroundProblem_);
+  if (settings_.environment && !panoramaProblem_.empty()) warning(panoramaProblem_);
   if (settings_.stopWorld) ImGui::Text("accumulated %u frames", pausedFrames_);
   ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F diamond views");
 }

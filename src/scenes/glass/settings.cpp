@@ -2,6 +2,7 @@
 
 #include "scenes/glass/materials.h"
 #include "scenes/glass/optics.h"
+#include "scenes/glass/studio.h"
 
 namespace vitrine::glass {
 namespace {
@@ -73,8 +74,10 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"pill_edge", "pill edge", "Rim rounding radius (at most half the thickness).",
                                  "shape"},
                                 &S::pillEdge, 0.0, 200.0));
-    s.add(params::boolParam<S>({"squircle", "squircle rim", "An L4 rim instead of a round one.", "shape"},
-                               &S::squircle));
+    s.add(params::boolParam<S>({"smooth_curvature", "smooth curvature", "Pill, cube and plate: an L4 squircle "
+                                "rim, its radius compensated to cut the corner as a round rim of the edge radius "
+                                "would; off: round rims.", "shape"},
+                               &S::smoothCurvature));
     s.add(params::floatParam<S>({"prism_length", "prism length", "Prism length along x.", "shape"}, &S::prismLength,
                                 40.0, 1000.0));
     s.add(params::floatParam<S>({"prism_width", "prism width", "The triangle's base.", "shape"}, &S::prismWidth,
@@ -115,7 +118,8 @@ const params::Schema& schema() {
                                 "reflection.", "background"},
                                &S::environment));
     s.add(params::customParam<S, std::string>(
-        {"panorama", "panorama", "A fetched panorama's name (studio, city, ...) or an equirectangular EXR.",
+        {"panorama", "panorama", "photo_studio (built in: a light cyclorama, softboxes and strip lights), a "
+         "fetched panorama's name (studio, city, ...) or an equirectangular EXR.",
          "background"},
         &S::panorama, parseText, formatText));
     s.add(params::floatParam<S>({"exposure", "exposure", "Multiplies the panorama.", "background", kLogarithmic},
@@ -146,32 +150,46 @@ const params::Schema& schema() {
                                   "graphics part is two TPCs).", "camera"},
                                  &S::pass, {"raster", "compute"}));
 
-    // The original's presets, value for value; every preset also resets what the original's do.
+    // The original's presets, value for value. A preset sets everything that makes its look, so it
+    // gives the same picture whatever was chosen before it (physical optics, Sellmeier, another
+    // panorama...): the original's common values (perspective at 45 degrees, exact refraction, jitter
+    // on, no AA, history 0.5, the world running), its optics (seed, Cauchy from n_d and V_d), smooth
+    // curvature on, and the environment. The backdrop stays the user's, as the original's photo does.
     const params::KeyValues common{{"material", "custom"}, {"fov", "45"}, {"projection", "perspective"},
                                    {"mode", "exact"}, {"jitter", "on"}, {"aa", "none"}, {"history_alpha", "0.5"},
-                                   {"stop_world", "off"}, {"show_proxy", "off"}};
-    auto preset = [&](std::string name, std::string help, params::KeyValues values) {
+                                   {"stop_world", "off"}, {"show_proxy", "off"}, {"optics", "seed"},
+                                   {"dispersion", "abbe"}, {"depth", "400"}, {"smooth_curvature", "on"},
+                                   {"diamond_debug", "none"}, {"diamond_view", "free"}, {"bounces", "6"}};
+    // Non-diamond presets turn the environment off so the split lands on the backdrop; the studio's
+    // values are reset with it, so a later environment=on starts from the lit default.
+    const params::KeyValues noEnvironment{{"environment", "off"}, {"panorama", std::string(kStudioPanorama)},
+                                          {"exposure", "1"}, {"env_rotation", "0"}};
+    auto preset = [&](std::string name, std::string help, params::KeyValues values, bool environment = false) {
       values.insert(values.begin(), common.begin(), common.end());
+      if (!environment) values.insert(values.end(), noEnvironment.begin(), noEnvironment.end());
       s.preset({std::move(name), std::move(help), std::move(values)});
     };
     preset("subtle_pill", "Four pills of crown glass, barely dispersing.",
            {{"shape", "pill"}, {"n", "8"}, {"ior", "1.517"}, {"abbe", "6.5"}, {"strength", "0.035"},
-            {"pill_length", "400"}, {"pill_height", "115"}, {"pill_thickness", "62"}, {"pill_edge", "100"},
-            {"environment", "off"}});
+            {"pill_length", "400"}, {"pill_height", "115"}, {"pill_thickness", "62"}, {"pill_edge", "100"}});
     preset("prism_rainbow", "Four triangular prisms splitting the photo into bands.",
            {{"shape", "prism"}, {"n", "16"}, {"ior", "1.6"}, {"abbe", "12"}, {"strength", "0.155"},
-            {"prism_length", "393"}, {"prism_width", "149"}, {"prism_depth", "117"}, {"environment", "off"}});
+            {"prism_length", "393"}, {"prism_width", "149"}, {"prism_depth", "117"}});
     preset("rotating_cube", "The opening scene: four tumbling cubes of a strongly dispersing glass.",
            {{"shape", "cube"}, {"n", "16"}, {"ior", "1.272"}, {"abbe", "2"}, {"strength", "0.15"},
-            {"cube_size", "230"}, {"cube_edge", "44"}, {"environment", "off"}});
+            {"cube_size", "230"}, {"cube_edge", "44"}});
     preset("wavy_plate", "Four tumbling plates with waves running through them.",
            {{"shape", "plate"}, {"n", "16"}, {"ior", "1.272"}, {"abbe", "2"}, {"strength", "0.2"},
             {"plate_size", "346"}, {"plate_thickness", "60"}, {"plate_edge", "10.5"}, {"wave_amplitude", "17"},
-            {"wave_length", "535"}, {"environment", "off"}});
-    preset("diamond", "One round brilliant in a studio panorama.",
+            {"wave_length", "535"}});
+    // The original lit its diamond with a photo studio panorama (exposure 0.75, rotation -1.0995); this
+    // one stands in the program's own studio (studio.h), exposure and rotation chosen by looking.
+    preset("diamond", "One round brilliant in a bright photo studio.",
            {{"shape", "diamond"}, {"n", "16"}, {"ior", "2.418"}, {"abbe", "55"}, {"strength", "0.2"},
-            {"diamond_size", "400"}, {"diamond_view", "free"}, {"bounces", "6"}, {"environment", "on"},
-            {"panorama", "studio"}, {"exposure", "0.75"}, {"env_rotation", "-1.0995"}});
+            {"diamond_size", "560"}, {"environment", "on"}, {"panorama", std::string(kStudioPanorama)},
+            {"exposure", params::formatFloat(kDiamondExposure)},
+            {"env_rotation", params::formatFloat(kDiamondRotation)}},
+           true);
     addQualityParams<S>(s, "Render scale of the glass and its history", 16.0f);
     return s;
   }();

@@ -31,21 +31,21 @@ struct Settings {
 
   ShapeKind shape = ShapeKind::Cube;
   float pillLength = 400.0f, pillHeight = 115.0f, pillThickness = 62.0f, pillEdge = 100.0f;
-  bool squircle = false;
+  bool smoothCurvature = true;   // pill, cube and plate: L4 squircle rims (the original's default)
   float prismLength = 393.0f, prismWidth = 149.0f, prismDepth = 117.0f;
   float cubeSize = 230.0f, cubeEdge = 44.0f;
   float plateSize = 346.0f, plateThickness = 60.0f, plateEdge = 10.5f;
   float waveAmplitude = 17.0f, waveLength = 535.0f;
-  float diamondSize = 400.0f;
+  float diamondSize = 560.0f;   // 52 % of the view's height (the original's 400 looked small)
   DiamondView diamondView = DiamondView::Free;
   DiamondDebug diamondDebug = DiamondDebug::None;
   int bounces = 6;
 
   std::string background = "page";  // page | photo | gradient | checker | an image file or a folder of them
   bool environment = false;
-  std::string panorama = "studio";  // a fetched panorama's name, or an equirectangular EXR file
+  std::string panorama = "photo_studio";  // the built-in studio (studio.h), a fetched panorama's name, or an EXR
   float exposure = 1.0f;
-  float envRotation = 0.0f;         // radians about the vertical axis
+  float envRotation = 0.0f;         // radians about the vertical axis: 0 faces the studio's lit cyclorama
 
   Projection projection = Projection::Perspective;
   float fov = 45.0f;                // degrees, vertical
@@ -61,6 +61,10 @@ struct Settings {
 };
 
 int sampleCount(const Settings& settings);
+
+// The diamond preset's exposure and panorama rotation in the built-in studio, chosen by looking.
+inline constexpr float kDiamondExposure = 1.0f;
+inline constexpr float kDiamondRotation = 0.0f;
 
 const params::Schema& schema();
 

@@ -27,19 +27,18 @@ bool boxRange(glm::vec3 ro, glm::vec3 rd, glm::vec3 half, float& t0, float& t1) 
   return t0 <= t1;
 }
 
-// Exit from inside the stadium in XY (end centres at x = ±a, radius rr); d.xy need not be unit.
-float stadiumExit(glm::vec2 p, glm::vec2 d, float a, float rr) {
+// Exit from inside the rectangle of half size `half` with corners rounded by c (a stadium when c is half the
+// height) in XY; d.xy need not be unit. The rectangle's exit, unless it lands in a corner's square, where the
+// ray is in that corner's disc and leaves it at the far root.
+float roundedRectExit(glm::vec2 p, glm::vec2 d, glm::vec2 half, float c) {
   if (glm::dot(d, d) < 1e-12f) return kInf;
-  float side = d.x;
-  if (std::fabs(d.y) > 1e-12f) {
-    const float t = ((d.y > 0.0f ? rr : -rr) - p.y) / d.y;
-    const float x = p.x + t * d.x;
-    if (std::fabs(x) <= a) return t;  // through a straight side
-    side = x;
-  }
-  // Past the straight part, the ray is in the end disc on that side and leaves it at the far root.
-  const glm::vec2 o = p - glm::vec2(side > 0.0f ? a : -a, 0.0f);
-  const float qa = glm::dot(d, d), qb = glm::dot(o, d), qc = glm::dot(o, o) - rr * rr;
+  const glm::vec2 inv = 1.0f / glm::vec2(std::fabs(d.x) < 1e-20f ? 1e-20f : d.x, std::fabs(d.y) < 1e-20f ? 1e-20f : d.y);
+  const glm::vec2 far = glm::max((-half - p) * inv, (half - p) * inv);
+  const float t = glm::min(far.x, far.y);
+  const glm::vec2 at = p + t * d, inner = half - c;
+  if (std::fabs(at.x) <= inner.x || std::fabs(at.y) <= inner.y) return t;  // through a straight side
+  const glm::vec2 o = p - glm::vec2(at.x > 0.0f ? inner.x : -inner.x, at.y > 0.0f ? inner.y : -inner.y);
+  const float qa = glm::dot(d, d), qb = glm::dot(o, d), qc = glm::dot(o, o) - c * c;
   return (-qb + std::sqrt(glm::max(qb * qb - qa * qc, 0.0f))) / qa;
 }
 
@@ -95,10 +94,7 @@ float shapeSdf(const ShapeDims& s, glm::vec3 p) {
   switch (ShapeKind(s.kind)) {
     case ShapeKind::Pill: return sdPill(p, size(s), s.sizeEdge.w, s.wave.w > 0.5f);
     case ShapeKind::Prism: return sdPrism(p, size(s));
-    case ShapeKind::Cube: {
-      const glm::vec3 half = 0.5f * size(s);
-      return sdRoundedBox(p, half, glm::min(s.sizeEdge.w, glm::min(half.x, glm::min(half.y, half.z))));
-    }
+    case ShapeKind::Cube: return sdCube(p, s.sizeEdge, s.wave.w > 0.5f);
     case ShapeKind::Plate: return sdPlate(p, s.sizeEdge, s.wave);
     case ShapeKind::Diamond: return diamondSdf(cachedDiamond(s.sizeEdge.x), p);
   }
@@ -170,15 +166,16 @@ bool shapeExit(const ShapeDims& s, glm::vec3 p, glm::vec3 d, float& t, glm::vec3
       return std::isfinite(t);
     }
     case ShapeKind::Pill: {
-      const float a = glm::max(0.5f * (sz.x - sz.y), 0.0f);
-      seed = glm::min(stadiumExit({p.x, p.y}, {d.x, d.y}, a, 0.5f * sz.y), slabExit(p.z, d.z, 0.5f * sz.z));
-      steps = 4;
+      const glm::vec2 half{0.5f * sz.x, 0.5f * sz.y};
+      const float corner = glm::min(s.sizeEdge.w, glm::min(half.x, half.y));
+      seed = glm::min(roundedRectExit({p.x, p.y}, {d.x, d.y}, half, corner), slabExit(p.z, d.z, 0.5f * sz.z));
+      steps = s.wave.w > 0.5f ? 6 : 4;  // the L4 rim's larger radius leaves the seed further out
       break;
     }
     case ShapeKind::Cube: {
       float t0;
       boxRange(p, d, 0.5f * sz, t0, seed);
-      steps = 4;
+      steps = s.wave.w > 0.5f ? 6 : 4;
       break;
     }
     case ShapeKind::Plate: {  // the vertical rim or a wavy face, then onto the rounded rim
@@ -187,7 +184,7 @@ bool shapeExit(const ShapeDims& s, glm::vec3 p, glm::vec3 d, float& t, glm::vec3
       const float top = plateFaceExit(p, d, s.wave, 0.5f * sz.z, tolerance);
       const float bottom = plateFaceExit(p, d, s.wave, -0.5f * sz.z, tolerance);
       seed = glm::min(side, glm::min(top, bottom));
-      steps = 2;
+      steps = s.wave.w > 0.5f ? 3 : 2;
       break;
     }
   }

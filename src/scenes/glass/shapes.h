@@ -23,24 +23,26 @@ enum class ShapeKind : int { Pill = 0, Prism = 1, Cube = 2, Plate = 3, Diamond =
 // One shape's dimensions, laid out for std140 and std430 alike (48 bytes; GLSL struct ShapeDims).
 struct ShapeDims {
   glm::vec4 sizeEdge{};  // xyz: the size along x, y, z; w: the edge rounding radius (pill, cube, plate)
-  glm::vec4 wave{};      // plate: amplitude, wavelength, phase (radians); w: 1 gives the pill a squircle rim
+  glm::vec4 wave{};      // plate: amplitude, wavelength, phase (radians); w: 1 for smooth curvature (pill, cube, plate)
   int kind = 0;          // a ShapeKind
   int pad[3] = {};
 };
 static_assert(sizeof(ShapeDims) == 48 && offsetof(ShapeDims, wave) == 16 && offsetof(ShapeDims, kind) == 32);
 
-// Pill: a stadium in XY (length along x >= height along y, round ends of radius height/2), thickness along z.
-inline ShapeDims pillDims(glm::vec3 size, float edge, bool squircle = false) {
-  return {{size, edge}, {0.0f, 1.0f, 0.0f, squircle ? 1.0f : 0.0f}, int(ShapeKind::Pill)};
+// Pill: a rounded rectangle in XY (length along x, height along y, corners of radius min(edge, H/2): a stadium
+// once edge reaches half the height), thickness along z. smooth: the rim is an L4 squircle (below).
+inline ShapeDims pillDims(glm::vec3 size, float edge, bool smooth = false) {
+  return {{size, edge}, {0.0f, 1.0f, 0.0f, smooth ? 1.0f : 0.0f}, int(ShapeKind::Pill)};
 }
 // Prism: length along x; an isosceles triangle in YZ, base width size.y at z = -size.z/2, apex at +size.z/2.
 inline ShapeDims prismDims(glm::vec3 size) { return {{size, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}, int(ShapeKind::Prism)}; }
-inline ShapeDims cubeDims(float side, float edge) {
-  return {{side, side, side, edge}, {0.0f, 1.0f, 0.0f, 0.0f}, int(ShapeKind::Cube)};
+inline ShapeDims cubeDims(float side, float edge, bool smooth = false) {
+  return {{side, side, side, edge}, {0.0f, 1.0f, 0.0f, smooth ? 1.0f : 0.0f}, int(ShapeKind::Cube)};
 }
 // Plate: size.x × size.y, thickness size.z, riding the wave z = amplitude·sin(kx + phase)·sin(ky + phase).
-inline ShapeDims plateDims(glm::vec3 size, float edge, float amplitude, float wavelength, float phase) {
-  return {{size, edge}, {amplitude, wavelength, phase, 0.0f}, int(ShapeKind::Plate)};
+inline ShapeDims plateDims(glm::vec3 size, float edge, float amplitude, float wavelength, float phase,
+                           bool smooth = false) {
+  return {{size, edge}, {amplitude, wavelength, phase, smooth ? 1.0f : 0.0f}, int(ShapeKind::Plate)};
 }
 inline ShapeDims diamondDims(float diameter) {
   return {{diameter, diameter, diameter, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}, int(ShapeKind::Diamond)};
@@ -55,19 +57,47 @@ inline constexpr float kNormalStep = 1e-4f;     // central-difference step × sc
 
 // --- Distance functions for the smooth shapes.
 
-// A stadium slab with its rim rounded by r = min(edge, T/2, H/2): the preset's edge 100 with T = 62 clamps to
-// 31, a half-round rim. The squircle rim measures the rounding in the L4 norm: flatter faces, a tighter turn.
-// Exact for the round rim; the L4 rim stays a bound (|grad| <= 1 since the L6 norm never exceeds the L4 norm).
-inline float sdPill(glm::vec3 p, glm::vec3 size, float edge, bool squircle) {
-  const float endRadius = 0.5f * size.y;
-  const float r = glm::min(edge, glm::min(0.5f * size.z, endRadius));
-  const float straight = glm::max(0.5f * size.x - endRadius, 0.0f);  // half the length between the end centres
-  const float stadium = glm::length(glm::vec2(glm::max(std::fabs(p.x) - straight, 0.0f), p.y)) - endRadius;
-  const glm::vec2 w{stadium + r, std::fabs(p.z) - (0.5f * size.z - r)};
+// --- Smooth curvature: the rims of pill, cube and plate rounded in the L4 norm, a squircle section
+// |x|^4 + |y|^4 = R^4 whose curvature grows from zero where it meets a face instead of jumping to 1/R as a
+// circle's does. At the same radius a squircle cuts less off the corner (its 45-degree point lies at
+// R / 2^(1/4) from the rounding's centre, a circle's at R / sqrt(2)), so the radius is compensated: R = k·edge
+// with k = (1 - 2^(-1/2)) / (1 - 2^(-1/4)) ≈ 1.841 takes exactly as much off the corner's diagonal as a circle
+// of the edge radius, and then is clamped to what the shape has room for. The L4 distance is a bound:
+// |grad| = (|q|_6 / |q|_4)^3 <= 1, so sphere tracing stays safe.
+inline constexpr float kSquircleCompensation = 1.8408964f;
+// The rim's radius: the edge (compensated when smooth), at most `room`.
+inline float rimRadius(float edge, float room, bool smooth) {
+  return glm::min(smooth ? edge * kSquircleCompensation : edge, room);
+}
+inline float lengthL4(glm::vec2 v) {
+  const glm::vec2 s = v * v;
+  return std::sqrt(std::sqrt(glm::dot(s, s)));
+}
+inline float lengthL4(glm::vec3 v) {
+  const glm::vec3 s = v * v;
+  return std::sqrt(std::sqrt(glm::dot(s, s)));
+}
+
+// --- Distance functions for the smooth shapes.
+
+// The exact signed distance to a rectangle of half size `half` with corners rounded by c <= min(half).
+inline float sdRoundedRect(glm::vec2 p, glm::vec2 half, float c) {
+  const glm::vec2 q = glm::abs(p) - (half - c);
+  return glm::length(glm::max(q, 0.0f)) + glm::min(glm::max(q.x, q.y), 0.0f) - c;
+}
+
+// The pill: its outline a rounded rectangle (corner radius min(edge, H/2, L/2)), extruded through the
+// thickness, the rim rounded by r = min(edge, T/2, H/2) (the preset's edge 100 with T = 62 clamps to 31, a
+// half-round rim), or smooth: an L4 rim of the compensated radius, clamped the same way.
+// Exact for the round rim; the L4 rim stays a bound.
+inline float sdPill(glm::vec3 p, glm::vec3 size, float edge, bool smooth) {
+  const glm::vec2 half{0.5f * size.x, 0.5f * size.y};
+  const float corner = glm::min(edge, glm::min(half.x, half.y));
+  const float r = rimRadius(edge, glm::min(0.5f * size.z, half.y), smooth);
+  const float outline = sdRoundedRect({p.x, p.y}, half, corner);
+  const glm::vec2 w{outline + r, std::fabs(p.z) - (0.5f * size.z - r)};
   const glm::vec2 out = glm::max(w, 0.0f);
-  const float rim = squircle ? std::sqrt(std::sqrt(out.x * out.x * out.x * out.x + out.y * out.y * out.y * out.y))
-                             : glm::length(out);
-  return glm::min(glm::max(w.x, w.y), 0.0f) + rim - r;
+  return glm::min(glm::max(w.x, w.y), 0.0f) + (smooth ? lengthL4(out) : glm::length(out)) - r;
 }
 
 // The exact distance to an isosceles triangle in YZ (half base b, height h, apex up), extruded along x.
@@ -86,10 +116,16 @@ inline float sdPrism(glm::vec3 p, glm::vec3 size) {
   return glm::min(glm::max(w.x, w.y), 0.0f) + glm::length(glm::max(w, 0.0f));
 }
 
-// A box of half size `half` with edges rounded by r (r <= the smallest half size).
-inline float sdRoundedBox(glm::vec3 p, glm::vec3 half, float r) {
+// A box of half size `half` with edges rounded by r (r <= the smallest half size), in the L4 norm when smooth.
+inline float sdRoundedBox(glm::vec3 p, glm::vec3 half, float r, bool smooth = false) {
   const glm::vec3 q = glm::abs(p) - (half - r);
-  return glm::length(glm::max(q, 0.0f)) + glm::min(glm::max(q.x, glm::max(q.y, q.z)), 0.0f) - r;
+  const glm::vec3 out = glm::max(q, 0.0f);
+  return (smooth ? lengthL4(out) : glm::length(out)) + glm::min(glm::max(q.x, glm::max(q.y, q.z)), 0.0f) - r;
+}
+// The cube: rim radius min(edge, half side), compensated when smooth.
+inline float sdCube(glm::vec3 p, glm::vec4 sizeEdge, bool smooth) {
+  const glm::vec3 half = 0.5f * glm::vec3(sizeEdge);
+  return sdRoundedBox(p, half, rimRadius(sizeEdge.w, glm::min(half.x, glm::min(half.y, half.z)), smooth), smooth);
 }
 
 // The plate's mid-surface h(x, y) and its gradient.
@@ -114,9 +150,10 @@ inline float plateLipschitz(glm::vec4 wave) {
 }
 inline float sdPlate(glm::vec3 p, glm::vec4 sizeEdge, glm::vec4 wave) {
   const glm::vec3 half = 0.5f * glm::vec3(sizeEdge);
-  const float r = glm::min(sizeEdge.w, glm::min(half.z, glm::min(half.x, half.y)));
+  const bool smooth = wave.w > 0.5f;
+  const float r = rimRadius(sizeEdge.w, glm::min(half.z, glm::min(half.x, half.y)), smooth);
   const glm::vec3 q{p.x, p.y, p.z - plateHeight({p.x, p.y}, wave)};
-  return sdRoundedBox(q, half, r) / plateLipschitz(wave);
+  return sdRoundedBox(q, half, r, smooth) / plateLipschitz(wave);
 }
 
 // --- Dispatch over the kinds (shapes.cpp). The diamond's planes come from makeDiamond(size.x), cached.
