@@ -1,5 +1,7 @@
 #include <ImfArray.h>
+#include <ImfHeader.h>
 #include <ImfRgbaFile.h>
+#include <ImfStringAttribute.h>
 #include <fmt/format.h>
 
 #include "core/error.h"
@@ -18,7 +20,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t) {
                           path.string()));
 }
 
-void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
+void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
   if (path.extension() != ".exr" && path.extension() != ".EXR")
     throw Error(
         fmt::format("Cannot write {}: this build has no OpenImageIO and writes EXR only "
@@ -30,7 +32,9 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
       for (size_t i = 0; i < half.size(); ++i)
         half[i] =
             Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
-      Imf::RgbaOutputFile file(temporary.c_str(), int(image.width), int(image.height), Imf::WRITE_RGBA);
+      Imf::Header header(int(image.width), int(image.height));
+      for (const auto& [name, value] : notes) header.insert(name, Imf::StringAttribute(value));
+      Imf::RgbaOutputFile file(temporary.c_str(), header, Imf::WRITE_RGBA);
       file.setFrameBuffer(half.data(), 1, image.width);
       file.writePixels(int(image.height));
     } catch (const std::exception& e) {
