@@ -2,14 +2,14 @@
 """xtest.py DISPLAY ACTION...: presses keys and moves or clicks the mouse on an X display through the
 XTEST extension, speaking the X11 protocol over the display's local socket (no xdotool on the test
 machine). Actions: key:NAME (a keysym name: F12, Tab, bracketright, 3 ...), move:X,Y, click:X,Y,
-wheel:X,Y,NOTCHES, sleep:SECONDS. For the gallery's checks under Xvfb (started without access control)."""
+ctrlclick:X,Y, wheel:X,Y,NOTCHES, sleep:SECONDS. For the gallery's checks under Xvfb (started without access control)."""
 import os
 import socket
 import struct
 import sys
 import time
 
-KEYSYMS = {"Tab": 0xFF09, "Escape": 0xFF1B, "Control_L": 0xFFE3, "bracketleft": 0x5B, "bracketright": 0x5D,
+KEYSYMS = {"Tab": 0xFF09, "Escape": 0xFF1B, "Return": 0xFF0D, "Control_L": 0xFFE3, "bracketleft": 0x5B, "bracketright": 0x5D,
            "backslash": 0x5C, "period": 0x2E}
 KEYSYMS.update({f"F{n}": 0xFFBD + n for n in range(1, 13)})
 KEYSYMS.update({str(d): 0x30 + d for d in range(10)})
@@ -83,13 +83,18 @@ def main():
                 raise SystemExit(f"xtest: no keycode for {arg}")
             fake(2, code)
             fake(3, code)
-        elif verb in ("move", "click"):
+        elif verb in ("move", "click", "ctrlclick"):
             x, y = map(int, arg.split(","))
             fake(6, 0, x, y)
-            if verb == "click":
+            ctrl = keycode.get(KEYSYMS["Control_L"])
+            if verb == "ctrlclick":
+                fake(2, ctrl)
+            if verb != "move":
                 fake(4, 1)
                 time.sleep(0.05)
                 fake(5, 1)
+            if verb == "ctrlclick":
+                fake(3, ctrl)
         elif verb == "wheel":  # wheel:X,Y,N: N notches down (negative: up)
             x, y, n = map(int, arg.split(","))
             fake(6, 0, x, y)
