@@ -11,13 +11,10 @@ rm -rf "$out"; mkdir -p "$out/config" "$out/work"
 log=$out/gallery.log
 fail() { echo "FAIL: $*"; cat "$log"; exit 1; }
 
-exec 3>"$out/display"
-Xvfb -displayfd 3 -screen 0 320x180x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
-xvfb=$!
+. "$here/virtual_display.sh"
+app=
 trap 'kill $app $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
-for _ in $(seq 50); do [ -s "$out/display" ] && break; sleep 0.1; done
-display=:$(head -n1 "$out/display")
-[ "$display" != ":" ] || fail "Xvfb did not start"
+start_display 320x180
 
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene bloom --size 320x180 \
    --validate --set bloom.tier=low) >"$log" 2>&1 &

@@ -13,13 +13,10 @@ fail() { echo "FAIL: $*"; cat "$log"; exit 1; }
 printf '[Window][Vitrine]\nPos=12,12\nCollapsed=0\n\n[Vitrine][menu]\ntime=1\npanel=0\ntimings=0\n' \
   >"$out/config/vitrine/gallery-menu.ini"
 
-exec 3>"$out/display"
-Xvfb -displayfd 3 -screen 0 640x360x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
-xvfb=$!
+. "$here/virtual_display.sh"
+app=
 trap 'kill $app $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
-for _ in $(seq 50); do [ -s "$out/display" ] && break; sleep 0.1; done
-display=:$(head -n1 "$out/display")
-[ "$display" != ":" ] || fail "Xvfb did not start"
+start_display 640x360
 
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene bloom --size 640x360 \
    --validate --set bloom.lattice=48) >"$log" 2>&1 &
