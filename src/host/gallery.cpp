@@ -107,7 +107,7 @@ class Gallery {
   void applyEdit(const PanelEdit& edit);
   void rememberValues();
   void toggleCapture();
-  double frameMs() const { return std::max(input_.lastGpuMs, frameSeconds_ * 1e3); }
+  double frameMs() const { return std::max(gpuMs_, frameSeconds_ * 1e3); }
   void applyEditNow(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
@@ -157,6 +157,7 @@ class Gallery {
   Clock::time_point lastShaderPoll_ = Clock::now();
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;
+  double gpuMs_ = 0.0;  // the last finished frame's, all passes
   std::vector<gpu::PassTime> passes_;
   std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
   Clock::time_point reloadNoted_{};
@@ -492,8 +493,9 @@ void Gallery::frame() {
 void Gallery::collect(uint32_t slot) {
   // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
   if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_->timer().collect(slot);
-  input_.lastGpuMs = 0.0;
-  for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
+  gpuMs_ = 0.0;
+  for (const auto& pass : passes_) gpuMs_ += pass.ms;
+  input_.lastGpuMs = gpuMs_;
   capture_.collect(slot);
   if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
   if (auto note = screenshots_.collect(slot)) {
@@ -534,6 +536,9 @@ void Gallery::simulate() {
     input_.droppedFiles = std::exchange(drops_, {});
     input_.actions = std::exchange(actions_, {});
     renderer_->scene().update(input_);
+    // A frame's GPU time is news to its first step only: the automatic tiers count frames, and a
+    // slow frame followed by many steps must not count as many slow frames.
+    input_.lastGpuMs = 0.0;
     shown_ = input_;
     input_.time += input_.dt;
     ++input_.frame;
