@@ -35,6 +35,7 @@
 #include "host/scene_renderer.h"
 #include "host/screenshot.h"
 #include "host/swapchain.h"
+#include "host/tier_watch.h"
 #include "host/window.h"
 
 namespace vitrine::host {
@@ -45,9 +46,9 @@ using Clock = std::chrono::steady_clock;
 volatile std::sig_atomic_t stopRequested = 0;
 
 constexpr uint32_t kFramesInFlight = 2;
-constexpr int kMaxCatchUpSteps = 4;
 constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
 constexpr auto kNoteSeconds = std::chrono::seconds(6);  // how long a screenshot's note stays
+constexpr auto kToastSeconds = std::chrono::seconds(4);  // and how long it shows with the UI hidden
 constexpr auto kReloadNoteSeconds = std::chrono::seconds(3);
 // The scene renderer's present (compute) or blit (transfer) is the first use of an acquired image,
 // so that is where the acquire is waited for.
@@ -99,11 +100,14 @@ class Gallery {
   void simulate();
   void collect(uint32_t slot);
   void showMenu();
+  void showToast();
+  std::string clockNote() const;
+  void recordWindowCopy(VkCommandBuffer cmd);
   void pollShaders();
   void applyEdit(const PanelEdit& edit);
   void rememberValues();
   void toggleCapture();
-  double frameMs() const { return std::max(input_.lastGpuMs, frameSeconds_ * 1e3); }
+  double frameMs() const { return std::max(gpuMs_, frameSeconds_ * 1e3); }
   void applyEditNow(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
@@ -119,6 +123,8 @@ class Gallery {
   gpu::Device device_;
   gpu::ProgramLibrary programs_;
   GallerySettings settings_;
+  MenuLayout menuLayout_;  // before the overlay, whose layout file is written when it goes
+  TierWatch tiers_;        // before the renderers, whose scenes report to it
   audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
   std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
   std::unique_ptr<SceneRenderer> incoming_;  // kiosk mode: the scene fading in, made at the first fade
@@ -134,7 +140,10 @@ class Gallery {
   FrameInput input_;  // the next simulation step's
   FrameInput shown_;  // the last step's: what the frame being recorded shows
   FixedStep steps_;   // after input_, whose dt it is built from
+  StepCost stepCost_;  // what a step of the scene showing costs: how many fit in a frame
   TimeControl time_;  // pause, single steps, speed
+  // The picture as the window shows it, at the window's size: what F12 and F9 save.
+  std::optional<gpu::Image> windowCopy_;
   bool helpShown_ = false;
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
@@ -148,6 +157,7 @@ class Gallery {
   Clock::time_point lastShaderPoll_ = Clock::now();
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;
+  double gpuMs_ = 0.0;  // the last finished frame's, all passes
   std::vector<gpu::PassTime> passes_;
   std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
   Clock::time_point reloadNoted_{};
@@ -181,12 +191,18 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
-               {assets_.font("Fraunces"), assets_.font("CormorantSC")}),
+               {assets_.font("Fraunces"), assets_.font("CormorantSC")},
+               // The menu's place, folds and sections, beside the settings file (not in a kiosk).
+               options.kiosk || settings_.path().empty() ? std::filesystem::path()
+                                                         : settings_.path().parent_path() / "gallery-menu.ini",
+               options.resetSettings),
       screenshots_(device_, kFramesInFlight, "screenshots"),
       capture_(device_, kFramesInFlight, "captures"),
-      steps_(input_.dt, kMaxCatchUpSteps),
+      steps_(input_.dt),
       vsync_(options.vsync) {
   overlay_.attach(swapchain_);
+  keepInIni(menuLayout_);
+  renderer_->setEventSink(&tiers_);
   renderer_->setAudioSink(&audio_);
   renderer_->setRealtime(true);
   remoteSaves_ = options.remoteSaves;
@@ -243,12 +259,12 @@ int Gallery::run() {
       lastFrame_ = Clock::now();  // time spent minimised is not simulated
       continue;
     }
-    handleKeys();
     frame();
   }
   device_.waitIdle();
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
-    if (auto note = screenshots_.collect(slot)) std::printf("%s\n", note->c_str());
+    if (auto note = screenshots_.collect(slot)) std::printf("vitrine: %s\n", note->c_str());
+  if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
   if (instance_.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance_.validationMessages());
     return 3;
@@ -260,9 +276,11 @@ int Gallery::run() {
 // Esc stays for whoever runs it; everything that would change the installation is ignored.
 bool kioskAllows(int key) { return key == GLFW_KEY_ESCAPE || sceneForKey(key) != nullptr; }
 
+// After the menu has seen this frame's clicks and keys: a field that a click activated in this very
+// frame (at 1 fps, a click and the digits typed after it arrive together) already has the keyboard.
 void Gallery::handleKeys() {
   const std::vector<int> keys = window_.takeKeys();
-  if (overlay_.wantsText()) return;  // typed into a text field, not commands
+  if (overlay_.wantsKeyboard()) return;  // typed into a field, not commands
   for (int key : keys) {
     if (kiosk_ && !kioskAllows(key)) continue;
     switch (key) {
@@ -298,6 +316,15 @@ void Gallery::handleKeys() {
       case GLFW_KEY_PERIOD:
         if (time_.paused) time_.stepRequested = true;
         break;
+      case GLFW_KEY_LEFT_BRACKET:
+        time_.slower();
+        break;
+      case GLFW_KEY_RIGHT_BRACKET:
+        time_.faster();
+        break;
+      case GLFW_KEY_BACKSLASH:
+        time_.normal();
+        break;
       case GLFW_KEY_F5:  // the scene from its first frame, its parameters kept
         nextScene_ = &renderer_->info();
         break;
@@ -324,6 +351,7 @@ std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) 
     renderer.clear();
     return e.what();
   }
+  tiers_.started(info.name);
   // Saved values that do not fit together on this device (each one was valid on its own): the ones
   // that conflict are dropped, the rest kept.
   const params::FittedValues fitted = params::applyWhatFits(
@@ -367,6 +395,7 @@ void Gallery::switchScene(const SceneInfo& info) {
   input_.frame = 0;
   input_.time = 0.0;
   steps_.restart();
+  stepCost_ = {};
   window_.setTitle(fmt::format("Vitrine — {}", chosen->title));
   if (remote_) remote_->publish(*renderer_, true);
 }
@@ -380,6 +409,7 @@ void Gallery::kioskStep(double elapsed, bool touched) {
     if (!incoming_) {
       incoming_ = std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight);
       incoming_->setAudioSink(&audio_);
+      incoming_->setEventSink(&tiers_);
       incoming_->setRealtime(true);
     }
     if (auto failed = startScene(*incoming_, info); !failed.empty()) {
@@ -432,6 +462,8 @@ void Gallery::frame() {
   overlay_.beginFrame();  // first: its view of this frame's clicks decides which belong to the scene
   simulate();
   showMenu();
+  showToast();
+  handleKeys();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
   Crossfade fade;
@@ -443,8 +475,12 @@ void Gallery::frame() {
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
                                     compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute},
                     fade);
-  screenshots_.record(cmd, slot, renderer_->target(), renderer_->info().name, &renderer_->timer());
-  capture_.record(cmd, slot, renderer_->target(), &renderer_->timer());
+  if (screenshots_.requested() || capture_.active()) {
+    recordWindowCopy(cmd);
+    const VkExtent2D rendered = renderer_->target().extent2d();
+    screenshots_.record(cmd, slot, *windowCopy_, rendered, renderer_->info().name, &renderer_->timer());
+    capture_.record(cmd, slot, *windowCopy_, rendered, &renderer_->timer());
+  }
   slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_->timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image));
@@ -458,10 +494,14 @@ void Gallery::frame() {
 void Gallery::collect(uint32_t slot) {
   // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
   if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_->timer().collect(slot);
-  input_.lastGpuMs = 0.0;
-  for (const auto& pass : passes_) input_.lastGpuMs += pass.ms;
+  gpuMs_ = 0.0;
+  for (const auto& pass : passes_) gpuMs_ += pass.ms;
+  input_.lastGpuMs = gpuMs_;
   capture_.collect(slot);
+  if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
   if (auto note = screenshots_.collect(slot)) {
+    std::printf("vitrine: %s\n", note->c_str());
+    std::fflush(stdout);  // said now, also when the console is a log file
     note_ = std::move(*note);
     noted_ = Clock::now();
   }
@@ -486,13 +526,20 @@ void Gallery::simulate() {
   }
   if (kiosk_) kioskStep(elapsed, touched);
   cursor_.observe(pointer, !uiHidden_ && overlay_.wantsMouse());
-  for (int due = time_.due(steps_, elapsed); due > 0; --due) {
+  // Every step that is due, unless a step costs more than the time it stands for (StepCost).
+  const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed));
+  const bool firstSteps = input_.frame == 0;  // a scene's first update builds things: not its cost
+  const auto simulating = Clock::now();
+  for (int left = due; left > 0; --left) {
     input_.cursor = cursor_.take();
     input_.keysPressed = std::exchange(keys_, {});
     input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
     input_.droppedFiles = std::exchange(drops_, {});
     input_.actions = std::exchange(actions_, {});
     renderer_->scene().update(input_);
+    // A frame's GPU time is news to its first step only: the automatic tiers count frames, and a
+    // slow frame followed by many steps must not count as many slow frames.
+    input_.lastGpuMs = 0.0;
     shown_ = input_;
     input_.time += input_.dt;
     ++input_.frame;
@@ -503,6 +550,7 @@ void Gallery::simulate() {
       ++incomingInput_.frame;
     }
   }
+  if (!firstSteps) stepCost_.measured(due, secondsBetween(simulating, Clock::now()));
 }
 
 // Kiosk mode: did a person do anything? A key, a click, a scroll, a drop, or a mouse that moved.
@@ -519,10 +567,13 @@ void Gallery::showMenu() {
   const MenuChoice choice =
       drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                          note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
-                         helpShown_, capture_.status(), capture_.active(), reloadNote_,
-                         remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string()});
+                         helpShown_, capture_.status(renderer_->info().name), capture_.active(), reloadNote_,
+                         remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string(),
+                         tiers_.describe(renderer_->info().name, params::snapshot(renderer_->parameters())),
+                         clockNote(), &menuLayout_});
   vsync_ = choice.vsync;
   time_ = choice.time;
+  time_.speed = TimeControl::clampSpeed(time_.speed);
   helpShown_ = choice.help;
   if (choice.scene) nextScene_ = choice.scene;
   if (choice.edit) applyEdit(*choice.edit);
@@ -533,7 +584,42 @@ void Gallery::showMenu() {
   }
 }
 
-void Gallery::toggleCapture() { std::printf("vitrine: %s\n", capture_.toggle(renderer_->info().name).c_str()); }
+// With the UI hidden (Tab), where a screenshot went and a clock that falls behind still show, briefly
+// and small, in a corner. A kiosk shows nothing.
+void Gallery::showToast() {
+  if (!uiHidden_ || kiosk_) return;
+  std::string text;
+  if (!note_.empty() && Clock::now() - noted_ < kToastSeconds) text = note_;
+  if (const std::string clock = clockNote(); !clock.empty()) text += (text.empty() ? "" : "\n") + clock;
+  if (text.empty()) return;
+  drawToast(text);
+}
+
+// Said while the simulation cannot keep up with the wall clock, and for a few seconds after.
+std::string Gallery::clockNote() const {
+  if (!steps_.behind() || time_.paused) return {};
+  return fmt::format("simulation behind the clock: {:.0f}% of real time ({:.1f} ms a step of {:.1f} ms)",
+                     steps_.kept() * 100.0, stepCost_.perStep() * 1e3, steps_.step() * 1e3);
+}
+
+// The scene scaled to the window, as the present pass draws it, into an HDR image of the window's size.
+void Gallery::recordWindowCopy(VkCommandBuffer cmd) {
+  const VkExtent2D size = swapchain_.extent();
+  if (!windowCopy_ || windowCopy_->extent2d().width != size.width || windowCopy_->extent2d().height != size.height) {
+    if (windowCopy_) device_.retire(std::move(*windowCopy_));  // a frame in flight may still read it
+    gpu::ImageDesc desc;
+    desc.extent = {size.width, size.height, 1};
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    windowCopy_.emplace(device_, desc, "window copy");
+  }
+  renderer_->recordScaled(cmd, *windowCopy_);
+}
+
+void Gallery::toggleCapture() {
+  std::printf("vitrine: %s\n", capture_.toggle(renderer_->info().name).c_str());
+  std::fflush(stdout);
+}
 
 // Every panel edit goes through the same validation as --set; a refused one leaves every value as it
 // was. One that would freeze the window for seconds is asked about first.

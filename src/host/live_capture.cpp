@@ -5,6 +5,8 @@
 #include <ctime>
 #include <utility>
 
+#include "host/plural.h"
+#include "host/screenshot.h"
 #include "image/image_io.h"
 
 namespace vitrine::host {
@@ -40,7 +42,8 @@ LiveCapture::~LiveCapture() {
 std::string LiveCapture::toggle(std::string_view scene) {
   if (active_) {
     active_ = false;
-    return fmt::format("capture stopped: {}", status());
+    std::lock_guard lock(mutex_);
+    return fmt::format("capture stopping: {}", summary());
   }
   std::filesystem::path folder = root_ / fmt::format("vitrine-{}-{}", scene, stamp());
   for (int n = 2; std::filesystem::exists(folder); ++n) folder = root_ / fmt::format("vitrine-{}-{}-{}", scene, stamp(), n);
@@ -48,7 +51,9 @@ std::string LiveCapture::toggle(std::string_view scene) {
   std::filesystem::create_directories(folder, error);
   if (error) return fmt::format("capture failed: cannot make {}: {}", folder.string(), error.message());
   std::lock_guard lock(mutex_);
-  folder_ = std::move(folder);
+  folder_ = std::filesystem::absolute(folder);
+  scene_ = std::string(scene);
+  finishedSaid_ = false;
   next_ = 0;
   written_ = dropped_ = 0;
   failure_.clear();
@@ -56,7 +61,8 @@ std::string LiveCapture::toggle(std::string_view scene) {
   return fmt::format("capturing every frame to {}/ (F9 stops)", folder_.string());
 }
 
-void LiveCapture::record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target, gpu::PassTimer* timer) {
+void LiveCapture::record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target, VkExtent2D rendered,
+                         gpu::PassTimer* timer) {
   if (!active_) return;
   Copy& copy = copies_[slot];
   const VkExtent2D extent = target.extent2d();
@@ -68,6 +74,8 @@ void LiveCapture::record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target,
   gpu::Pass pass(device_, timer, cmd, "capture copy");
   gpu::recordReadback(cmd, target, *copy.pixels);
   copy.pending = true;
+  copy.rendered = rendered;
+  std::lock_guard lock(mutex_);
   copy.frame = next_++;
 }
 
@@ -86,18 +94,37 @@ void LiveCapture::collect(uint32_t slot) {
   }
   copy.pixels->invalidate();
   const auto halves = copy.pixels->view<const uint16_t>();
-  queue_.push_back({std::vector<uint16_t>(halves.begin(), halves.end()), copy.extent,
+  queue_.push_back({std::vector<uint16_t>(halves.begin(), halves.end()), copy.extent, copy.rendered, scene_,
                     folder_ / fmt::format("frame_{:06d}.exr", copy.frame)});
   lock.unlock();
   wake_.notify_one();
 }
 
-std::string LiveCapture::status() const {
+std::string LiveCapture::summary() const {
+  const uint64_t done = written_ + dropped_;
+  const std::string dropped =
+      dropped_ ? fmt::format(", {} dropped (the disk is slower than the frames)", dropped_) : std::string();
+  if (!failure_.empty()) return fmt::format("{}/: {} written, then: {}", folder_.string(), counted(written_, "frame"),
+                                            failure_);
+  if (active_) return fmt::format("capturing to {}/: {} written{}", folder_.string(), counted(written_, "frame"), dropped);
+  if (done < next_)
+    return fmt::format("{}/: {} of {} written{}, writing the rest", folder_.string(), written_, counted(next_, "frame"),
+                       dropped);
+  return fmt::format("captured {}/: {} written{}", folder_.string(), counted(written_, "frame"), dropped);
+}
+
+std::string LiveCapture::status(std::string_view scene) const {
   std::lock_guard lock(mutex_);
-  if (folder_.empty()) return {};
-  if (!failure_.empty()) return fmt::format("capture stopped: {}", failure_);
-  return fmt::format("{}{}/: {} frames written{}", active_ ? "capturing to " : "", folder_.string(), written_,
-                     dropped_ ? fmt::format(", {} dropped (the disk is slower than the frames)", dropped_) : "");
+  if (folder_.empty() || (!active_ && scene != scene_)) return {};
+  return summary();
+}
+
+std::optional<std::string> LiveCapture::takeFinished() {
+  std::lock_guard lock(mutex_);
+  if (finishedSaid_ || active_) return std::nullopt;
+  if (failure_.empty() && written_ + dropped_ < next_) return std::nullopt;
+  finishedSaid_ = true;
+  return summary();
 }
 
 void LiveCapture::writeLoop() {
@@ -110,7 +137,8 @@ void LiveCapture::writeLoop() {
     lock.unlock();
     std::string failed;
     try {
-      writeImage(frame.path, imageFromHalves(frame.extent.width, frame.extent.height, frame.halves));
+      writeImage(frame.path, imageFromHalves(frame.extent.width, frame.extent.height, frame.halves),
+                 Screenshots::notes(frame.scene, frame.extent, frame.rendered));
     } catch (const std::exception& e) {  // a full disk stops the capture, not the gallery
       failed = e.what();
     }

@@ -30,35 +30,47 @@ class LiveCapture {
   // Starts a new sequence in FOLDER/vitrine-<scene>-<time>/, or stops the one running; says what happened.
   std::string toggle(std::string_view scene);
   bool active() const { return active_; }
-  // After the scene renderer, which leaves `target` a transfer source: copies it while capturing.
-  void record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& target, gpu::PassTimer* timer);
+  // `shown` (a transfer source) is the window's picture at its size, `rendered` the size the scene drew
+  // it at (written into each frame's metadata): copies it while capturing.
+  void record(VkCommandBuffer cmd, uint32_t slot, gpu::Image& shown, VkExtent2D rendered, gpu::PassTimer* timer);
   // Once `slot`'s fence has signalled: hands its copy to the writer.
   void collect(uint32_t slot);
-  // "capturing … : 120 frames written, 3 dropped", or the last sequence's summary; empty before any.
-  std::string status() const;
+  // "capturing … : 120 frames written, 3 dropped" while it runs, then the count still being written
+  // and the final summary, counted from what reached the disk. Only for `scene`, the scene the
+  // sequence was taken in; empty before any.
+  std::string status(std::string_view scene) const;
+  // Once, when a stopped sequence's last frame is on disk (or failed): its summary, for the console.
+  std::optional<std::string> takeFinished();
 
  private:
   struct Frame {
     std::vector<uint16_t> halves;
     VkExtent2D extent{};
+    VkExtent2D rendered{};
+    std::string scene;
     std::filesystem::path path;
   };
   struct Copy {  // one frame in flight's read-back, kept across frames while the size holds
     std::optional<gpu::Buffer> pixels;
     VkExtent2D extent{};
+    VkExtent2D rendered{};
     bool pending = false;
     uint64_t frame = 0;
   };
   void writeLoop();
+  std::string summary() const;  // with the mutex held
 
   const gpu::Device& device_;
   std::filesystem::path root_;
   std::vector<Copy> copies_;
   bool active_ = false;
   std::filesystem::path folder_;  // the sequence being written
-  uint64_t next_ = 0;             // its next frame number
+  std::string scene_;             // the scene it was taken in
+  bool finishedSaid_ = true;      // takeFinished() has reported the last sequence
 
   mutable std::mutex mutex_;
+  uint64_t next_ = 0;             // its next frame number: how many frames it has taken
+
   std::condition_variable wake_;
   std::deque<Frame> queue_;  // at most kMaxQueued
   uint64_t written_ = 0, dropped_ = 0;

@@ -8,12 +8,26 @@
 
 #include <optional>
 #include <span>
+#include <utility>
 #include <string>
 #include <string_view>
 
 struct ImFont;
 
 namespace vitrine::host {
+
+// Which of the menu's sections are open, and how many timing rows it keeps: kept in the overlay's
+// layout file (with the window's place and folded state), so the menu comes back as it was left.
+struct MenuLayout {
+  bool time = false, panel = false, timings = false;  // a first start shows the scene list only
+  int passRows = 0;  // rows reserved in the timings table: the most passes any scene has shown
+  std::string text() const;            // "time=0\npanel=1\n...": the lines of its ini section
+  void readLine(std::string_view line);  // one of those lines; anything else is ignored
+};
+
+// The menu's width: narrow enough to leave the scene the window (a quarter of 1280 pixels at the
+// default font), wide enough for a slider, its label and its reset button.
+float menuWidth(float fontSize);
 
 struct MenuState {
   const SceneInfo& current;
@@ -35,6 +49,9 @@ struct MenuState {
   std::string_view reloaded;                   // "reloaded kifs/march.comp", for a few seconds after
   std::string remote;                          // remote play's status; empty without --remote
   std::string costly;                          // an edit that would freeze the window: what it costs
+  std::string tierInUse;                       // "auto: low": the quality tier the scene runs at
+  std::string clock;                           // "simulation behind the clock: ...", when it is
+  MenuLayout* layout = nullptr;                // open sections and reserved rows, kept across runs
 };
 
 struct MenuChoice {
@@ -48,10 +65,19 @@ struct MenuChoice {
 };
 
 MenuChoice drawMenu(const MenuState& state);
+// Registers `layout` with the current Dear ImGui context's ini file ([Vitrine][menu]); it must outlive
+// the context, which writes it when it is destroyed.
+void keepInIni(MenuLayout& layout);
+// A small note in the bottom-left corner, over everything, without a window frame (the UI hidden).
+void drawToast(std::string_view text);
+// The menu has the keyboard: a field is being typed into, or a widget (a slider turned into a field by
+// Ctrl+click, one this very frame's click activated) is active. Gallery keys then do nothing.
+bool menuHasKeyboard();
 
 // The gallery's own keys, as the help card lists them: key, what it does.
 std::span<const std::pair<std::string_view, std::string_view>> galleryKeys();
 // "1-5": the number keys the registered scenes have.
 std::string sceneKeyRange();
+
 
 }  // namespace vitrine::host

@@ -7,6 +7,7 @@
 
 #include "gpu/check.h"
 #include "host/font_check.h"
+#include "host/menu.h"
 #include "host/swapchain.h"
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -114,11 +115,19 @@ void endOfKeyFrame() {
 
 }  // namespace
 
-Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts) {
+Overlay::Context::Context(GLFWwindow* window, const Fonts& fonts, std::filesystem::path layout, bool forgetLayout)
+    : layoutFile(layout.string()) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // no imgui.ini dropped into the user's working folder
+  // Never an imgui.ini dropped into the user's working folder: the layout lives beside the settings.
+  io.IniFilename = nullptr;
+  if (!layoutFile.empty()) {
+    std::error_code ignored;
+    if (forgetLayout) std::filesystem::remove(layout, ignored);
+    std::filesystem::create_directories(layout.parent_path(), ignored);
+    io.IniFilename = layoutFile.c_str();
+  }
   io.Fonts->FontBuilderIO = ImGuiFreeType::GetBuilderForFreeType();  // reads the woff2 files
   if (!addFont(fonts.body, 17.0f, fontProblems)) io.Fonts->AddFontDefault();  // the first font is the default
   titles = addFont(fonts.titles, 21.0f, fontProblems);
@@ -161,11 +170,11 @@ Overlay::Renderer::Renderer(const gpu::Device& device, VkDescriptorPool pool, Vk
 Overlay::Renderer::~Renderer() { ImGui_ImplVulkan_Shutdown(); }
 
 Overlay::Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight,
-                 const Fonts& fonts)
+                 const Fonts& fonts, std::filesystem::path layoutFile, bool forgetLayout)
     : device_(device),
       pool_(createPool(device)),
       renderPass_(createRenderPass(device, format)),
-      context_(window, fonts),
+      context_(window, fonts, std::move(layoutFile), forgetLayout),
       renderer_(device, pool_, renderPass_, framesInFlight) {
   device.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();
@@ -213,5 +222,7 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t image, gpu::PassTimer* timer)
 bool Overlay::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 
 bool Overlay::wantsText() const { return ImGui::GetIO().WantTextInput; }
+
+bool Overlay::wantsKeyboard() const { return menuHasKeyboard(); }
 
 }  // namespace vitrine::host

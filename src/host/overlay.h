@@ -22,9 +22,11 @@ class Overlay {
   struct Fonts {  // woff2 files rendered through FreeType; Dear ImGui's built-in font where absent
     std::optional<std::filesystem::path> body, titles;
   };
-  // `format` is the swapchain's; it must stay the same for the overlay's lifetime.
+  // `format` is the swapchain's; it must stay the same for the overlay's lifetime. `layoutFile`: where
+  // Dear ImGui keeps the windows' places and folds (and what keepInIni adds); empty: nowhere.
+  // `forgetLayout`: start from the default layout (the file is rewritten).
   Overlay(const gpu::Device& device, GLFWwindow* window, VkFormat format, uint32_t framesInFlight,
-          const Fonts& fonts);
+          const Fonts& fonts, std::filesystem::path layoutFile = {}, bool forgetLayout = false);
 
   void attach(const Swapchain& swapchain);  // framebuffers over its current images
   void beginFrame();                        // widgets may be drawn from here until record()
@@ -33,15 +35,17 @@ class Overlay {
 
   bool wantsMouse() const;  // the pointer is over, or dragging, a widget
   bool wantsText() const;   // a text field has the keyboard
+  bool wantsKeyboard() const;  // a widget has the keyboard, from this frame's widgets (menuHasKeyboard)
   ImFont* titleFont() const { return context_.titles; }  // null: use the current font
   // One line per font file that was given but FreeType could not use, naming it and the reason.
   const std::vector<std::string>& fontProblems() const { return context_.fontProblems; }
 
  private:
   struct Context {  // the ImGui context, its fonts and its GLFW backend
-    Context(GLFWwindow* window, const Fonts& fonts);
+    Context(GLFWwindow* window, const Fonts& fonts, std::filesystem::path layoutFile, bool forgetLayout);
     ~Context();
     ImFont* titles = nullptr;
+    std::string layoutFile;  // what io.IniFilename points to
     std::vector<std::string> fontProblems;
   };
   struct Renderer {  // the ImGui Vulkan backend, shut down before the render pass and pool it uses

@@ -22,7 +22,25 @@ std::string numberText(const params::Param& param, double value) {
 
 }  // namespace
 
-std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std::string& error) {
+const params::Preset* matchingPreset(const params::Bound& bound) {
+  const params::KeyValues now = params::snapshot(bound);
+  for (const params::Preset& preset : bound.schema->presets()) {
+    // The preset's values in canonical form: applied over a copy of the current ones.
+    const auto scratch = bound.schema->makeDefaults();
+    const params::Bound copy{bound.schema, scratch.get()};
+    if (!params::applyValues(copy, now).empty() || !params::applyValues(copy, preset.values).empty()) continue;
+    if (params::snapshot(copy) == now) return &preset;
+  }
+  return nullptr;
+}
+
+std::string presetLabel(const params::Bound& bound) {
+  if (const params::Preset* preset = matchingPreset(bound)) return preset->name;
+  const auto defaults = bound.schema->makeDefaults();
+  return params::snapshot({bound.schema, defaults.get()}) == params::snapshot(bound) ? "defaults" : "custom";
+}
+
+std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, std::string_view tierInUse) {
   std::optional<PanelEdit> edit;
   auto set = [&](const std::string& key, std::string value) {
     edit = PanelEdit{PanelEdit::What::Values, {{key, std::move(value)}}, {}};
@@ -30,10 +48,12 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
   const params::Schema& schema = *bound.schema;
 
   if (!schema.presets().empty()) {
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
-    if (ImGui::BeginCombo("preset", "choose...")) {
+    const params::Preset* matching = matchingPreset(bound);
+    const std::string label = presetLabel(bound);
+    if (ImGui::BeginCombo("preset", label.c_str())) {
       for (const auto& preset : schema.presets()) {
-        if (ImGui::Selectable(preset.name.c_str())) edit = PanelEdit{PanelEdit::What::Preset, {}, preset.name};
+        if (ImGui::Selectable(preset.name.c_str(), &preset == matching))
+          edit = PanelEdit{PanelEdit::What::Preset, {}, preset.name};
         if (ImGui::IsItemHovered() && !preset.help.empty()) ImGui::SetTooltip("%s", preset.help.c_str());
       }
       ImGui::EndCombo();
@@ -58,7 +78,6 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
     const bool changed = current != param.defaultText;
     // Applying on release keeps a slider from rebuilding buffers on every step of a drag.
     const bool onRelease = param.has(params::kApplyOnRelease) || param.has(params::kRebuilds);
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
     switch (param.kind) {
       case params::Kind::Float:
       case params::Kind::Int: {
@@ -93,9 +112,10 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
       }
       case params::Kind::Choice: {
         const int index = int(param.number(bound.settings));
-        const char* shown = index >= 0 && size_t(index) < param.choices.size() ? param.choices[size_t(index)].c_str()
-                                                                                : "?";
-        if (ImGui::BeginCombo(param.label.c_str(), shown)) {
+        std::string shown = index >= 0 && size_t(index) < param.choices.size() ? param.choices[size_t(index)] : "?";
+        // The automatic tier names the one it picked.
+        if (param.key == "tier" && !tierInUse.empty()) shown = std::string(tierInUse);
+        if (ImGui::BeginCombo(param.label.c_str(), shown.c_str())) {
           for (size_t i = 0; i < param.choices.size(); ++i)
             if (ImGui::Selectable(param.choices[i].c_str(), int(i) == index)) set(param.key, param.choices[i]);
           ImGui::EndCombo();
@@ -127,13 +147,6 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, const std:
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to %s", param.defaultText.c_str());
     }
     ImGui::PopID();
-  }
-  if (!error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26.0f);
-    ImGui::TextUnformatted(error.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::PopStyleColor();
   }
   return edit;
 }

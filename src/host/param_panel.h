@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vitrine::host {
 
@@ -20,8 +21,8 @@ struct PanelEdit {
 class ParamPanel {
  public:
   // Draws the panel for `bound`; returns what the user asked for this frame, if anything.
-  // `error` is the last rejected edit's reason, shown under the widgets.
-  std::optional<PanelEdit> draw(const params::Bound& bound, const std::string& error);
+  // `tierInUse` ("auto: low") is shown as the quality choice when the scene says which tier it runs.
+  std::optional<PanelEdit> draw(const params::Bound& bound, std::string_view tierInUse = {});
   void forget() {  // a scene switch
     editing_.clear();
     typing_.clear();
@@ -32,5 +33,12 @@ class ParamPanel {
   std::map<std::string, double> editing_;
   std::map<std::string, std::string> typing_;
 };
+
+// The first of the schema's presets that the current values match (every value it sets is the value
+// now), or null: the values are the user's own ("custom").
+const params::Preset* matchingPreset(const params::Bound& bound);
+// What the preset list shows: that preset's name, "defaults" when every value is its default, else
+// "custom".
+std::string presetLabel(const params::Bound& bound);
 
 }  // namespace vitrine::host

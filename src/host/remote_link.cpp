@@ -1,4 +1,5 @@
 #include "host/remote_link.h"
+#include "host/plural.h"
 
 #include <fmt/format.h>
 
@@ -134,8 +135,8 @@ std::string RemoteLink::status() const {
   const remote::RemoteStatsSnapshot stats = control_.stats();
   const uint64_t ignored = stats.malformed + stats.refused + stats.rateLimited + stats.oversized + stats.unauthorised +
                            stats.dropped + stats.connectionsRefused + refused_;
-  return fmt::format("remote {}: {} page{} open, {} messages, {} ignored", remote::formatBind(control_.bind()),
-                     control_.sockets(), control_.sockets() == 1 ? "" : "s", stats.accepted, ignored);
+  return fmt::format("remote {}: {} open, {}, {} ignored", remote::formatBind(control_.bind()),
+                     counted(control_.sockets(), "page"), counted(stats.accepted, "message"), ignored);
 }
 
 }  // namespace vitrine::host

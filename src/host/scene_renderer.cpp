@@ -102,6 +102,16 @@ void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput&
     blit(cmd, dst);
 }
 
+void SceneRenderer::recordScaled(VkCommandBuffer cmd, gpu::Image& output) {
+  output.discard();  // every texel is written
+  const BlitDestination dst{output.handle(), output.extent2d(), output.lastUse(), gpu::use::TransferSrc, output.view()};
+  if (device_.storageWriteWithoutFormat())
+    present(cmd, dst, {});
+  else
+    blit(cmd, dst);
+  output.assumeUse(gpu::use::TransferSrc);
+}
+
 void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
   gpu::Pass pass(device_, &timer_, cmd, "present");
   target_.use(cmd, gpu::use::ComputeSample);

@@ -63,6 +63,9 @@ class SceneRenderer {
               const Crossfade& fade = {});
   // The scene into its target only, sized for an output of `output` (the incoming scene of a fade).
   void recordTarget(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, VkExtent2D output);
+  // After record(): the target scaled onto `output` (an HDR image with storage or transfer-dst use)
+  // as the present pass scaled it onto the window, left a transfer source. What F12 and F9 save.
+  void recordScaled(VkCommandBuffer cmd, gpu::Image& output);
   // No scene any more: it and its images are retired behind the frames that used them.
   void clear();
   bool hasScene() const { return scene_ != nullptr; }

@@ -6,13 +6,18 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace vitrine {
 
+// Text attributes for a written file's header (EXR) or text chunks (PNG): name, value.
+using ImageNotes = std::vector<std::pair<std::string, std::string>>;
+
 // Writes linear half-float EXR, or 8-bit sRGB PNG when the name ends in .png, through a temporary
 // file renamed into place, so a reader never sees half a file. Throws vitrine::Error.
-void writeImage(const std::filesystem::path& path, const ImageRgba& image);
+void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes = {});
 // Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error, naming the path, for
 // anything but a regular file that starts like an EXR (a device, a folder, a PNG named .exr).
 ImageRgba readImage(const std::filesystem::path& path);

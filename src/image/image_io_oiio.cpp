@@ -36,11 +36,12 @@ OIIO::ImageBuf openFresh(const std::filesystem::path& path) {
 
 bool canWritePng() { return true; }
 
-void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
+void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
   namespace OIIO = OIIO;
   const std::string ext = path.extension().string();
   const bool png = ext == ".png" || ext == ".PNG";
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+  for (const auto& [name, value] : notes) spec.attribute(name, value);
   OIIO::ImageBuf buffer(spec, const_cast<float*>(image.pixels.data()));
   OIIO::ImageBuf encoded;
   if (png) {

@@ -2,7 +2,9 @@
 // through libpng's simplified API and JPEG through libjpeg(-turbo), both of which the packed binary
 // already carries for FreeType and costs next to nothing.
 #include <ImfArray.h>
+#include <ImfHeader.h>
 #include <ImfRgbaFile.h>
+#include <ImfStringAttribute.h>
 #include <fmt/format.h>
 #include <jpeglib.h>
 #include <png.h>
@@ -146,7 +148,8 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   return fitWithin(std::move(picture), maxSide);
 }
 
-void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
+void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
+  // libpng's simplified API writes no text chunks: a PNG from this build carries no notes.
   if (hasExtension(path, ".png")) {
     std::vector<uint8_t> encoded(image.pixels.size());
     for (size_t i = 0; i < encoded.size(); ++i)
@@ -167,7 +170,9 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image) {
       for (size_t i = 0; i < half.size(); ++i)
         half[i] =
             Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
-      Imf::RgbaOutputFile file(temporary.c_str(), int(image.width), int(image.height), Imf::WRITE_RGBA);
+      Imf::Header header(int(image.width), int(image.height));
+      for (const auto& [name, value] : notes) header.insert(name, Imf::StringAttribute(value));
+      Imf::RgbaOutputFile file(temporary.c_str(), header, Imf::WRITE_RGBA);
       file.setFrameBuffer(half.data(), 1, image.width);
       file.writePixels(int(image.height));
     } catch (const std::exception& e) {

@@ -1,0 +1,11 @@
+# Sourced by the gallery's checks: start_display WxH starts an Xvfb of that size on a free display
+# (no access control, so xtest.py can connect) and sets $display and $xvfb; $out and fail() come from
+# the caller. The caller's EXIT trap kills $xvfb.
+start_display() {
+  exec 3>"$out/display"
+  Xvfb -displayfd 3 -screen 0 "$1x24" -nolisten tcp >"$out/xvfb.log" 2>&1 &
+  xvfb=$!
+  for _ in $(seq 50); do [ -s "$out/display" ] && break; sleep 0.1; done
+  display=:$(head -n1 "$out/display")
+  [ "$display" != ":" ] || fail "Xvfb did not start"
+}

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""xtest.py DISPLAY ACTION...: presses keys and moves or clicks the mouse on an X display through the
+XTEST extension, speaking the X11 protocol over the display's local socket (no xdotool on the test
+machine). Actions: key:NAME (a keysym name: F12, Tab, bracketright, 3 ...), move:X,Y, click:X,Y,
+ctrlclick:X,Y, wheel:X,Y,NOTCHES, sleep:SECONDS. For the gallery's checks under Xvfb (started without access control)."""
+import os
+import socket
+import struct
+import sys
+import time
+
+KEYSYMS = {"Tab": 0xFF09, "Escape": 0xFF1B, "Return": 0xFF0D, "Control_L": 0xFFE3, "bracketleft": 0x5B, "bracketright": 0x5D,
+           "backslash": 0x5C, "period": 0x2E}
+KEYSYMS.update({f"F{n}": 0xFFBD + n for n in range(1, 13)})
+KEYSYMS.update({str(d): 0x30 + d for d in range(10)})
+KEYSYMS.update({chr(c): c for c in range(ord("a"), ord("z") + 1)})
+
+
+def recv(sock, n):
+    data = b""
+    while len(data) < n:
+        chunk = sock.recv(n - len(data))
+        if not chunk:
+            raise SystemExit("xtest: the X server closed the connection")
+        data += chunk
+    return data
+
+
+def connect(display):
+    number = display.split(":")[1].split(".")[0]
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    sock.connect(f"/tmp/.X11-unix/X{number}")
+    sock.sendall(struct.pack("<BxHHHHxx", 0x6C, 11, 0, 0, 0))
+    head = recv(sock, 8)
+    if head[0] != 1:
+        raise SystemExit(f"xtest: connection refused by {display}")
+    extra = struct.unpack("<H", head[6:8])[0] * 4
+    setup = recv(sock, extra)
+    min_keycode, max_keycode = setup[26], setup[27]
+    return sock, min_keycode, max_keycode
+
+
+def request(sock, data, reply=False):
+    sock.sendall(data)
+    if not reply:
+        return None
+    while True:
+        head = recv(sock, 32)
+        if head[0] == 0:
+            raise SystemExit(f"xtest: X error {head[1]}")
+        if head[0] == 1:
+            length = struct.unpack("<I", head[4:8])[0] * 4
+            return head + recv(sock, length)
+        # an event: ignore
+
+
+def main():
+    display, actions = sys.argv[1], sys.argv[2:]
+    sock, lo, hi = connect(display)
+    name = b"XTEST"
+    pad = (4 - len(name) % 4) % 4
+    ext = request(sock, struct.pack("<BxHHxx", 98, 2 + (len(name) + pad) // 4, len(name)) + name + b"\0" * pad, True)
+    if not ext[8]:
+        raise SystemExit("xtest: the display has no XTEST extension")
+    opcode = ext[9]
+    count = hi - lo + 1
+    mapping = request(sock, struct.pack("<BxHBBxx", 101, 2, lo, count), True)
+    per = mapping[1]
+    syms = struct.unpack(f"<{count * per}I", mapping[32:32 + 4 * count * per])
+    keycode = {}
+    for i in range(count):
+        for j in range(per):
+            keycode.setdefault(syms[i * per + j], lo + i)
+
+    def fake(kind, detail, x=0, y=0):
+        request(sock, struct.pack("<BBHBBxxIIxxxxxxxxhhxxxxxxxx", opcode, 2, 9, kind, detail, 0, 0, x, y))
+
+    for action in actions:
+        verb, _, arg = action.partition(":")
+        if verb == "key":
+            code = keycode.get(KEYSYMS[arg])
+            if code is None:
+                raise SystemExit(f"xtest: no keycode for {arg}")
+            fake(2, code)
+            fake(3, code)
+        elif verb in ("move", "click", "ctrlclick"):
+            x, y = map(int, arg.split(","))
+            fake(6, 0, x, y)
+            ctrl = keycode.get(KEYSYMS["Control_L"])
+            if verb == "ctrlclick":
+                fake(2, ctrl)
+            if verb != "move":
+                fake(4, 1)
+                time.sleep(0.05)
+                fake(5, 1)
+            if verb == "ctrlclick":
+                fake(3, ctrl)
+        elif verb == "wheel":  # wheel:X,Y,N: N notches down (negative: up)
+            x, y, n = map(int, arg.split(","))
+            fake(6, 0, x, y)
+            for _ in range(abs(n)):
+                fake(4, 5 if n > 0 else 4)
+                fake(5, 5 if n > 0 else 4)
+                time.sleep(0.05)
+        elif verb == "sleep":
+            time.sleep(float(arg))
+        else:
+            raise SystemExit(f"xtest: unknown action {action}")
+    # GetInputFocus: a round trip, so every request has been handled before we go.
+    request(sock, struct.pack("<BxH", 43, 1), True)
+    sock.close()
+
+
+if __name__ == "__main__":
+    main()
