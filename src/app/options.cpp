@@ -100,6 +100,96 @@ std::string lowercase(std::string text) {
   return text;
 }
 
+// Which of the run modes each flag applies to, and whether it may be given more than once. A flag
+// outside its modes is refused, naming the mode, rather than ignored in silence (`--headless --fps 10`
+// would render at 60 all the same); one given twice is refused unless repeatable, as the second would
+// silently win. Flags not listed here (the --list-* modes, --help, --version) are checked by their own rules.
+enum ModeBits : unsigned { kGallery = 1, kHeadless = 2, kBench = 4, kRecord = 8, kRuns = 15 };
+
+struct FlagRule {
+  std::string_view name;
+  unsigned modes;
+  bool repeatable = false;
+};
+
+constexpr FlagRule kFlagRules[] = {
+    {"--headless", kHeadless},
+    {"--scene", kRuns},
+    {"--device", kRuns},
+    {"--validate", kRuns},
+    {"--reduced-motion", kRuns},
+    {"--seed", kRuns},
+    {"--size", kRuns},
+    {"--set", kRuns, true},
+    {"--preset", kRuns, true},
+    {"--frames", kHeadless | kBench},
+    {"--time", kHeadless | kBench | kRecord},
+    {"--out", kHeadless | kRecord},
+    {"--json", kBench},
+    {"--warmup", kBench},
+    {"--fullscreen", kGallery},
+    {"--no-vsync", kGallery},
+    {"--reset-settings", kGallery},
+    {"--kiosk", kGallery},
+    {"--dwell", kGallery},
+    {"--remote", kGallery | kHeadless},
+    {"--remote-bind", kGallery | kHeadless},
+    {"--remote-saves", kGallery},
+    {"--input", kHeadless | kRecord},
+    {"--events", kHeadless | kRecord},
+    {"--audio-out", kHeadless},
+    {"--fps", kRecord},
+    {"--seconds", kRecord},
+    {"--spp", kRecord},
+    {"--range", kRecord},
+    {"--format", kRecord},
+};
+
+const FlagRule* findFlagRule(std::string_view flag) {
+  for (const FlagRule& rule : kFlagRules)
+    if (rule.name == flag) return &rule;
+  return nullptr;
+}
+
+unsigned modeBit(Mode mode) {
+  switch (mode) {
+    case Mode::Gallery: return kGallery;
+    case Mode::Headless: return kHeadless;
+    case Mode::Bench: return kBench;
+    case Mode::Record: return kRecord;
+    default: return 0;  // the listing and help modes take what they need and ignore the rest
+  }
+}
+
+std::string_view modeName(unsigned bit) {
+  switch (bit) {
+    case kGallery: return "the gallery";
+    case kHeadless: return "--headless";
+    case kBench: return "bench";
+    default: return "record";
+  }
+}
+
+// "--headless and record runs", "the gallery", "bench runs".
+std::string modeList(unsigned modes) {
+  std::vector<std::string_view> names;
+  for (const unsigned bit : {kGallery, kHeadless, kBench, kRecord})
+    if (modes & bit) names.push_back(modeName(bit));
+  std::string text;
+  for (size_t n = 0; n < names.size(); ++n)
+    text += fmt::format("{}{}", n == 0 ? "" : n + 1 == names.size() ? " and " : ", ", names[n]);
+  return modes == kGallery ? text : text + " runs";
+}
+
+// Throws for a flag given to a run mode it does not apply to: "--fps is only for record runs, not --headless."
+void checkFlagsApply(const std::vector<const FlagRule*>& given, Mode mode) {
+  const unsigned bit = modeBit(mode);
+  if (bit == 0) return;
+  for (const FlagRule* rule : given)
+    if (!(rule->modes & bit))
+      throw Error(fmt::format("{} is only for {}, not {}.", rule->name, modeList(rule->modes), modeName(bit)));
+}
+
 }  // namespace
 
 const char* usage() {
@@ -134,6 +224,8 @@ changes it); it prints the page's address with its access token. Bound beyond lo
 --remote-allow networks (192.168.1.0/24) or senders that sent the token. Remote changes are not saved unless --remote-saves.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
+A flag outside its mode (--fps in --headless, --json for --out) is refused, as is one given twice, except
+--set and --preset. record keeps the film's parameters in FOLDER/record.json and resumes only the same film.
 )";
 }
 
@@ -191,8 +283,14 @@ Options parseOptions(int argc, const char* const* argv) {
       throw Error(fmt::format("{} needs a value, but got the option {}.", flag, next));
     return argv[++i];
   };
+  std::vector<const FlagRule*> given;
   for (; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    if (const FlagRule* rule = findFlagRule(arg)) {
+      if (!rule->repeatable && std::find(given.begin(), given.end(), rule) != given.end())
+        throw Error(fmt::format("{} is given twice; only --set and --preset may be given more than once.", arg));
+      given.push_back(rule);
+    }
     if (arg == "--headless") options.mode = Mode::Headless;
     else if (arg == "--scene") options.scene = value(arg);
     else if (arg == "--device") options.device = value(arg);
@@ -241,12 +339,12 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--version") options.mode = Mode::Version;
     else throw Error(fmt::format("Unknown option '{}'; see vitrine --help.", arg));
   }
+  checkFlagsApply(given, options.mode);
   if (options.mode == Mode::Headless && options.out.empty())
     throw Error("--headless needs --out FILE.exr (or FILE.png).");
   if (options.mode == Mode::Bench && options.out.empty()) throw Error("bench needs --json FILE.");
   if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME.");
-  if (const std::string ext = lowercase(std::filesystem::path(options.out).extension().string());
-      options.mode == Mode::Headless && ext != ".exr" && ext != ".png")
+  if (options.mode == Mode::Headless && !imageFormatFromName(options.out))
     throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
   if (options.mode == Mode::Record) {
     if (options.scene.empty()) throw Error("record needs --scene NAME.");

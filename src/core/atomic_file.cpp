@@ -1,10 +1,14 @@
 #include "core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
+#include <regex>
 #include <cerrno>
 #include <random>
 #include <string>
@@ -35,12 +39,68 @@ std::filesystem::path temporaryName(const std::filesystem::path& target, const s
   return target.parent_path() / fmt::format(".{}.{}.tmp{}", kept, unique, extension);
 }
 
-// Process id, a per-process counter and a random word: unique across threads and concurrent runs;
-// O_EXCL below settles the rare clash.
+// This machine's name as letters, digits and '-' only (at most 32), for temporary names: a folder
+// shared between machines (a render farm's) holds temporaries of writers on several hosts.
+const std::string& hostWord() {
+  static const std::string word = [] {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
+    std::string out;
+    for (const char* c = name; *c && out.size() < 32; ++c)
+      if (std::isalnum(static_cast<unsigned char>(*c)) || *c == '-') out += *c;
+    return out.empty() ? std::string("host") : out;
+  }();
+  return word;
+}
+
+// Host, process id, a per-process counter and a random word: unique across threads, concurrent runs
+// and machines; O_EXCL below settles the rare clash. removeStaleTemporaries reads the host and the
+// process back.
 std::string uniqueWord() {
   static std::atomic<uint32_t> counter{0};
   thread_local std::mt19937 random{std::random_device{}()};
-  return fmt::format("{:x}-{:x}-{:08x}", static_cast<unsigned long>(::getpid()), counter++, random());
+  return fmt::format("{}-{:x}-{:x}-{:08x}", hostWord(), static_cast<unsigned long>(::getpid()), counter++, random());
+}
+
+// ".NAME.HOST-PID-COUNTER-RANDOM.tmp[EXT]" as temporaryName makes them: the host and the process.
+const std::regex& temporaryPattern() {
+  static const std::regex pattern(R"(^\..*\.([A-Za-z0-9-]+)-([0-9a-f]+)-[0-9a-f]+-[0-9a-f]{8}\.tmp(\.[^.]*)?$)");
+  return pattern;
+}
+
+std::string osReason(int error) { return std::system_category().message(error); }
+
+// Writes all of `bytes` to the new file `path`, flushes it to the disk and closes it, checking each
+// step: a full disk or a file size limit shows up in one of them, with the operating system's reason.
+void writeAll(const std::filesystem::path& path, const std::filesystem::path& target,
+              std::span<const unsigned char> bytes) {
+  auto fail = [&](int error) {
+    throw Error(fmt::format("Cannot write {}: {}", target.string(), osReason(error)));
+  };
+  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) fail(errno);
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) {
+      const int error = wrote < 0 ? errno : ENOSPC;  // a write of nothing: the disk took no more
+      ::close(fd);
+      fail(error);
+    }
+    done += size_t(wrote);
+  }
+  if (::fsync(fd) != 0) {
+    const int error = errno;
+    ::close(fd);
+    fail(error);
+  }
+  struct stat info {};
+  const bool sized = ::fstat(fd, &info) == 0;
+  if (::close(fd) != 0) fail(errno);
+  if (!sized || uint64_t(info.st_size) != bytes.size())
+    throw Error(fmt::format("Cannot write {}: {} of its {} bytes reached the disk", target.string(),
+                            sized ? uint64_t(info.st_size) : 0, bytes.size()));
 }
 
 // Creates a new, empty file under a fresh temporary name (mode 0666 less the umask, as a plain
@@ -55,7 +115,7 @@ std::filesystem::path createTemporary(const std::filesystem::path& target) {
     }
     const int error = errno;  // before anything else can change it
     if (error != EEXIST || attempt >= 100)
-      throw Error(fmt::format("Cannot write {}: {}", target.string(), std::system_category().message(error)));
+      throw Error(fmt::format("Cannot write {}: {}", target.string(), osReason(error)));
   }
 }
 
@@ -77,6 +137,54 @@ void replaceAtomically(const std::filesystem::path& target,
     std::filesystem::remove(temporary, ignored);
     throw Error(fmt::format("Cannot write {}: {}", target.string(), renamed.message()));
   }
+}
+
+}  // namespace vitrine
+
+namespace vitrine {
+
+void writeFileAtomically(const std::filesystem::path& target, std::span<const unsigned char> bytes) {
+  replaceAtomically(target, [&](const std::filesystem::path& temporary) { writeAll(temporary, target, bytes); });
+}
+
+std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> removed;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    std::smatch match;
+    if (!std::regex_match(name, match, temporaryPattern()) || match[1].str() != hostWord()) continue;
+    const unsigned long pid = std::stoul(match[2].str(), nullptr, 16);
+    // Signal 0 only asks whether the process exists; EPERM means it does, under another user.
+    if (pid == 0 || pid > 0x7fffffffUL || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code gone;
+    if (entry.is_regular_file(gone) && std::filesystem::remove(entry.path(), gone)) removed.push_back(entry.path());
+  }
+  return removed;
+}
+
+}  // namespace vitrine
+
+namespace vitrine {
+
+void checkWritableFolder(const std::filesystem::path& folder) {
+  // A file made and filled the way every output is (the temporary's name, so a probe left by a killed
+  // run is removed like any stale temporary), then removed: the mode bits are not enough (root writes
+  // through them; a read-only mount or a full disk stops everyone).
+  const auto probe = temporaryName(folder / "probe", uniqueWord());
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error(fmt::format("Cannot write into {}: {}.", folder.string(), osReason(errno)));
+  ::close(fd);
+  try {
+    const std::vector<unsigned char> page(4096, 0);
+    writeAll(probe, folder, page);
+  } catch (const Error&) {
+    std::error_code ignored;
+    std::filesystem::remove(probe, ignored);
+    throw;
+  }
+  std::error_code ignored;
+  std::filesystem::remove(probe, ignored);
 }
 
 }  // namespace vitrine

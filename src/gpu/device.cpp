@@ -342,14 +342,14 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   for (const Filter filter : {Filter::Nearest, Filter::Linear})
     for (const Address address : {Address::Clamp, Address::Repeat})
       for (const bool mipmaps : {false, true}) {
-        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-        info.magFilter = info.minFilter = filter == Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-        info.mipmapMode = filter == Filter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-        info.addressModeU = info.addressModeV = info.addressModeW =
+        VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        samplerInfo.magFilter = samplerInfo.minFilter = filter == Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+        samplerInfo.mipmapMode = filter == Filter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
             address == Address::Clamp ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
-        info.maxLod = mipmaps ? VK_LOD_CLAMP_NONE : 0.0f;
+        samplerInfo.maxLod = mipmaps ? VK_LOD_CLAMP_NONE : 0.0f;
         VkSampler sampler;
-        VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler));
+        VK_CHECK(vkCreateSampler(device_, &samplerInfo, nullptr, &sampler));
         name(sampler, VK_OBJECT_TYPE_SAMPLER,
              fmt::format("{} {}{}", filter == Filter::Linear ? "linear" : "nearest",
                          address == Address::Clamp ? "clamp" : "repeat", mipmaps ? " mipmapped" : ""));

@@ -28,7 +28,7 @@ volatile std::sig_atomic_t stopHeadless = 0;
 int runHeadless(const Options& options) {
   const std::filesystem::path out = options.out;
   checkWritable(out);
-  if (out.extension() == ".png" && !canWritePng())
+  if (imageFormatFromName(out) == ImageFormat::Png && !canWritePng())
     throw Error("This build writes EXR only (built without OpenImageIO); use --out FILE.exr.");
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
@@ -41,6 +41,7 @@ int runHeadless(const Options& options) {
   std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
   if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
+  uint32_t rendered = 0;  // fewer than --frames when SIGTERM ends a --remote run early
   {
     Offscreen offscreen(device, config);
     std::optional<RemoteLink> remote;
@@ -55,7 +56,8 @@ int runHeadless(const Options& options) {
     // Device memory after the first fifth of the frames (the soak's warm-up) and at the end.
     const uint32_t warmFrames = std::max(options.frames / 5, 1u);
     gpu::MemoryTally warm;
-    for (uint32_t k = 0; k < options.frames && !stopHeadless; ++k) {
+    for (; rendered < options.frames && (rendered == 0 || !stopHeadless); ++rendered) {  // one frame at least
+      const uint32_t k = rendered;
       if (k == warmFrames) warm = gpu::liveDeviceMemory();
       if (remote) {
         RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
@@ -67,20 +69,22 @@ int runHeadless(const Options& options) {
     }
     image = offscreen.readback();
     const gpu::MemoryTally end = gpu::liveDeviceMemory();
-    if (options.frames > warmFrames)
+    if (rendered > warmFrames)
       std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
                   static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
                   static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
-                   options.input.c_str(), options.time + double(options.frames - 1) / 60.0);
+                   options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);
   }
   writeImage(out, image);
   if (events) events->close();
-  if (sound) audio::writeWav(options.audioOut, sound->render(double(options.frames) / 60.0));
+  if (sound) audio::writeWav(options.audioOut, sound->render(double(rendered) / 60.0));
   std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
-              image.height, options.scene.c_str(), options.frames, options.time, options.seed,
+              image.height, options.scene.c_str(), rendered, options.time, options.seed,
               device.properties().deviceName);
+  if (rendered < options.frames)
+    std::printf("stopped after %u of the %u frames asked for\n", rendered, options.frames);
   if (instance.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
     return 3;

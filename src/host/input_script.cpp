@@ -17,6 +17,7 @@
 #include <GLFW/glfw3.h>
 
 #include "core/error.h"
+#include "core/printable.h"
 
 namespace vitrine::host {
 namespace {
@@ -109,23 +110,25 @@ class LineParser {
  public:
   LineParser(std::string_view name, size_t line) : name_(name), line_(line) {}
 
-  [[noreturn]] void fail(std::string_view reason) const { throw Error(fmt::format("{}:{}: {}", name_, line_, reason)); }
+  [[noreturn]] void fail(std::string_view reason) const {
+    throw Error(fmt::format("{}:{}: {}", printable(name_), line_, reason));
+  }
 
   double number(std::string_view what, std::string_view text) const {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     // from_chars reads "nan" and "inf" and reports overflow as out of range: all three are not finite.
     if ((ec != std::errc() && ec != std::errc::result_out_of_range) || end != text.data() + text.size())
-      fail(fmt::format("{} '{}' is not a number", what, text));
+      fail(fmt::format("{} '{}' is not a number", what, printable(text)));
     if (ec == std::errc::result_out_of_range || !std::isfinite(value))
-      fail(fmt::format("{} '{}' is not a finite number", what, text));
+      fail(fmt::format("{} '{}' is not a finite number", what, printable(text)));
     return value;
   }
 
   float coordinate(std::string_view what, std::string_view text) const {
     const double value = number(what, text);
     if (value < 0.0 || value > 1.0)
-      fail(fmt::format("{} {} is outside 0..1 (normalised output coordinates, origin top-left)", what, text));
+      fail(fmt::format("{} {} is outside 0..1 (normalised output coordinates, origin top-left)", what, printable(text)));
     return float(value);
   }
 
@@ -158,6 +161,8 @@ std::optional<int> keyFromName(std::string_view name) {
 
 InputScript parseInputScript(std::string_view text, std::string_view name) {
   InputScript script;
+  script.name = name;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark
   double previousTime = 0.0;
   size_t lineNumber = 0;
   while (!text.empty()) {
@@ -171,11 +176,13 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
 
     const LineParser parse(name, lineNumber);
     InputEvent event;
+    event.line = lineNumber;
     event.time = parse.number("time", word[0]);
-    if (event.time < 0.0) parse.fail(fmt::format("time {} is negative", word[0]));
+    if (event.time < 0.0) parse.fail(fmt::format("time {} is negative", printable(word[0])));
     if (event.time < previousTime)
       parse.fail(
-          fmt::format("time {} is before the previous event's {}; times must not decrease", word[0], previousTime));
+          fmt::format("time {} is before the previous event's {}; times must not decrease", printable(word[0]),
+                      previousTime));
     previousTime = event.time;
     if (word.size() < 2) parse.fail("expected a verb after the time: move, leave, down, up, wheel, key, hold, release or action");
 
@@ -193,13 +200,13 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       event.kind = InputEvent::Kind::Wheel;
       const double steps = parse.number("wheel steps", word[2]);
       if (std::abs(steps) > std::numeric_limits<float>::max())
-        parse.fail(fmt::format("wheel steps {} are out of range", word[2]));
+        parse.fail(fmt::format("wheel steps {} are out of range", printable(word[2])));
       event.wheel = float(steps);
     } else if (verb == "key" || verb == "hold" || verb == "release") {
       parse.expectArguments(verb, arguments, 1, " (NAME)");
       event.kind = verb == "key" ? InputEvent::Kind::Key : verb == "hold" ? InputEvent::Kind::Hold : InputEvent::Kind::Release;
       const std::optional<int> key = keyFromName(word[2]);
-      if (!key) parse.fail(fmt::format("unknown key '{}'; {}", word[2], keyHint(lowercase(word[2]))));
+      if (!key) parse.fail(fmt::format("unknown key '{}'; {}", printable(word[2]), keyHint(lowercase(word[2]))));
       event.key = *key;
     } else if (verb == "action") {
       if (arguments < 1) parse.fail("'action' takes the action's name, then its numbers");
@@ -208,33 +215,39 @@ InputScript parseInputScript(std::string_view text, std::string_view name) {
       for (size_t i = 3; i < word.size(); ++i) {
         const double value = parse.number("action argument", word[i]);
         if (std::abs(value) > std::numeric_limits<float>::max())
-          parse.fail(fmt::format("action argument {} is out of range", word[i]));
+          parse.fail(fmt::format("action argument {} is out of range", printable(word[i])));
         event.action.args.push_back(float(value));
       }
     } else {
       parse.fail(fmt::format("unknown verb '{}'; expected move, leave, down, up, wheel, key, hold, release or action",
-                             word[1]));
+                             printable(word[1])));
     }
     script.events.push_back(event);
   }
   return script;
 }
 
-InputScript loadInputScript(const std::filesystem::path& path) {
+std::string whereInScript(const InputScript& script, const InputEvent& event, std::string_view reason) {
+  return fmt::format("{}:{}: {}", printable(script.name), event.line, reason);
+}
+
+InputScript loadInputScript(const std::filesystem::path& path, std::string* text) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status))
-    throw Error(fmt::format("Cannot read input script {}: it does not exist.", path.string()));
+    throw Error(fmt::format("Cannot read input script {}: it does not exist.", printable(path.string())));
   if (!std::filesystem::is_regular_file(status))
-    throw Error(fmt::format("Cannot read input script {}: it is not a regular file.", path.string()));
+    throw Error(fmt::format("Cannot read input script {}: it is not a regular file.", printable(path.string())));
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxScriptBytes)
     throw Error(fmt::format("Cannot read input script {}: it is over 1 MiB; scripts are meant to be written by hand.",
-                            path.string()));
+                            printable(path.string())));
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error(fmt::format("Cannot read input script {}: it cannot be opened.", path.string()));
-  const std::string text(std::istreambuf_iterator<char>(file), {});
-  return parseInputScript(text, path.string());
+  if (!file) throw Error(fmt::format("Cannot read input script {}: it cannot be opened.", printable(path.string())));
+  std::string bytes(std::istreambuf_iterator<char>(file), {});
+  InputScript script = parseInputScript(bytes, path.string());
+  if (text) *text = std::move(bytes);
+  return script;
 }
 
 InputPlayer::InputPlayer(InputScript script) : script_(std::move(script)) {}

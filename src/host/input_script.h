@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <glm/vec2.hpp>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,17 +39,25 @@ struct InputEvent {
   float wheel = 0.0f;        // Wheel: steps
   int key = 0;               // Key: a GLFW key code
   ActionCall action;         // Action: checked against the scene when the run starts
+  size_t line = 0;           // where it was written, 1-based, for errors found later (a scene's actions)
 };
 
 struct InputScript {
   std::vector<InputEvent> events;  // in file order, so times never decrease
+  std::string name;                // what errors call the script: "NAME:LINE: reason"
 };
 
-// Throws vitrine::Error "NAME:LINE: reason" for the first malformed line; `name` labels the text.
+// Throws vitrine::Error "NAME:LINE: reason" for the first malformed line; `name` labels the text. A
+// UTF-8 byte-order mark at the start is skipped (editors on Windows write one); words quoted in an
+// error have their non-printable bytes written as \xNN.
 InputScript parseInputScript(std::string_view text, std::string_view name);
 
-// Reads and parses a script file. Refuses what is not a regular file, or is over 1 MiB.
-InputScript loadInputScript(const std::filesystem::path& path);
+// Reads and parses a script file. Refuses what is not a regular file, or is over 1 MiB. `text`, when
+// given, receives the file's bytes (a recording's manifest keeps their fingerprint).
+InputScript loadInputScript(const std::filesystem::path& path, std::string* text = nullptr);
+
+// "NAME:LINE: reason" for an event of `script`: how errors found after parsing name their line.
+std::string whereInScript(const InputScript& script, const InputEvent& event, std::string_view reason);
 
 // The GLFW key code for a key name of the script format, any case; nullopt when there is none.
 std::optional<int> keyFromName(std::string_view name);

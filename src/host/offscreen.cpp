@@ -24,7 +24,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
     for (const InputEvent& event : config.input->events)  // a wrong action fails before the first frame
       if (event.kind == InputEvent::Kind::Action)
         if (auto why = checkAction(*info, event.action); !why.empty())
-          throw Error(fmt::format("Input script at t={} s: {}", event.time, why));
+          throw Error(whereInScript(*config.input, event, fmt::format("at t={} s: {}", event.time, why)));
     player_.emplace(*config.input);
   }
   for (const std::string& preset : config.presets)

@@ -2,18 +2,22 @@
 // fixed steps of 1 / (fps x samples), so each frame averages `spp` samples spread over its interval
 // (motion blur and anti-aliasing at once). The simulation always runs from frame 0, writing only the
 // frames asked for that are not already there: a run resumes where an interrupted one stopped, and
-// frames A..B-1 rendered on one machine are bit for bit those a whole run renders (same driver).
+// frames A..B-1 rendered on one machine are bit for bit those a whole run renders (same driver). The
+// folder's record.json (host/record_manifest.h) keeps a resume from mixing in another film's frames.
 #include "audio/engine.h"
 #include "audio/wav.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "host/event_log.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
+#include "host/record_manifest.h"
 #include "image/image_io.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,10 +30,22 @@ std::filesystem::path framePath(const std::filesystem::path& folder, uint32_t fr
   return folder / fmt::format("frame_{:06d}.{}", frame, format);
 }
 
-// A frame written before is complete: every write goes through a temporary file renamed into place.
-bool alreadyWritten(const std::filesystem::path& path) {
+// Frame files in the folder, and the names of those a resumed run keeps.
+bool holdsFrames(const std::filesystem::path& folder) {
   std::error_code ec;
-  return std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > 0 && !ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+    if (entry.path().filename().string().starts_with("frame_")) return true;
+  return false;
+}
+
+// A frame a resumed run may keep: a file that decodes whole at the film's size. Every write goes through
+// a temporary renamed into place, but a frame cut short by an older version on a full disk, or copied
+// in part, is rendered again rather than trusted for being there.
+enum class Found { Nothing, Whole, Broken };
+Found existingFrame(const std::filesystem::path& path, VkExtent2D size) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return Found::Nothing;
+  return isWholeImage(path, size.width, size.height) ? Found::Whole : Found::Broken;
 }
 
 // Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (logs).
@@ -69,11 +85,15 @@ int runRecord(const Options& options) {
   std::filesystem::create_directories(folder, ec);
   if (!std::filesystem::is_directory(folder, ec))
     throw Error(fmt::format("Cannot record into {}: it is not a folder that can be made.", folder.string()));
+  checkWritableFolder(folder);  // a read-only folder or full disk is found before anything renders
   const uint32_t frames = std::max(1u, uint32_t(std::lround(options.seconds * options.fps)));
   const uint32_t first = options.range ? options.range->first : 0;
   const uint32_t end = options.range ? std::min(options.range->second, frames) : frames;
   if (first >= end)
     throw Error(fmt::format("--range {}:{} holds no frame of the film's {}.", first, end, frames));
+  // Temporary frames of writers that were killed (SIGKILL, a power cut) never reach their rename.
+  for (const auto& stale : removeStaleTemporaries(folder))
+    std::fprintf(stderr, "vitrine: removed %s, left by a writer that died\n", stale.filename().c_str());
 
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
@@ -81,19 +101,32 @@ int runRecord(const Options& options) {
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
   config.step = 1.0 / (options.fps * double(options.spp));
-  if (!options.input.empty()) config.input = loadInputScript(options.input);
+  std::string inputText;
+  if (!options.input.empty()) config.input = loadInputScript(options.input, &inputText);
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);
   audio::OfflineAudio sound(options.time);
   config.audio = &sound;
 
-  uint32_t written = 0;
+  uint32_t written = 0, redone = 0;
   {
     Offscreen offscreen(device, config);
+    RecordManifest manifest{options.scene, config.size.width, config.size.height, options.fps, options.spp,
+                            options.seed, options.time, options.reducedMotion, options.format,
+                            options.input.empty() ? std::string() : fingerprint(inputText),
+                            params::snapshot(offscreen.parameters(), false)};
+    std::sort(manifest.values.begin(), manifest.values.end());
+    claimFolder(folder, manifest, holdsFrames(folder));
     Progress progress(end - first);
     for (uint32_t frame = 0; frame < end; ++frame) {
       const std::filesystem::path path = framePath(folder, frame, options.format);
-      const bool wanted = frame >= first && !alreadyWritten(path);
+      const Found found = frame >= first ? existingFrame(path, config.size) : Found::Whole;
+      const bool wanted = found != Found::Whole;
+      if (found == Found::Broken) {
+        std::fprintf(stderr, "vitrine: %s is not a whole %ux%u frame; rendering it again\n", path.filename().c_str(),
+                     config.size.width, config.size.height);
+        ++redone;
+      }
       ImageRgba sum;
       for (uint32_t sample = 0; sample < options.spp; ++sample) {
         offscreen.renderFrame();
@@ -104,7 +137,7 @@ int runRecord(const Options& options) {
       }
       if (wanted) {
         for (float& v : sum.pixels) v /= float(options.spp);
-        writeImage(path, sum);
+        writeImage(path, sum);  // throws, naming the system's reason, when the disk does not take it whole
         ++written;
       }
       if (frame >= first) progress.update(frame - first + 1, written);
@@ -114,8 +147,8 @@ int runRecord(const Options& options) {
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
   if (whole && sound.commandCount() > 0) audio::writeWav(folder / "audio.wav", sound.render(double(frames) / options.fps));
-  std::printf("recorded %u of frames %u..%u into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
-              written, first, end - 1, folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
+  std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
+              written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
               options.fps, options.spp, options.scene.c_str(), device.properties().deviceName);
   if (instance.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());

@@ -8,11 +8,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <string>
 #include <system_error>
 
 #include "core/error.h"
+#include "core/printable.h"
+#include "image/image_io.h"
 
 namespace vitrine {
 namespace {
@@ -40,16 +43,18 @@ thread_local std::string exrComplaint;
 
 void keepExrComplaint(exr_const_context_t, exr_result_t code, const char* message) {
   if (!exrComplaint.empty()) return;
-  std::string text;
-  for (const char* c = message ? message : ""; *c; ++c) {
-    const auto byte = static_cast<unsigned char>(*c);
-    if (byte >= 0x20 && byte < 0x7f) text += *c;
-    else text += fmt::format("\\x{:02x}", byte);
-  }
-  exrComplaint = fmt::format("{} ({})", text, exr_get_error_code_as_string(code));
+  exrComplaint = fmt::format("{} ({})", printable(message ? message : ""), exr_get_error_code_as_string(code));
 }
 
 }  // namespace
+
+std::optional<ImageFormat> imageFormatFromName(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".exr") return ImageFormat::Exr;
+  if (ext == ".png") return ImageFormat::Png;
+  return std::nullopt;
+}
 
 std::string_view sniffImageFormat(std::span<const unsigned char> head) {
   using namespace std::string_view_literals;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,9 +16,19 @@ namespace vitrine {
 // Text attributes for a written file's header (EXR) or text chunks (PNG): name, value.
 using ImageNotes = std::vector<std::pair<std::string, std::string>>;
 
-// Writes linear half-float EXR, or 8-bit sRGB PNG when the name ends in .png, through a temporary
-// file renamed into place, so a reader never sees half a file. Throws vitrine::Error.
+enum class ImageFormat { Exr, Png };
+// The format a file's name asks for, decided here only: its extension in any case (".exr", ".Png");
+// nothing for any other name. Options, headless runs and the writers all ask this.
+std::optional<ImageFormat> imageFormatFromName(const std::filesystem::path& path);
+
+// Writes linear half-float EXR, or 8-bit sRGB PNG when imageFormatFromName says PNG: encoded in
+// memory, then written through a temporary file, every byte checked on disk before it is renamed into
+// place (writeFileAtomically), so a reader never sees half a file and a full disk is an error with
+// the system's reason, the old file left as it was. Throws vitrine::Error.
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes = {});
+// True when `path` decodes whole as an image of width x height (a frame a resumed recording may keep):
+// false for a truncated, corrupt or differently sized file, or one this build cannot read.
+bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t height);
 // Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error, naming the path, for
 // anything but a regular file that starts like an EXR (a device, a folder, a PNG named .exr).
 ImageRgba readImage(const std::filesystem::path& path);

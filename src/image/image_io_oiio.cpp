@@ -1,6 +1,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/filesystem.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -37,9 +38,10 @@ OIIO::ImageBuf openFresh(const std::filesystem::path& path) {
 bool canWritePng() { return true; }
 
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
-  namespace OIIO = OIIO;
-  const std::string ext = path.extension().string();
-  const bool png = ext == ".png" || ext == ".PNG";
+  const std::optional<ImageFormat> format = imageFormatFromName(path);
+  if (!format)
+    throw Error(fmt::format("Cannot write {}: name it .exr (linear half float) or .png (8-bit sRGB).", path.string()));
+  const bool png = *format == ImageFormat::Png;
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
   for (const auto& [name, value] : notes) spec.attribute(name, value);
   OIIO::ImageBuf buffer(spec, const_cast<float*>(image.pixels.data()));
@@ -52,10 +54,29 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image, const
     encoded.copy(buffer);
     encoded.set_write_format(OIIO::TypeDesc::HALF);
   }
-  replaceAtomically(path, [&](const std::filesystem::path& temporary) {
-    if (!encoded.write(temporary.string()))
-      throw Error(fmt::format("Cannot write {}: {}", path.string(), encoded.geterror()));
-  });
+  // Encoded in memory: OpenImageIO's PNG writer does not check its writes (on a full disk it reported
+  // success for a file cut short), so the bytes go to the disk through writeFileAtomically, which does.
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  encoded.set_write_ioproxy(&memory);
+  if (!encoded.write(path.string(), OIIO::TypeUnknown, png ? "png" : "openexr"))
+    throw Error(fmt::format("Cannot write {}: {}", path.string(), encoded.geterror()));
+  writeFileAtomically(path, bytes);
+}
+
+bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t height) {
+  try {
+    if (startsLikeExr(path)) checkExrHeader(path);
+    OIIO::ImageBuf buffer = openFresh(path);
+    // A truncated file fails the read (its last rows are missing), a corrupt one the decode.
+    const bool read = buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT);
+    const bool whole = read && !buffer.has_error() && buffer.spec().width == int(width) &&
+                       buffer.spec().height == int(height);
+    (void)readError(buffer);  // forget what OpenImageIO kept of the failure
+    return whole;
+  } catch (const Error&) {
+    return false;
+  }
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 // already carries for FreeType and costs next to nothing.
 #include <ImfArray.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfRgbaFile.h>
 #include <ImfStringAttribute.h>
 #include <fmt/format.h>
@@ -18,6 +19,8 @@
 #include <fstream>
 #include <memory>
 
+#include <cstring>
+
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "image/image_file.h"
@@ -26,12 +29,6 @@
 namespace vitrine {
 
 namespace {
-
-bool hasExtension(const std::filesystem::path& path, std::string_view lower) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == lower;
-}
 
 Picture readPng(const std::filesystem::path& path) {
   png_image image{};
@@ -148,37 +145,79 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   return fitWithin(std::move(picture), maxSide);
 }
 
+namespace {
+
+// OpenEXR's output stream into memory: the bytes then go to the disk through writeFileAtomically,
+// which checks each write (OpenEXR's own file stream says only "File output failed").
+class MemoryStream final : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (at_ + uint64_t(n) > bytes.size()) bytes.resize(at_ + uint64_t(n));
+    std::memcpy(bytes.data() + at_, c, size_t(n));
+    at_ += uint64_t(n);
+  }
+  uint64_t tellp() override { return at_; }
+  void seekp(uint64_t pos) override { at_ = pos; }
+  std::vector<unsigned char> bytes;
+
+ private:
+  uint64_t at_ = 0;
+};
+
+}  // namespace
+
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
-  // libpng's simplified API writes no text chunks: a PNG from this build carries no notes.
-  if (hasExtension(path, ".png")) {
+  const std::optional<ImageFormat> format = imageFormatFromName(path);
+  if (!format)
+    throw Error(fmt::format("Cannot write {}: name it .exr (linear half float) or .png (8-bit sRGB).", path.string()));
+  if (*format == ImageFormat::Png) {  // libpng's simplified API writes no text: such a PNG has no notes
     std::vector<uint8_t> encoded(image.pixels.size());
     for (size_t i = 0; i < encoded.size(); ++i)
       encoded[i] = uint8_t(std::lround(255.0f * (i % 4 == 3 ? std::clamp(image.pixels[i], 0.0f, 1.0f)
                                                             : linearToSrgb(image.pixels[i]))));
-    replaceAtomically(path, [&](const std::filesystem::path& temporary) {
-      png_image png{};
-      png.version = PNG_IMAGE_VERSION;
-      png.width = image.width, png.height = image.height, png.format = PNG_FORMAT_RGBA;
-      if (!png_image_write_to_file(&png, temporary.c_str(), 0, encoded.data(), 0, nullptr))
-        throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
-    });
+    // Into memory (asked for its size first), then to the disk through writeFileAtomically, which
+    // checks every write.
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = image.width, png.height = image.height, png.format = PNG_FORMAT_RGBA;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&png, nullptr, &size, 0, encoded.data(), 0, nullptr))
+      throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
+    std::vector<unsigned char> bytes(size);
+    if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, encoded.data(), 0, nullptr))
+      throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
+    bytes.resize(size);
+    writeFileAtomically(path, bytes);
     return;
   }
-  replaceAtomically(path, [&](const std::filesystem::path& temporary) {
-    try {
-      std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
-      for (size_t i = 0; i < half.size(); ++i)
-        half[i] =
-            Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
-      Imf::Header header(int(image.width), int(image.height));
-      for (const auto& [name, value] : notes) header.insert(name, Imf::StringAttribute(value));
-      Imf::RgbaOutputFile file(temporary.c_str(), header, Imf::WRITE_RGBA);
-      file.setFrameBuffer(half.data(), 1, image.width);
-      file.writePixels(int(image.height));
-    } catch (const std::exception& e) {
-      throw Error(fmt::format("Cannot write {}: {}", path.string(), e.what()));
+  MemoryStream memory;
+  try {
+    std::vector<Imf::Rgba> half(size_t(image.width) * image.height);
+    for (size_t i = 0; i < half.size(); ++i)
+      half[i] = Imf::Rgba(image.pixels[i * 4], image.pixels[i * 4 + 1], image.pixels[i * 4 + 2], image.pixels[i * 4 + 3]);
+    Imf::Header header(int(image.width), int(image.height));
+    for (const auto& [name, value] : notes) header.insert(name, Imf::StringAttribute(value));
+    Imf::RgbaOutputFile file(memory, header, Imf::WRITE_RGBA);
+    file.setFrameBuffer(half.data(), 1, image.width);
+    file.writePixels(int(image.height));
+  } catch (const std::exception& e) {
+    throw Error(fmt::format("Cannot write {}: {}", path.string(), e.what()));
+  }
+  writeFileAtomically(path, memory.bytes);
+}
+
+bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t height) {
+  try {
+    if (startsLikeExr(path)) {
+      const ImageRgba image = readImage(path);
+      return image.width == width && image.height == height;
     }
-  });
+    const Picture picture = readPicture(path, 0);  // 0: at its own size
+    return picture.width == width && picture.height == height;
+  } catch (const Error&) {
+    return false;
+  }
 }
 
 ImageRgba readImage(const std::filesystem::path& path) {

@@ -5,6 +5,8 @@
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/scene.h"
 
+#include "core/printable.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -28,7 +30,7 @@ std::string checkAction(const SceneInfo& info, const ActionCall& call) {
   if (!action) {
     std::string known;
     for (const auto& a : info.actions) known += fmt::format("{}{}", known.empty() ? "" : ", ", a.name);
-    return fmt::format("scene {} has no action '{}' ({})", info.name, call.name,
+    return fmt::format("scene {} has no action '{}' ({})", info.name, printable(call.name),
                        known.empty() ? "it has none" : "it has " + known);
   }
   if (call.args.size() != action->args.size())

@@ -7,8 +7,8 @@
 namespace vitrine {
 
 const EventValue* SceneEvent::find(std::string_view key) const {
-  for (const auto& [name, value] : values)
-    if (name == key) return &value;
+  for (const auto& [valueName, value] : values)
+    if (valueName == key) return &value;
   return nullptr;
 }
 

@@ -17,7 +17,7 @@ test "$(stat -c %Y.%s "$out/whole/frame_000004.exr")" = "$stamp"
 test -s "$out/whole/frame_000002.exr" && test -s "$out/whole/frame_000007.exr"
 # A range on its own: the same pixels as the whole run.
 "$vitrine" "${common[@]}" --range 3:6 --out "$out/part" | grep -q "recorded 3 of frames 3..5"
-test "$(ls "$out/part")" = "$(printf 'frame_000003.exr\nframe_000004.exr\nframe_000005.exr')"
+test "$(ls "$out/part")" = "$(printf 'frame_000003.exr\nframe_000004.exr\nframe_000005.exr\nrecord.json')"
 for f in 3 4 5; do
   "$vitrine" compare "$out/whole/frame_00000$f.exr" "$out/part/frame_00000$f.exr" | grep -q "max difference 0.00000"
 done

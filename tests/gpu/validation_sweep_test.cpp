@@ -67,7 +67,7 @@ std::vector<const SceneInfo*> everyScene() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ValidationSweep, ::testing::ValuesIn(everyScene()),
-                         [](const auto& info) { return std::string(info.param->name); });
+                         [](const auto& test) { return std::string(test.param->name); });
 
 }  // namespace
 }  // namespace vitrine::test

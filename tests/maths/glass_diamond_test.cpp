@@ -174,8 +174,8 @@ TEST_P(Facet, IsOnTheSurfaceAtTheCentreOfItsCorners) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllPlanes, Facet, ::testing::Range(0, kDiamondPlanes),
-                         [](const ::testing::TestParamInfo<int>& info) {
-                           std::string name = stone().names[info.param];
+                         [](const ::testing::TestParamInfo<int>& test) {
+                           std::string name = stone().names[test.param];
                            for (char& c : name)
                              if (c == ' ') c = '_';
                            return name;
@@ -569,9 +569,9 @@ TEST_P(Walk, ReflectsTotallyExactlyBeyondTheCriticalAngle) {
 INSTANTIATE_TEST_SUITE_P(Budgets, Walk,
                          ::testing::Values(WalkCase{1, false}, WalkCase{6, false}, WalkCase{32, false},
                                            WalkCase{1, true}, WalkCase{6, true}, WalkCase{32, true}),
-                         [](const ::testing::TestParamInfo<WalkCase>& info) {
-                           return std::string(info.param.physical ? "Physical" : "Seed") +
-                                  std::to_string(info.param.maxBounces);
+                         [](const ::testing::TestParamInfo<WalkCase>& test) {
+                           return std::string(test.param.physical ? "Physical" : "Seed") +
+                                  std::to_string(test.param.maxBounces);
                          });
 
 TEST(DiamondWalk, CriticalAngleOfDiamond) {

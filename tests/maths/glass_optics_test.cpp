@@ -233,7 +233,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(CatalogueLine{"h", glass::kLambdaH, 1.53024f}, CatalogueLine{"g", glass::kLambdaG, 1.52668f},
                       CatalogueLine{"F", glass::kLambdaF, 1.52238f}, CatalogueLine{"e", glass::kLambdaE, 1.51872f},
                       CatalogueLine{"d", glass::kLambdaD, 1.51680f}, CatalogueLine{"C", glass::kLambdaC, 1.51432f}),
-    [](const auto& info) { return std::string(info.param.name); });
+    [](const auto& test) { return std::string(test.param.name); });
 
 TEST(Sellmeier, CatalogueIndices) {
   EXPECT_NEAR(glass::sellmeierIor(glass::kLambdaD, glass::kSellmeierFusedSilica), 1.4585f, 1e-4f);
@@ -315,7 +315,7 @@ INSTANTIATE_TEST_SUITE_P(
                       CieRow{620, 0.854450f, 0.381000f, 0.000190f}, CieRow{640, 0.447900f, 0.175000f, 0.000020f},
                       CieRow{660, 0.164900f, 0.061000f, 0.0f}, CieRow{680, 0.046770f, 0.017000f, 0.0f},
                       CieRow{700, 0.011359f, 0.004102f, 0.0f}),
-    [](const auto& info) { return std::to_string(info.param.lambda) + "nm"; });
+    [](const auto& test) { return std::to_string(test.param.lambda) + "nm"; });
 
 glm::dvec3 integrateCie(int from, int to) {
   glm::dvec3 sum(0.0);
@@ -475,7 +475,7 @@ TEST_P(SampleCountTest, JitteredWeightsAverageToTheIntegral) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Allowed, SampleCountTest, ::testing::ValuesIn(glass::kSampleCounts),
-                         [](const auto& info) { return "N" + std::to_string(info.param); });
+                         [](const auto& test) { return "N" + std::to_string(test.param); });
 
 TEST(Sampling, AllowedCounts) {
   EXPECT_EQ(glass::kSampleCounts, (std::array<int, 5>{3, 8, 16, 32, 64}));
@@ -653,7 +653,7 @@ TEST_P(InterfaceTest, ReflectionMirrorsAboutTheNormal) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Etas, InterfaceTest, ::testing::Values(1.333f, 1.5f, 2.4175f, 1.0f / 1.5f, 1.0f / 2.4175f),
-                         [](const auto& info) { return "eta" + std::to_string(int(std::lround(info.param * 1e4f))); });
+                         [](const auto& test) { return "eta" + std::to_string(int(std::lround(test.param * 1e4f))); });
 
 TEST(Fresnel, SchlickIsCloseToExactForGlass) {
   float worst = 0.0f;

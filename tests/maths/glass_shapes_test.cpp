@@ -250,7 +250,7 @@ TEST_P(Shape, EnterMissesRaysPassingBeside) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, Shape, ::testing::ValuesIn(shapeCases()),
-                         [](const ::testing::TestParamInfo<ShapeCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<ShapeCase>& test) { return test.param.name; });
 
 // --- Exact distances on known points.
 
@@ -512,7 +512,7 @@ TEST_P(Rotation, SlowAndGentle) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Animations, Rotation, ::testing::ValuesIn(rotationCases()),
-                         [](const ::testing::TestParamInfo<RotationCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<RotationCase>& test) { return test.param.name; });
 
 // The stone's table normal (object +z) seen in the world: R maps world to object, so its transpose.
 glm::vec3 tableNormalInWorld(DiamondView view, float t) {

@@ -2,7 +2,10 @@
 #include "core/error.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <atomic>
 #include <fstream>
@@ -142,6 +145,63 @@ TEST_F(AtomicFile, AFailingWriterLeavesTheOldFileAndNoTemporary) {
                Error);
   EXPECT_EQ(readAll(target), "old");
   EXPECT_EQ(entries(), std::vector<std::string>{"keep.txt"});
+}
+
+TEST_F(AtomicFile, WriteFileAtomicallyPutsEveryByteInPlace) {
+  const auto target = folder_ / "bytes.bin";
+  writeText(target, "old");
+  std::vector<unsigned char> bytes(100000);
+  for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 7);
+  writeFileAtomically(target, bytes);
+  const std::string back = readAll(target);
+  ASSERT_EQ(back.size(), bytes.size());
+  EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), back.begin(),
+                         [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); }));
+  EXPECT_EQ(entries(), std::vector<std::string>{"bytes.bin"});
+}
+
+// A writer killed between creating its temporary and renaming it (SIGKILL, a power cut) leaves the
+// temporary: the next run removes it, but never the temporary of a writer that is still alive.
+TEST_F(AtomicFile, StaleTemporariesOfDeadWritersAreRemovedAndLiveOnesKept) {
+  const auto target = folder_ / "frame_000001.exr";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // dies in the middle of its write, as a killed recording does
+    replaceAtomically(target, [](const std::filesystem::path& temporary) {
+      std::ofstream(temporary) << "half a frame";
+      ::_exit(0);
+    });
+    ::_exit(1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_EQ(WEXITSTATUS(status), 0);
+  ASSERT_EQ(entries().size(), 1u) << "the dead writer left its temporary";
+  writeText(folder_ / ".notes.txt", "not a temporary");  // a hidden file of someone else's: kept
+  std::vector<std::filesystem::path> removedWhileAlive;
+  replaceAtomically(folder_ / "frame_000002.exr", [&](const std::filesystem::path& temporary) {
+    writeText(temporary, "a whole frame");
+    removedWhileAlive = removeStaleTemporaries(folder_);  // this writer is alive: its temporary stays
+    EXPECT_TRUE(std::filesystem::exists(temporary));
+  });
+  ASSERT_EQ(removedWhileAlive.size(), 1u);
+  EXPECT_EQ(removedWhileAlive[0].parent_path(), folder_);
+  EXPECT_TRUE(removedWhileAlive[0].filename().string().starts_with(".frame_000001.exr."));
+  std::vector<std::string> names = entries();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{".notes.txt", "frame_000002.exr"}));
+  EXPECT_TRUE(removeStaleTemporaries(folder_).empty());
+}
+
+TEST_F(AtomicFile, AFolderThatCannotBeWrittenIsFoundBeforeAnyWork) {
+  EXPECT_NO_THROW(checkWritableFolder(folder_));
+  EXPECT_TRUE(entries().empty()) << "the probe was left behind";
+  try {
+    checkWritableFolder(folder_ / "missing");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -37,6 +37,25 @@ TEST(GoldenLowPass, BoxFilterAveragesBlocksAndPartialEdgeBlocks) {
   EXPECT_FLOAT_EQ(small.at(1, 0)[1], 0.25f);  // the partial block holds 2 pixels
 }
 
+// The summary a failing low-passed golden prints: it once read a local `blocks` inside that local's own
+// initialiser instead of the member (std::bad_alloc at -O2, so the failure could not report itself).
+TEST(GoldenLowPass, AFailingLowPassedSummaryNamesItsBlocks) {
+  ImageRgba image{16, 16, std::vector<float>(16 * 16 * 4, 0.5f)};
+  ImageRgba darker = image;
+  for (uint32_t y = 0; y < 8; ++y)
+    for (uint32_t x = 0; x < 8; ++x) darker.at(x, y)[0] = 0.2f;  // one block of four, 0.3 darker in red
+  CompareThresholds thresholds = chaoticStage(8);
+  thresholds.hardLimit = 1.0f;
+  thresholds.failFraction = 1.0;
+  const CompareResult result = compareImages(image, darker, thresholds);
+  ASSERT_FALSE(result.passed);
+  ASSERT_EQ(result.blocks, 4u);
+  ASSERT_EQ(result.failingBlocks, 1u);
+  const std::string summary = result.summary();
+  EXPECT_NE(summary.find("FAIL: 64 failing pixels"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(", 1 of 4 blocks failing low-passed (max difference 0.30000)"), std::string::npos) << summary;
+}
+
 TEST(GoldenLowPass, SparkleFlipsPassBothComparisons) {
   ImageRgba flipped = golden();
   std::mt19937 random(7);

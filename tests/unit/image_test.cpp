@@ -139,7 +139,9 @@ TEST_F(ImageFiles, AFileReplacedUnderTheSameNameIsReadAsItIsNow) {
         EXPECT_EQ(picture.width, 8u) << format;
         EXPECT_EQ(picture.height, 6u) << format;
       }
-      if (std::string_view(format) == "exr") EXPECT_EQ(readImage(path).width, i == 2 ? 8u : 7u);
+      if (std::string_view(format) == "exr") {
+        EXPECT_EQ(readImage(path).width, i == 2 ? 8u : 7u);
+      }
     }
   }
 }
@@ -193,6 +195,50 @@ TEST(ImageFormat, SniffsTheCommonFormats) {
   EXPECT_EQ(sniff("RIFF\0\0\0\0WEBPVP8 "sv), "WebP");
   EXPECT_EQ(sniff("\x76\x2f"sv), "");  // too short to tell
   EXPECT_EQ(sniff("hello"sv), "");
+}
+
+TEST(ImageFormat, OnePlaceDecidesTheFormatFromTheNameInAnyCase) {
+  EXPECT_EQ(imageFormatFromName("a/x.exr"), ImageFormat::Exr);
+  EXPECT_EQ(imageFormatFromName("x.EXR"), ImageFormat::Exr);
+  EXPECT_EQ(imageFormatFromName("x.Png"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatFromName("x.pNg"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatFromName("x.png.bak"), std::nullopt);
+  EXPECT_EQ(imageFormatFromName("png"), std::nullopt);
+  EXPECT_EQ(imageFormatFromName("x.jpg"), std::nullopt);
+}
+
+// `--out x.Png` once wrote linear values into an sRGB PNG (too dark): the writer asked for ".png" or
+// ".PNG" only. Linear 0.2 is sRGB 124 of 255, not 51.
+TEST_F(ImageFiles, AMixedCasePngNameGetsSrgbPixels) {
+  if (!canWritePng()) GTEST_SKIP() << "this build writes EXR only";
+  for (const char* name : {"lower.png", "mixed.Png", "upper.PNG"}) {
+    const auto path = folder_ / name;
+    ImageRgba grey = flat(4, 2, 0.2f);
+    for (size_t i = 3; i < grey.pixels.size(); i += 4) grey.pixels[i] = 1.0f;  // opaque: PNG alpha is straight
+    writeImage(path, grey);
+    const Picture picture = readPicture(path, 16);
+    ASSERT_EQ(picture.width, 4u) << name;
+    EXPECT_NEAR(int(picture.rgba[0]), 124, 1) << name;
+  }
+}
+
+// A resumed recording keeps only frames that decode whole at the film's size.
+TEST_F(ImageFiles, AWholeImageIsToldFromATruncatedOrResizedOne) {
+  for (const char* name : {"frame.exr", "frame.png"}) {
+    if (std::string_view(name).ends_with(".png") && !canWritePng()) continue;
+    const auto path = folder_ / name;
+    ImageRgba image = flat(64, 36, 0.0f);
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float((i * 2654435761u) % 1000) / 1000.0f;
+    writeImage(path, image);
+    EXPECT_TRUE(isWholeImage(path, 64, 36)) << name;
+    EXPECT_FALSE(isWholeImage(path, 32, 18)) << name << ": another film's size";
+    const auto bytes = std::filesystem::file_size(path);
+    std::filesystem::resize_file(path, bytes * 2 / 3);  // cut short, as on a full disk
+    EXPECT_FALSE(isWholeImage(path, 64, 36)) << name << " cut to " << bytes * 2 / 3 << " of " << bytes << " bytes";
+    std::filesystem::resize_file(path, 0);
+    EXPECT_FALSE(isWholeImage(path, 64, 36)) << name;
+  }
+  EXPECT_FALSE(isWholeImage(folder_ / "missing.exr", 64, 36));
 }
 
 }  // namespace

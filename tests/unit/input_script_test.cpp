@@ -299,6 +299,35 @@ TEST(InputScript, ActionsCarryTheirNumbersToTheirStep) {
   EXPECT_EQ(errorOf("0 action release 1e300"), "s.txt:1: action argument 1e300 is out of range");
 }
 
+// Editors on Windows begin a UTF-8 file with a byte-order mark: the first line is still read.
+TEST(InputScript, AcceptsAUtf8ByteOrderMark) {
+  const InputScript script = parseInputScript("\xEF\xBB\xBF" "0.5 down\n1 up\n", "bom.txt");
+  ASSERT_EQ(script.events.size(), 2u);
+  EXPECT_EQ(script.events[0].kind, Kind::Down);
+  EXPECT_DOUBLE_EQ(script.events[0].time, 0.5);
+}
+
+// Words quoted in errors come from the file: control bytes (an escape sequence that would rewrite the
+// terminal, a NUL) are written as \xNN, never sent raw.
+TEST(InputScript, ErrorsNeverEchoRawControlBytes) {
+  EXPECT_EQ(errorOf("0 cl\x1b[2Jick"), "s.txt:1: unknown verb 'cl\\x1b[2Jick'; expected move, leave, down, up, "
+                                        "wheel, key, hold, release or action");
+  EXPECT_TRUE(errorOf("0 key \x07").starts_with("s.txt:1: unknown key '\\x07'; ")) << errorOf("0 key \x07");
+  EXPECT_EQ(errorOf(std::string_view("\x01\x00 down", 7)), "s.txt:1: time '\\x01\\x00' is not a number");
+  for (const std::string& text : {errorOf("0 \x1b]0;pwned\x07"), errorOf("0 move \x9b 0.5")})
+    for (const char c : text) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << text;
+}
+
+// Unknown actions are found when the scene is known, after parsing: the error still names FILE:LINE.
+TEST(InputScript, EventsKnowTheirLineForLaterErrors) {
+  const InputScript script = parseInputScript("# a drag\n0.1 move 0.5 0.5\n\n0.5 action release 1 2\n", "drag.txt");
+  ASSERT_EQ(script.events.size(), 2u);
+  EXPECT_EQ(script.events[0].line, 2u);
+  EXPECT_EQ(script.events[1].line, 4u);
+  EXPECT_EQ(whereInScript(script, script.events[1], "scene kifs has no action 'release' (it has none)"),
+            "drag.txt:4: scene kifs has no action 'release' (it has none)");
+}
+
 TEST(SceneActions, CheckedAgainstTheirDeclaration) {
   const SceneInfo& neon = *findScene("neon");
   EXPECT_EQ(checkAction(neon, {"release", {0.0f, 6.0f, 4.0f}}), "");
@@ -307,6 +336,7 @@ TEST(SceneActions, CheckedAgainstTheirDeclaration) {
   EXPECT_EQ(checkAction(neon, {"explode", {}}), "scene neon has no action 'explode' (it has release)");
   EXPECT_EQ(checkAction(*findScene("kifs"), {"release", {}}), "scene kifs has no action 'release' (it has none)");
   EXPECT_EQ(checkAction(*findScene("glass"), {"shuffle", {}}), "");
+  EXPECT_EQ(checkAction(neon, {"ex\x1bplode", {}}), "scene neon has no action 'ex\\x1bplode' (it has release)");
 }
 
 }  // namespace

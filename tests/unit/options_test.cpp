@@ -42,8 +42,8 @@ TEST(OptionsNumbers, TimeMustBeFinite) {
     EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--time", bad, "--out", "x.exr"}),
               fmt::format("--time expects a finite number of seconds, not '{}'.", bad));
   EXPECT_EQ(refusal({"--time", "soon"}), "--time expects a finite number of seconds, not 'soon'.");
-  EXPECT_DOUBLE_EQ(parse({"--time", "-1.5"}).time, -1.5);
-  EXPECT_DOUBLE_EQ(parse({"--time", "1e3"}).time, 1000.0);
+  EXPECT_DOUBLE_EQ(parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--time", "-1.5"}).time, -1.5);
+  EXPECT_DOUBLE_EQ(parse({"record", "--scene", "kifs", "--out", "f", "--seconds", "1", "--time", "1e3"}).time, 1000.0);
 }
 
 TEST(OptionsNumbers, WholeNumbersNameTheirRange) {
@@ -57,7 +57,7 @@ TEST(OptionsNumbers, WholeNumbersNameTheirRange) {
   EXPECT_EQ(refusal({"bench", "--warmup", "-3", "--json", "b.json"}),
             "--warmup expects a whole number from 0 to 4294967295, not '-3'.");
   EXPECT_EQ(parse({"--seed", "4294967295"}).seed, 4294967295u);
-  EXPECT_EQ(parse({"--frames", "4294967295"}).frames, 4294967295u);
+  EXPECT_EQ(parse({"bench", "--json", "b.json", "--frames", "4294967295"}).frames, 4294967295u);
   EXPECT_EQ(parse({"bench", "--warmup", "0", "--json", "b.json"}).warmup, 0u);
 }
 
@@ -86,7 +86,7 @@ TEST(OptionsValues, AnOptionIsNotTakenAsTheValueOfTheOneBefore) {
             "--out needs a value, but got the option --size.");
   EXPECT_EQ(refusal({"--scene", "--headless"}), "--scene needs a value, but got the option --headless.");
   EXPECT_EQ(refusal({"--seed"}), "--seed needs a value; see vitrine --help.");
-  EXPECT_DOUBLE_EQ(parse({"--time", "-2"}).time, -2.0);  // a negative number is a value
+  EXPECT_DOUBLE_EQ(parse({"bench", "--json", "b.json", "--time", "-2"}).time, -2.0);  // a negative number is a value
 }
 
 TEST(OptionsValues, HeadlessWritesExrOrPng) {
@@ -96,6 +96,50 @@ TEST(OptionsValues, HeadlessWritesExrOrPng) {
   for (const char* good : {"x.exr", "x.png", "dir/x.EXR", "x.PNG"})
     EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", good}), "accepted") << good;
   EXPECT_EQ(refusal({"bench", "--json", "timings.txt"}), "accepted");  // any name for the JSON
+}
+
+TEST(OptionsValues, TheFormatIsDecidedByTheNameInAnyCase) {
+  for (const char* good : {"x.Png", "x.pNG", "x.Exr"})
+    EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", good}), "accepted") << good;
+}
+
+// ------------------------------------------------------------------------------- modes and repeats
+
+// A flag that does nothing in a mode was once taken and ignored: `--headless --fps 10` rendered at 60
+// frames a second, `--headless --json x.exr` wrote x.exr. Each is refused, naming the mode.
+TEST(OptionsModes, AFlagOutsideItsModeIsRefusedNamingTheMode) {
+  auto headless = [](std::vector<const char*> extra) {
+    std::vector<const char*> args{"--headless", "--scene", "kifs", "--out", "x.exr"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return refusal(args);
+  };
+  EXPECT_EQ(headless({"--fps", "10"}), "--fps is only for record runs, not --headless.");
+  EXPECT_EQ(headless({"--spp", "4"}), "--spp is only for record runs, not --headless.");
+  EXPECT_EQ(headless({"--range", "0:3"}), "--range is only for record runs, not --headless.");
+  EXPECT_EQ(headless({"--seconds", "2"}), "--seconds is only for record runs, not --headless.");
+  EXPECT_EQ(headless({"--format", "png"}), "--format is only for record runs, not --headless.");
+  EXPECT_EQ(headless({"--warmup", "3"}), "--warmup is only for bench runs, not --headless.");
+  EXPECT_EQ(headless({"--kiosk"}), "--kiosk is only for the gallery, not --headless.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--json", "x.exr"}), "--json is only for bench runs, not --headless.");
+  EXPECT_EQ(refusal({"bench", "--scene", "kifs", "--out", "b.json"}),
+            "--out is only for --headless and record runs, not bench.");
+  EXPECT_EQ(refusal({"record", "--scene", "kifs", "--seconds", "1", "--out", "f", "--frames", "3"}),
+            "--frames is only for --headless and bench runs, not record.");
+  EXPECT_EQ(refusal({"--frames", "3"}), "--frames is only for --headless and bench runs, not the gallery.");
+  EXPECT_EQ(refusal({"bench", "--json", "b.json", "--remote"}), "--remote is only for the gallery and --headless runs, not bench.");
+  EXPECT_EQ(refusal({"--list-params", "kifs", "--validate"}), "accepted");  // listings take what they need
+}
+
+TEST(OptionsModes, AFlagGivenTwiceIsRefusedUnlessRepeatable) {
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--scene", "neon", "--out", "x.exr"}),
+            "--scene is given twice; only --set and --preset may be given more than once.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "a.exr", "--out", "b.exr"}),
+            "--out is given twice; only --set and --preset may be given more than once.");
+  EXPECT_EQ(refusal({"--validate", "--validate"}),
+            "--validate is given twice; only --set and --preset may be given more than once.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", "step=2", "--set", "step=3",
+                     "--preset", "a", "--preset", "b"}),
+            "accepted");
 }
 
 // ----------------------------------------------------------------------------------- --set, --preset
@@ -196,10 +240,10 @@ TEST_F(OptionsFiles, InputAndEventsBelongToHeadlessRuns) {
                         "--out", "x.exr"});
   EXPECT_EQ(o.input, "moves.txt");
   EXPECT_EQ(o.events, events);
-  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless and record runs.");
-  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless and record runs.");
+  EXPECT_EQ(refusal({"--input", "moves.txt"}), "--input is only for --headless and record runs, not the gallery.");
+  EXPECT_EQ(refusal({"--events", events.c_str()}), "--events is only for --headless and record runs, not the gallery.");
   EXPECT_EQ(refusal({"bench", "--json", "b.json", "--events", events.c_str()}),
-            "--events is only for --headless and record runs.");
+            "--events is only for --headless and record runs, not bench.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--input"}),
             "--input needs a value; see vitrine --help.");
 }

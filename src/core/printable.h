@@ -1,0 +1,10 @@
+#pragma once
+// Text from outside (a script's words, a library's complaint quoting a file) made safe to print in an
+// error message: bytes that are not printable ASCII are written as \xNN, so a terminal never receives
+// raw control bytes and a reader sees exactly which bytes were there.
+#include <string>
+#include <string_view>
+
+namespace vitrine {
+std::string printable(std::string_view text);
+}  // namespace vitrine

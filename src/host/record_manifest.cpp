@@ -1,0 +1,145 @@
+#include "host/record_manifest.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/printable.h"
+
+namespace vitrine::host {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kManifestVersion = 1;
+constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
+
+std::string readText(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxManifestBytes)
+    throw Error(fmt::format("Cannot read {}: {}", path.string(), ec ? ec.message() : "it is over 1 MiB"));
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw Error(fmt::format("Cannot read {}: it cannot be opened.", path.string()));
+  return {std::istreambuf_iterator<char>(file), {}};
+}
+
+}  // namespace
+
+std::string fingerprint(std::string_view bytes) {
+  uint64_t hash = 0xcbf29ce484222325ull;
+  for (const char c : bytes) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  return fmt::format("{:016x}", hash);
+}
+
+std::string manifestText(const RecordManifest& manifest) {
+  json values = json::object();
+  for (const auto& [key, value] : manifest.values) values[key] = value;
+  const json document = {
+      {"vitrine_record", kManifestVersion},
+      {"scene", manifest.scene},
+      {"width", manifest.width},
+      {"height", manifest.height},
+      {"fps", manifest.fps},
+      {"spp", manifest.spp},
+      {"seed", manifest.seed},
+      {"time", manifest.time},
+      {"reduced_motion", manifest.reducedMotion},
+      {"format", manifest.format},
+      {"input", manifest.input},
+      {"values", values},
+  };
+  return document.dump(2) + "\n";
+}
+
+RecordManifest parseManifest(std::string_view text, std::string_view name) {
+  const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  auto refuse = [&](std::string_view why) -> RecordManifest {
+    throw Error(fmt::format("{} is not a recording's manifest that this vitrine can read ({}); move it away "
+                            "with the frames, or record into another folder.",
+                            printable(name), why));
+  };
+  if (document.is_discarded() || !document.is_object()) return refuse("not a JSON object");
+  try {
+    if (!document.contains("vitrine_record") || document.at("vitrine_record") != kManifestVersion)
+      return refuse("no \"vitrine_record\": 1");
+    RecordManifest manifest;
+    manifest.scene = document.at("scene").get<std::string>();
+    manifest.width = document.at("width").get<uint32_t>();
+    manifest.height = document.at("height").get<uint32_t>();
+    manifest.fps = document.at("fps").get<double>();
+    manifest.spp = document.at("spp").get<uint32_t>();
+    manifest.seed = document.at("seed").get<uint32_t>();
+    manifest.time = document.at("time").get<double>();
+    manifest.reducedMotion = document.at("reduced_motion").get<bool>();
+    manifest.format = document.at("format").get<std::string>();
+    manifest.input = document.at("input").get<std::string>();
+    for (const auto& [key, value] : document.at("values").items())
+      manifest.values.emplace_back(key, value.get<std::string>());
+    std::sort(manifest.values.begin(), manifest.values.end());
+    return manifest;
+  } catch (const json::exception& e) {
+    return refuse(e.what());
+  }
+}
+
+std::vector<std::string> manifestDifferences(const RecordManifest& folder, const RecordManifest& run) {
+  std::vector<std::string> out;
+  auto differ = [&](std::string_view field, const std::string& was, const std::string& now) {
+    if (was != now) out.push_back(fmt::format("{}: {} in the folder, {} in this run", field, printable(was), printable(now)));
+  };
+  differ("scene", folder.scene, run.scene);
+  differ("size", fmt::format("{}x{}", folder.width, folder.height), fmt::format("{}x{}", run.width, run.height));
+  differ("fps", fmt::format("{}", folder.fps), fmt::format("{}", run.fps));
+  differ("spp", fmt::format("{}", folder.spp), fmt::format("{}", run.spp));
+  differ("seed", fmt::format("{}", folder.seed), fmt::format("{}", run.seed));
+  differ("time", fmt::format("{}", folder.time), fmt::format("{}", run.time));
+  differ("reduced motion", folder.reducedMotion ? "on" : "off", run.reducedMotion ? "on" : "off");
+  differ("format", folder.format, run.format);
+  differ("input script", folder.input.empty() ? "none" : folder.input, run.input.empty() ? "none" : run.input);
+  if (folder.scene != run.scene) return out;  // other parameters altogether: the scene says it
+  auto valueOf = [](const params::KeyValues& values, const std::string& key) -> std::string {
+    for (const auto& [k, v] : values)
+      if (k == key) return v;
+    return "(none)";
+  };
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : folder.values) keys.push_back(key);
+  for (const auto& [key, value] : run.values) keys.push_back(key);
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for (const std::string& key : keys) differ(key, valueOf(folder.values, key), valueOf(run.values, key));
+  return out;
+}
+
+std::filesystem::path manifestPath(const std::filesystem::path& folder) { return folder / "record.json"; }
+
+void claimFolder(const std::filesystem::path& folder, const RecordManifest& run, bool folderHasFrames) {
+  const std::filesystem::path path = manifestPath(folder);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    if (folderHasFrames)
+      throw Error(fmt::format("{} holds frames but no record.json, so what made them is unknown; resuming could "
+                              "mix two films. Move the frames away or record into another folder.",
+                              folder.string()));
+    const std::string text = manifestText(run);
+    writeFileAtomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+  }
+  // Read back even after writing it: a run started at the same moment into the same folder may have
+  // written its own.
+  const RecordManifest existing = parseManifest(readText(path), path.string());
+  const std::vector<std::string> differences = manifestDifferences(existing, run);
+  if (differences.empty()) return;
+  std::string list;
+  for (const std::string& difference : differences) list += fmt::format("\n  {}", difference);
+  throw Error(fmt::format("{} holds another film: its record.json differs from this run in{}\nRecord into another "
+                          "folder, or run with the folder's values.",
+                          folder.string(), list));
+}
+
+}  // namespace vitrine::host

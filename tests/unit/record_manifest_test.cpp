@@ -1,0 +1,82 @@
+// A recording's manifest (FOLDER/record.json): what a resume must agree with, so that two films are
+// never mixed in one numbered sequence.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "core/error.h"
+#include "host/record_manifest.h"
+#include "support/temp_folder.h"
+
+namespace vitrine::host {
+namespace {
+
+RecordManifest neonFilm() {
+  return {"neon", 96, 54, 30.0, 1, 0, 0.0, false, "exr", "", {{"bloom", "0.6"}, {"tubes", "12"}}};
+}
+
+std::string refusal(const std::filesystem::path& folder, const RecordManifest& run, bool frames) {
+  try {
+    claimFolder(folder, run, frames);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(RecordManifest, ReadsBackWhatItWrites) {
+  RecordManifest film = neonFilm();
+  film.fps = 23.976;
+  film.time = -1.5;
+  film.input = fingerprint("0.5 down\n");
+  film.reducedMotion = true;
+  EXPECT_EQ(parseManifest(manifestText(film), "record.json"), film);
+  EXPECT_EQ(fingerprint("0.5 down\n").size(), 16u);
+  EXPECT_NE(fingerprint("0.5 down\n"), fingerprint("0.5 up\n"));
+}
+
+TEST(RecordManifest, NamesEveryDifference) {
+  const RecordManifest film = neonFilm();
+  EXPECT_TRUE(manifestDifferences(film, film).empty());
+  RecordManifest other = film;
+  other.width = 160, other.height = 90, other.spp = 4, other.seed = 7;
+  other.values = {{"bloom", "0.8"}, {"tubes", "12"}};
+  EXPECT_EQ(manifestDifferences(film, other),
+            (std::vector<std::string>{"size: 96x54 in the folder, 160x90 in this run", "spp: 1 in the folder, 4 in this run",
+                                      "seed: 0 in the folder, 7 in this run", "bloom: 0.6 in the folder, 0.8 in this run"}));
+  other = film;
+  other.scene = "kifs";  // another scene: its parameters are another set altogether, the scene says it
+  other.values = {{"step", "9"}};
+  EXPECT_EQ(manifestDifferences(film, other), std::vector<std::string>{"scene: neon in the folder, kifs in this run"});
+}
+
+class RecordFolder : public test::TempFolderTest {};
+
+TEST_F(RecordFolder, TheFirstRunWritesTheManifestAndAResumeMustAgree) {
+  EXPECT_EQ(refusal(folder_, neonFilm(), false), "accepted");
+  ASSERT_TRUE(std::filesystem::exists(manifestPath(folder_)));
+  EXPECT_EQ(refusal(folder_, neonFilm(), true), "accepted");  // the same film: resumed
+  RecordManifest kifs = neonFilm();
+  kifs.scene = "kifs", kifs.width = 160, kifs.height = 90;
+  const std::string why = refusal(folder_, kifs, true);
+  EXPECT_NE(why.find("holds another film"), std::string::npos) << why;
+  EXPECT_NE(why.find("scene: neon in the folder, kifs in this run"), std::string::npos) << why;
+  EXPECT_NE(why.find("size: 96x54 in the folder, 160x90 in this run"), std::string::npos) << why;
+  EXPECT_EQ(parseManifest(manifestText(neonFilm()), "x"), neonFilm()) << "the folder's manifest is left as it was";
+}
+
+TEST_F(RecordFolder, FramesWithoutAManifestAreNotResumedInto) {
+  const std::string why = refusal(folder_, neonFilm(), true);
+  EXPECT_NE(why.find("holds frames but no record.json"), std::string::npos) << why;
+  EXPECT_FALSE(std::filesystem::exists(manifestPath(folder_)));
+}
+
+TEST_F(RecordFolder, AManifestThatIsNotOneIsRefusedByName) {
+  std::ofstream(manifestPath(folder_)) << "{\"vitrine_record\": 1, \"scene\": 3}";
+  const std::string why = refusal(folder_, neonFilm(), true);
+  EXPECT_NE(why.find("record.json is not a recording's manifest"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace vitrine::host
