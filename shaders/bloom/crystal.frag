@@ -1,8 +1,10 @@
 #version 460
 // The crystal: sphere-trace the octahedron from the proxy's box to its entry, find the exit
-// analytically (a convex polytope of 8 planes), integrate the vapour's phase colour front to back
-// over jittered samples, add a Fresnel rim and facet shading at the entry; during the climax a
-// spectral shimmer. Output is premultiplied: the chamber shows through what the crystal lets pass.
+// analytically (a convex polytope of 8 planes), integrate the vapour front to back over jittered
+// samples in the crystal's state colour, add a Fresnel rim and facet shading at the entry; during the
+// climax a spectral shimmer. The silhouette is antialiased from the ray's analytic chord through the
+// octahedron, so a lower render scale is softer, never stair-stepped. Output is premultiplied: the
+// chamber shows through what the crystal lets pass.
 #extension GL_GOOGLE_include_directive : require
 #include "crystal_push.glsl"
 #include "../common/hash.glsl"
@@ -15,11 +17,25 @@ const vec3 kLight = normalize(vec3(-0.4, 0.8, 0.6));
 void main() {
   const vec3 ro = pc.eye;
   const vec3 rd = normalize(world - ro);
+  // The ray's chord through the octahedron (the 8 half-spaces n . p <= R, n = (+-1, +-1, +-1)): positive
+  // inside the silhouette, negative outside, zero on it, and close to linear across a pixel there.
+  // Its screen-space slope turns it into the pixel's coverage; derivatives first, before any discard.
+  float chordIn = -1e30, chordOut = 1e30;
+  for (int k = 0; k < 8; ++k) {
+    const vec3 n = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
+    const float towards = dot(n, rd), room = kCrystalRadius - dot(n, ro);
+    if (towards > 1e-6) chordOut = min(chordOut, room / towards);
+    else if (towards < -1e-6) chordIn = max(chordIn, room / towards);
+  }
+  const float chord = chordOut - chordIn;
+  const float slope = max(length(vec2(dFdx(chord), dFdy(chord))), 1e-6);
+  const float coverage = clamp(0.5 + chord / slope, 0.0, 1.0);
+
   // Only the box's far faces do the work (one invocation a pixel, also with the eye inside the box).
   const vec3 w = abs(world);
   const vec3 face = w.x >= max(w.y, w.z) ? vec3(sign(world.x), 0, 0) : w.y >= w.z ? vec3(0, sign(world.y), 0)
                                                                                  : vec3(0, 0, sign(world.z));
-  if (dot(face, rd) < 0.0) discard;
+  if (dot(face, rd) < 0.0 || coverage <= 0.0) discard;
   // The box [-R, R]^3: start where the ray enters it (or at the eye when inside).
   const vec3 inv = 1.0 / rd;
   const vec3 a = (-kCrystalRadius - ro) * inv, b = (kCrystalRadius - ro) * inv;
@@ -36,46 +52,34 @@ void main() {
     }
     t += d;
   }
-  if (!hit) discard;
-
-  // Exit: the nearest plane |n . p| = R (n = (+-1, +-1, +-1)) the ray leaves through.
-  float exitT = boxOut;
-  for (int k = 0; k < 8; ++k) {
-    const vec3 n = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
-    const float towards = dot(n, rd);
-    if (towards > 1e-6) exitT = min(exitT, (kCrystalRadius - dot(n, ro)) / towards);
-  }
+  // A pixel the silhouette only partly covers, or one the trace's budget fell short of: the analytic entry.
+  if (!hit) t = max(chordIn, 0.0);
+  const float exitT = min(chordOut, boxOut);
   const vec3 entry = ro + rd * t;
   const float span = max(exitT - t, 0.0);
 
-  // Front-to-back: each sample's colour at its phase, with an opacity that grows with the vapour.
+  // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity).
   const float step = span / float(pc.samples);
   const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
-  vec3 sum = vec3(0.0);
   float alpha = 0.0;
   for (uint i = 0u; i < pc.samples && alpha < 0.995; ++i) {
     const vec3 p = entry + rd * ((float(i) + jitter) * step);
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
-    const float density = 2.4 + 7.0 * v;
-    const float a = 1.0 - exp(-density * step);
-    sum += (1.0 - alpha) * a * phaseColour(v);
-    alpha += (1.0 - alpha) * a;
+    alpha += (1.0 - alpha) * (1.0 - exp(-sampleDensity(v) * step));
   }
-
-  // Facets catch the light; the rim brightens towards grazing angles.
+  // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
   const vec3 normal = sign(entry) * 0.57735027;
   const float facing = abs(dot(normal, rd));
-  sum *= 0.72 + 0.38 * max(dot(normal, kLight), 0.0);
-  const float fresnel = 0.04 + 0.96 * pow(1.0 - facing, 5.0);
+  const float fresnel = 0.02 + 0.98 * pow(1.0 - facing, 5.0);
+  alpha += (1.0 - alpha) * (0.22 + 0.5 * fresnel);
+  // Facets catch the light; the rim brightens towards grazing angles.
+  vec3 sum = pc.tint * alpha * (0.72 + 0.38 * max(dot(normal, kLight), 0.0));
   sum += vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
-  // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
-  const float surface = 0.22 + 0.5 * fresnel;
-  alpha = alpha + (1.0 - alpha) * surface;
 
   if (pc.shimmer > 0.0) {  // the chamber sings: a slow spectral wash across the crystal
     const vec2 uv = gl_FragCoord.xy * 0.004;
     const vec3 spectrum = 0.5 + 0.5 * cos(6.2831853 * (vec3(0.0, 0.33, 0.67) + pc.time * 0.35 + uv.x + uv.y));
     sum = mix(sum, sum * (0.6 + 0.8 * spectrum), pc.shimmer * 0.35);
   }
-  colour = vec4(sum, alpha);
+  colour = vec4(sum, alpha) * coverage;
 }

@@ -4,9 +4,10 @@ layout(push_constant) uniform Push {
   mat4 viewProjection;
   vec3 eye;
   float time;
-  uint frame;
+  vec3 tint;         // the crystal's state colour (bloom_math.h: flipColour), linear
+  uint seed;
+  uint frame;        // 0 under reduced motion: the jitter holds still
   uint traceSteps;   // sphere-trace budget to the entry (48)
   uint samples;      // volume samples to the exit (56)
-  float shimmer;     // climax: 0..1
-  uint seed;
+  float shimmer;     // climax: 0..1 (0 under reduced motion)
 } pc;

@@ -4,8 +4,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "crystal.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
-layout(binding = 0, r16f) uniform readonly image3D current;
-layout(binding = 1, r16f) uniform writeonly image3D next;
+layout(binding = 0, r32f) uniform readonly image3D current;
+layout(binding = 1, r32f) uniform writeonly image3D next;
 layout(push_constant) uniform Push {
   vec3 source;       // voxel coordinates
   float diffusion;   // D, voxels^2 / s
@@ -31,8 +31,10 @@ void main() {
   const float sum = at(p + ivec3(-1, 0, 0), last) + at(p + ivec3(1, 0, 0), last) + at(p + ivec3(0, -1, 0), last) +
                     at(p + ivec3(0, 1, 0), last) + at(p + ivec3(0, 0, -1), last) + at(p + ivec3(0, 0, 1), last);
   float v = cur + pc.diffusion * (sum - 6.0 * cur) * pc.dt;
-  const vec3 d = centre - pc.source;
-  v += pc.sourceRate * exp(-dot(d, d) / (2.0 * pc.sigma * pc.sigma)) * pc.dt;
+  if (pc.sourceRate > 0.0) {  // uniform: venting skips the exponential
+    const vec3 d = centre - pc.source;
+    v += pc.sourceRate * exp(-dot(d, d) / (2.0 * pc.sigma * pc.sigma)) * pc.dt;
+  }
   v -= pc.decay * v * pc.dt;
   imageStore(next, p, vec4(clamp(v, 0.0, 1.05)));
 }

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <string>
 
 namespace vitrine::bloom {
 namespace {
@@ -85,14 +88,87 @@ TEST(BloomDiffusion, TheSubstepsKeepTheSchemeStableAtAnySizeAndRate) {
   EXPECT_LE(peak(a), 0.6f);
 }
 
-TEST(BloomColour, PhasesFlipSharplyAtTheirThresholds) {
-  EXPECT_EQ(phaseColour(0.0f), kPristine);
-  EXPECT_EQ(phaseColour(0.30f), kAmber);
-  EXPECT_EQ(phaseColour(0.50f), kRose);
-  EXPECT_EQ(phaseColour(1.0f), kCrimson);
-  // Within 0.03 of a threshold the colour is already (almost) the next one: a flip, not a fade.
-  EXPECT_EQ(phaseColour(0.2301f), kAmber);
-  EXPECT_EQ(phaseColour(0.1699f), kPristine);
+// Hue (degrees), saturation and value of a linear colour once encoded to sRGB, as a viewer sees it.
+glm::vec3 srgbHsv(glm::vec3 linear) {
+  const auto encode = [](float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; };
+  const glm::vec3 c{encode(linear.r), encode(linear.g), encode(linear.b)};
+  const float hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b}), d = hi - lo;
+  float h = 0.0f;
+  if (d > 0.0f) h = hi == c.r ? std::fmod((c.g - c.b) / d + 6.0f, 6.0f) : hi == c.g ? (c.b - c.r) / d + 2.0f : (c.r - c.g) / d + 4.0f;
+  return {h * 60.0f, hi > 0.0f ? d / hi : 0.0f, hi};
+}
+
+TEST(BloomColour, TheStatesAreAnAmberARoseAndADeepRedOnACoolPristine) {
+  const glm::vec3 pristine = srgbHsv(kPristine), amber = srgbHsv(kAmber), rose = srgbHsv(kRose),
+                  crimson = srgbHsv(kCrimson);
+  EXPECT_GT(pristine.z, 0.9f);
+  EXPECT_LT(pristine.y, 0.1f);
+  EXPECT_GT(kPristine.b, kPristine.r) << "pristine is cool";
+  EXPECT_NEAR(amber.x, 40.0f, 8.0f);
+  EXPECT_GT(amber.y, 0.75f);
+  EXPECT_NEAR(rose.x, 340.0f, 8.0f);
+  EXPECT_GT(rose.z, 0.85f) << "rose is light";
+  EXPECT_GT(std::fmod(crimson.x + 180.0f, 360.0f), 165.0f);  // within 15 degrees of red
+  EXPECT_LT(std::fmod(crimson.x + 180.0f, 360.0f), 195.0f);
+  EXPECT_GT(crimson.y, 0.9f);
+  EXPECT_LT(crimson.z, 0.65f) << "crimson is deep";
+}
+
+TEST(BloomColour, TheCrystalFlipsToItsStateQuicklyAndTheVapourSetsItsDensity) {
+  EXPECT_EQ(flipColour(kAmber, kRose, 0.0f, kFlipSeconds), kAmber);
+  EXPECT_EQ(flipColour(kAmber, kRose, kFlipSeconds, kFlipSeconds), kRose);
+  EXPECT_LE(kFlipSeconds, 0.15f) << "a flip, not a fade";
+  EXPECT_GT(kReducedMotionFlipSeconds, kFlipSeconds);
+  EXPECT_EQ(vapourCover(0.0f), 0.0f);
+  EXPECT_EQ(vapourCover(0.25f), 1.0f) << "an amber crystal is already fully coloured";
+  EXPECT_GT(sampleDensity(0.3f) * 0.8f, 4.0f) << "filled, a path through the centre is opaque (optical depth > 4)";
+  EXPECT_LT(sampleDensity(0.0f) * 0.1f, 0.1f) << "the drained shell is thin glass";
+}
+
+TEST(BloomSettings, TheThresholdErrorSaysWhichPairIsOutOfOrder) {
+  EXPECT_EQ(thresholdOrderError({0.25f, 0.45f, 0.65f, 0.82f}), "");
+  EXPECT_EQ(thresholdOrderError({1.0f, 0.45f, 0.65f, 0.82f}),
+            "the thresholds must rise (amber < rose < crimson < climax), but amber 1 is not below rose 0.45");
+  EXPECT_NE(thresholdOrderError({0.25f, 0.45f, 0.9f, 0.82f}).find("crimson 0.9 is not below climax 0.82"),
+            std::string::npos);
+}
+
+// The default rates at a 48^3 lattice (the CPU reference; the GPU runs at 96^3 and 160^3 are
+// tests/cli/bloom_phases.sh): a cursor that only hovers over the centre reaches every phase and the
+// climax, a second or so apart; once the vapour stops the crystal vents through every phase.
+TEST(BloomCalibration, AHoverReachesEveryPhaseAndTheClimaxThenVents) {
+  const Settings settings;
+  const uint32_t n = 48;
+  DiffusionParams p;
+  p.diffusion = scaledDiffusion(settings.diffusion, n);
+  p.sigma = scaledSigma(settings.sigma, n);
+  p.source = worldToVoxel(cursorVapour(cameraRay(0.5f, 0.45f, 16.0f / 9.0f)).point, n);
+  p.sourceRate = settings.sourceRate;
+  const float frame = 1.0f / 60.0f;
+  const uint32_t substeps = substepsFor(p.diffusion, frame);
+  p.dt = frame / float(substeps);
+  const std::array<float, 4> thresholds{settings.thresholdAmber, settings.thresholdRose, settings.thresholdCrimson,
+                                        settings.thresholdChroma};
+  std::vector<float> a(size_t(n) * n * n, 0.0f), b;
+  PhaseDetector detector;
+  std::vector<std::pair<std::string, float>> seen;
+  for (int f = 0; f < 60 * 12; ++f) {
+    const bool on = f < 60 * 8;
+    p.sourceOn = on;
+    p.decay = on ? settings.decayRising : settings.decayVenting;
+    for (uint32_t i = 0; i < substeps; ++i) diffuseLattice(a, b, n, p), std::swap(a, b);
+    for (const PhaseEvent& e : detector.observe(interiorFractions(a, n, thresholds), kFractionBands))
+      seen.push_back({std::string(e.name()) + (e.kind == PhaseEvent::Kind::Vent ? ":" + std::string(e.left()) : ""),
+                      float(f + 1) * frame});
+  }
+  std::vector<std::string> names;
+  for (const auto& [name, t] : seen) names.push_back(name);
+  ASSERT_EQ(names, (std::vector<std::string>{"amber", "rose", "crimson", "chroma", "vent:chroma", "vent:crimson",
+                                             "vent:rose", "vent:amber"}));
+  EXPECT_GT(seen[0].second, 0.5f) << "not at once";
+  for (size_t i = 1; i < 4; ++i) EXPECT_GT(seen[i].second - seen[i - 1].second, 0.4f) << names[i] << ": a pace one feels";
+  EXPECT_LT(seen[3].second, 6.0f) << "the climax within seconds";
+  EXPECT_LT(seen[7].second - 8.0f, 4.0f) << "vented within seconds";
 }
 
 TEST(BloomCursor, TheCentreOfTheViewPointsAtTheCrystal) {

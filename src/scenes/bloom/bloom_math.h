@@ -11,6 +11,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <fmt/format.h>
+
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +27,13 @@ inline constexpr float kCrystalRadius = 0.8f;  // world units, centre to vertex
 inline glm::vec3 voxelCentre(glm::uvec3 voxel, uint32_t n) { return (glm::vec3(voxel) + 0.5f) / float(n) * 2.0f - 1.0f; }
 inline bool insideCrystal(glm::vec3 normalised) {
   return std::abs(normalised.x) + std::abs(normalised.y) + std::abs(normalised.z) <= 1.0f;
+}
+// The interior whose state the phases report: the octahedron scaled by 0.7 about the centre (34 % of
+// the crystal's voxels). The zero outside drains a shell under the surface that never saturates
+// however long the vapour flows, so the crystal's state is read where it can be saturated.
+inline constexpr float kCoreRadius = 0.7f;  // of the crystal's radius
+inline bool insideCore(glm::vec3 normalised) {
+  return std::abs(normalised.x) + std::abs(normalised.y) + std::abs(normalised.z) <= kCoreRadius;
 }
 // A lower bound of the distance to the octahedron surface (exact on the faces): safe to sphere-trace.
 inline float octahedronDistance(glm::vec3 p, float radius) {
@@ -98,29 +108,55 @@ inline void diffuseLattice(const std::vector<float>& in, std::vector<float>& out
       }
 }
 
-// ------------------------------------------------------------------------------------ the colours
-// Sharp smoothsteps, so a change of phase reads as a flip: white -> amber -> rose -> crimson at
-// 0.20 / 0.40 / 0.60, each over +-0.03. Linear RGB.
-inline constexpr glm::vec3 kPristine{0.86f, 0.89f, 0.93f};
-inline constexpr glm::vec3 kAmber{1.00f, 0.50f, 0.06f};
-inline constexpr glm::vec3 kRose{0.90f, 0.24f, 0.36f};
-inline constexpr glm::vec3 kCrimson{0.50f, 0.015f, 0.05f};
-inline constexpr std::array<float, 3> kColourThresholds{0.20f, 0.40f, 0.60f};
-inline constexpr float kColourWidth = 0.06f;
+// The fraction of the interior (insideCore) past each of four thresholds: the CPU mirror of stats.comp.
+inline std::array<float, 4> interiorFractions(const std::vector<float>& lattice, uint32_t n,
+                                              const std::array<float, 4>& thresholds) {
+  std::array<uint32_t, 4> above{};
+  uint32_t interior = 0;
+  for (uint32_t z = 0; z < n; ++z)
+    for (uint32_t y = 0; y < n; ++y)
+      for (uint32_t x = 0; x < n; ++x) {
+        if (!insideCore(voxelCentre({x, y, z}, n))) continue;
+        ++interior;
+        const float v = lattice[(size_t(z) * n + y) * n + x];
+        for (size_t i = 0; i < 4; ++i) above[i] += v > thresholds[i] ? 1u : 0u;
+      }
+  std::array<float, 4> f{};
+  for (size_t i = 0; i < 4; ++i) f[i] = interior ? float(above[i]) / float(interior) : 0.0f;
+  return f;
+}
 
+// ------------------------------------------------------------------------------------ the colours
+// The crystal's colour states, linear RGB: a cool clear white, then a saturated amber (sRGB about
+// 250, 170, 40), a rose (236, 110, 150) and a crimson that is deep red (150, 8, 36). Warm states on a
+// cool pristine crystal in a bone-white chamber.
+inline constexpr glm::vec3 kPristine{0.86f, 0.89f, 0.93f};
+inline constexpr glm::vec3 kAmber{0.955f, 0.40f, 0.021f};
+inline constexpr glm::vec3 kRose{0.84f, 0.155f, 0.30f};
+inline constexpr glm::vec3 kCrimson{0.30f, 0.0025f, 0.017f};
+inline constexpr std::array<glm::vec3, 4> kPhaseColours{kPristine, kAmber, kRose, kCrimson};
+
+// The crystal shows the state the phase detector reports, so the crystal and its label flip together:
+// from the previous state's colour to the new one's over a flip of kFlipSeconds (a flip, not a fade;
+// softer under reduced motion). The vapour's own concentration sets how dense the colour is
+// (vapourCover): the drained shell is thin tinted glass the chamber shows through, the vapour-filled
+// interior is deep and opaque.
+inline constexpr float kFlipSeconds = 0.12f;
+inline constexpr float kReducedMotionFlipSeconds = 0.6f;
+inline glm::vec3 flipColour(glm::vec3 from, glm::vec3 to, float age, float seconds) {
+  const float t = std::clamp(age / seconds, 0.0f, 1.0f);
+  return glm::mix(from, to, t * t * (3.0f - 2.0f * t));
+}
+// How much of a sample is vapour-filled: 0 in the drained shell, 1 past 0.2.
+inline constexpr float kCoverFrom = 0.04f, kCoverTo = 0.20f;
 inline float smoothstep(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
 }
-inline glm::vec3 phaseColour(float v) {
-  glm::vec3 c = kPristine;
-  const glm::vec3 next[3] = {kAmber, kRose, kCrimson};
-  for (int i = 0; i < 3; ++i) {
-    const float t = kColourThresholds[i];
-    c = glm::mix(c, next[i], smoothstep(t - kColourWidth * 0.5f, t + kColourWidth * 0.5f, v));
-  }
-  return c;
-}
+inline float vapourCover(float v) { return smoothstep(kCoverFrom, kCoverTo, v); }
+// The extinction (per world unit) of a volume sample: thin glass plus what the vapour adds.
+inline constexpr float kGlassDensity = 0.9f, kVapourDensity = 9.0f;
+inline float sampleDensity(float v) { return kGlassDensity + kVapourDensity * vapourCover(v); }
 
 // ------------------------------------------------------------------------------------ the camera
 inline constexpr glm::vec3 kEye{0.0f, 0.2f, 3.0f};
@@ -233,11 +269,27 @@ class PhaseDetector {
   bool climax_ = false;
 };
 
-// The GPU source: the fraction of crystal voxels above each event threshold. A phase is reached when
-// 45 % of the crystal is past its threshold and left below 25 %. The climax needs half the crystal
-// past 0.82: the zero-concentration outside is a sink, so a shell under the surface never saturates
-// (with the default rates the interior plateaus near 55 % while the button is held, 35 % hovering).
+// The GPU source: the fraction of the interior's voxels (insideCore) above each event threshold. A
+// phase is reached when 45 % of the interior is past its threshold and left below 25 %; the climax
+// needs half of it past 0.82. With the default rates a hovering cursor's interior plateaus at
+// 100 / 99 / 94 / 79 % past the four thresholds at every lattice size 48-256 (the held button's at
+// 100 / 100 / 100 / 99 %), where the whole crystal, shell included, stops at 53 / 39 / 28 % past the
+// last three: a hover reaches every phase and the climax, and the hysteresis keeps a margin.
 inline constexpr std::array<Hysteresis, 4> kFractionBands{{{0.45f, 0.25f}, {0.45f, 0.25f}, {0.45f, 0.25f}, {0.5f, 0.25f}}};
+
+// After the climax the crystal blooms for kBloomSeconds with the vapour still flowing, then exhales:
+// no vapour enters until it has vented back to pristine, whether or not the cursor stays.
+inline constexpr double kBloomSeconds = 2.5;
+// The four event thresholds must rise; the message names the first pair that does not.
+inline std::string thresholdOrderError(const std::array<float, 4>& t) {
+  static constexpr std::array<std::string_view, 4> kNames{"amber", "rose", "crimson", "climax"};
+  for (size_t i = 0; i + 1 < t.size(); ++i)
+    if (!(t[i] < t[i + 1]))
+      return fmt::format("the thresholds must rise (amber < rose < crimson < climax), but {} {} is not below {} {}",
+                         kNames[i], t[i], kNames[i + 1], t[i + 1]);
+  return {};
+}
+
 // The CPU source: the proxy's V against the thresholds themselves, 0.03 below to leave.
 inline std::array<Hysteresis, 4> proxyBands(const std::array<float, 4>& thresholds) {
   std::array<Hysteresis, 4> bands{};

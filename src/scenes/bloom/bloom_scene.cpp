@@ -12,7 +12,6 @@
 #include "scenes/bloom/settings.h"
 #include "text/text_pass.h"
 
-#include <Imath/half.h>
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
@@ -25,9 +24,13 @@
 namespace vitrine::bloom {
 namespace {
 
-constexpr VkFormat kLatticeFormat = VK_FORMAT_R16_SFLOAT;  // one channel: 2 bytes a voxel, not the seed's 8
+// One 32-bit float a voxel (the seed's RGBA16F holds one value in 8 bytes). Not half floats: a
+// 256^3 sub-step's decay of a concentration near 1 is under half a half-float step, so a half lattice
+// vents at a speed set by the lattice size and the driver's rounding instead of the physics.
+constexpr VkFormat kLatticeFormat = VK_FORMAT_R32_SFLOAT;
 constexpr int kMaxStepsPerFrame = 4;                        // catch-up steps simulated in one frame at most
 constexpr size_t kStatsWords = 8;
+constexpr uint32_t kStatsColumn = 8;  // voxels along z each statistics invocation counts (stats.comp)
 
 constexpr std::array<std::string_view, 4> kLabelWords{"", "AMBER", "ROSE", "CRIMSON"};
 const text::Shaping kLabelShaping{0.18f};  // small caps, widely tracked
@@ -49,11 +52,12 @@ struct CrystalPush {  // mirrors shaders/bloom/crystal_push.glsl
   glm::mat4 viewProjection;
   glm::vec3 eye;
   float time;
+  glm::vec3 tint;
+  uint32_t seed;
   uint32_t frame, traceSteps, samples;
   float shimmer;
-  uint32_t seed;
 };
-static_assert(sizeof(CrystalPush) == 100);
+static_assert(sizeof(CrystalPush) == 112);
 
 gpu::GraphicsState crystalState() {
   gpu::GraphicsState state;
@@ -66,12 +70,12 @@ gpu::GraphicsState crystalState() {
 
 // The statistics buffer's words (shaders/bloom/stats.comp).
 struct LatticeStats {
-  uint32_t crystal = 0;
-  std::array<uint32_t, 4> above{};  // past the amber, rose, crimson and climax thresholds
-  float peak = 0.0f;
+  uint32_t interior = 0;            // the crystal's voxels inside its core (bloom_math.h: insideCore)
+  std::array<uint32_t, 4> above{};  // of those, past the amber, rose, crimson and climax thresholds
+  float peak = 0.0f;                // over the whole crystal
   std::array<float, 4> fractions() const {
     std::array<float, 4> f{};
-    for (size_t i = 0; i < 4; ++i) f[i] = crystal ? float(above[i]) / float(crystal) : 0.0f;
+    for (size_t i = 0; i < 4; ++i) f[i] = interior ? float(above[i]) / float(interior) : 0.0f;
     return f;
   }
 };
@@ -102,8 +106,12 @@ class BloomScene final : public Scene {
     for (size_t i = 1; i < 4; ++i)
       labels_[i] = text_.layout(labelFont_, std::string(kLabelWords[i]), kLabelShaping);
     chroma_ = text_.layout(titleFont_, "CHROMA");
-    if (!context.device.storageExtendedFormats())
-      throw Error(fmt::format("bloom needs r16f storage images (shaderStorageImageExtendedFormats), which {} lacks",
+    VkFormatProperties format{};
+    vkGetPhysicalDeviceFormatProperties(context.device.physical(), kLatticeFormat, &format);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT |
+                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+    if ((format.optimalTilingFeatures & needed) != needed)
+      throw Error(fmt::format("bloom needs r32f 3D images it can store to and filter linearly, which {} lacks",
                               context.device.properties().deviceName));
     lattice_ = resources_.declare(latticeDecl(settings_.lattice, 0.0f));
     builtLattice_ = settings_.lattice;
@@ -116,8 +124,9 @@ class BloomScene final : public Scene {
   }
 
   void update(const FrameInput& input) override {
-  quality_.update(settings_.tier, settings_.targetMs, input);
+    quality_.update(settings_.tier, settings_.targetMs, input);
     time_ = input.time;
+    reducedMotion_ = input.reducedMotion;
     // The drone is always under the piece; the panel's volume and mute reach the mix as they change.
     if (!droning_) audio_.drone(time_, droning_ = true);
     const float gain = settings_.mute ? 0.0f : settings_.volume;
@@ -128,14 +137,13 @@ class BloomScene final : public Scene {
     const Ray ray = cameraRay(input.cursor.normalized.x, input.cursor.normalized.y, aspect_);
     const CursorVapour vapour = cursorVapour(ray);
     const bool near = input.cursor.present && vapour.distance < settings_.reach * kCrystalRadius;
-    source_.on = near;
     source_.voxel = worldToVoxel(vapour.point, uint32_t(settings_.lattice));
     source_.rate = settings_.sourceRate * (input.cursor.dragging ? settings_.dragBoost : 1.0f);
     stepsPending_ = std::min(stepsPending_ + 1, kMaxStepsPerFrame);
     stepSeconds_ = input.dt;
 
     // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
-    proxy_ = proxyStep(proxy_, input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
+    proxy_ = proxyStep(proxy_, !exhaling_ && input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
                        {0.20f, settings_.decayRising, settings_.decayVenting});
     if (settings_.phaseSource == PhaseSource::Cpu)
       detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
@@ -143,7 +151,7 @@ class BloomScene final : public Scene {
       LatticeStats stats;
       std::array<uint32_t, kStatsWords> words{};
       std::memcpy(words.data(), result->bytes.data(), sizeof(words));
-      stats.crystal = words[0];
+      stats.interior = words[0];
       for (size_t i = 0; i < 4; ++i) stats.above[i] = words[1 + i];
       std::memcpy(&stats.peak, &words[5], sizeof(float));
       stats_ = stats;
@@ -155,6 +163,11 @@ class BloomScene final : public Scene {
       settings_.vent = false;
       restart(0.0f);
     }
+    // The arc: the climax blooms for kBloomSeconds, then the crystal exhales back to pristine before
+    // any vapour enters again, so a cursor that simply stays sees every flip, the bloom and the vent.
+    if (detector_.climax() && !exhaling_ && time_ - climaxTime_ >= kBloomSeconds) exhaling_ = true;
+    if (exhaling_ && !detector_.climax() && detector_.phase() == Phase::Pristine) exhaling_ = false;
+    source_.on = near && !exhaling_;
     // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins.
     if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
   }
@@ -175,24 +188,22 @@ class BloomScene final : public Scene {
   }
 
   std::string checkParameters() const override {
-    const auto t = thresholds();
-    if (!(t[0] < t[1] && t[1] < t[2] && t[2] < t[3]))
-      return fmt::format("the thresholds must rise: amber {} < rose {} < crimson {} < climax {}", t[0], t[1], t[2], t[3]);
-    return {};
+    return thresholdOrderError(thresholds());
   }
 
   void drawPanel() override {
     const auto f = stats_.fractions();
     ImGui::Text("phase %s%s   peak %.2f", std::string(kPhaseNames[size_t(detector_.phase())]).c_str(),
                 detector_.climax() ? " + CHROMA" : "", stats_.peak);
-    ImGui::Text("crystal past each threshold: %.0f%% %.0f%% %.0f%% %.0f%%", f[0] * 100, f[1] * 100, f[2] * 100,
+    ImGui::Text("interior past each threshold: %.0f%% %.0f%% %.0f%% %.0f%%", f[0] * 100, f[1] * 100, f[2] * 100,
                 f[3] * 100);
     std::vector<float> peak, amber, proxy;
     for (const auto& h : history_) peak.push_back(h.peak), amber.push_back(h.fraction), proxy.push_back(h.proxy);
     ImGui::PlotLines("GPU peak", peak.data(), int(peak.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
     ImGui::PlotLines("GPU past rose", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
     ImGui::PlotLines("CPU proxy V", proxy.data(), int(proxy.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
-    ImGui::Text("%u sub-steps a frame (D dt 6 = %.2f)", substeps(), stabilityNumber());
+    ImGui::Text("%u sub-steps a frame (D dt 6 = %.2f)%s", substeps(), stabilityNumber(),
+                exhaling_ ? "   exhaling" : "");
   }
 
  private:
@@ -205,17 +216,16 @@ class BloomScene final : public Scene {
     gpu::ImageDecl decl{"bloom vapour", kLatticeFormat,
                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                         gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n)), 1, gpu::Pairing::PingPong};
-    // Initial texels: the fill inside the crystal, zero outside (half floats).
+    // Initial texels: the fill inside the crystal, zero outside.
     const uint32_t size = uint32_t(n);
-    std::vector<uint16_t> texels(size_t(size) * size * size, 0);
+    std::vector<float> texels(size_t(size) * size * size, 0.0f);
     if (fill > 0.0f) {
-      const uint16_t bits = half(fill).bits();
       for (uint32_t z = 0; z < size; ++z)
         for (uint32_t y = 0; y < size; ++y)
           for (uint32_t x = 0; x < size; ++x)
-            if (insideCrystal(voxelCentre({x, y, z}, size))) texels[(size_t(z) * size + y) * size + x] = bits;
+            if (insideCrystal(voxelCentre({x, y, z}, size))) texels[(size_t(z) * size + y) * size + x] = fill;
     }
-    decl.initial.resize(texels.size() * sizeof(uint16_t));
+    decl.initial.resize(texels.size() * sizeof(float));
     std::memcpy(decl.initial.data(), texels.data(), decl.initial.size());
     decl.initialUse = gpu::use::ComputeRead;
     return decl;
@@ -223,6 +233,7 @@ class BloomScene final : public Scene {
 
   // A new lattice (size change, fill, vent): the old images are retired behind frames in flight.
   void restart(float fill) {
+    exhaling_ = false;
     resources_.redeclare(lattice_, latticeDecl(settings_.lattice, fill));
     builtLattice_ = settings_.lattice;
     builtFill_ = settings_.fill;
@@ -272,7 +283,7 @@ class BloomScene final : public Scene {
     statistics_.push(frame.cmd, gpu::Bindings().storageImage(lattice.view()).storageBuffer(statsBuffer_.handle()));
     statistics_.constants(frame.cmd, thresholds());
     const uint32_t n = uint32_t(settings_.lattice);
-    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
+    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + kStatsColumn - 1) / kStatsColumn}, VkExtent3D{8, 8, 4});
     statsReadback_.record(frame.cmd, statsBuffer_, time_);
   }
 
@@ -280,7 +291,7 @@ class BloomScene final : public Scene {
     const auto pass = frame.pass("bloom chamber");
     frame.transition(frame.target, gpu::use::ComputeWrite);
     const float fill = std::min(stats_.peak, 1.0f);
-    const ChamberPush push{0.22f + 0.12f * fill, fill * 0.6f, 0, 0, phaseColour(stats_.peak), 0};
+    const ChamberPush push{0.22f + 0.12f * fill, fill * 0.6f, 0, 0, tint(), 0};
     chamber_.bind(frame.cmd);
     chamber_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view()));
     chamber_.constants(frame.cmd, push);
@@ -295,9 +306,11 @@ class BloomScene final : public Scene {
     const glm::mat4 view = glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     glm::mat4 projection = glm::perspective(kFieldOfViewY, aspect_, 0.05f, 20.0f);
     projection[1][1] *= -1.0f;  // Vulkan's clip space has y down
-    const float shimmer = detector_.climax() ? 1.0f : 0.0f;
-    const CrystalPush push{projection * view, kEye, float(time_), uint32_t(frame_), uint32_t(settings_.traceSteps),
-                           uint32_t(settings_.samples), shimmer, seed_};
+    // Reduced motion: no shimmer, and the jitter holds still (a fixed pattern, no crawling grain).
+    const float shimmer = detector_.climax() && !reducedMotion_ ? 1.0f : 0.0f;
+    const CrystalPush push{projection * view, kEye, float(time_), tint(), seed_,
+                           reducedMotion_ ? 0u : uint32_t(frame_), uint32_t(settings_.traceSteps),
+                           uint32_t(settings_.samples), shimmer};
     crystal_.bind(frame.cmd);
     crystal_.push(frame.cmd, gpu::Bindings().sampledImage(
                                  lattice.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
@@ -315,7 +328,8 @@ class BloomScene final : public Scene {
     const double now = time_;
     if (label_ > 0) {
       const double age = now - labelTime_;
-      const float reveal = float(std::clamp(age / 0.35, 0.0, 1.0));
+      // It types in (under reduced motion it is simply there, and fades as the others do).
+      const float reveal = reducedMotion_ ? 1.0f : float(std::clamp(age / 0.35, 0.0, 1.0));
       const float fade = float(std::clamp(1.0 - (age - 0.9) / 1.8, 0.0, 1.0));
       if (fade > 0.0f) {
         text::TextDraw label;
@@ -331,7 +345,7 @@ class BloomScene final : public Scene {
     }
     if (chromaTime_ >= 0.0) {
       const double age = now - chromaTime_;
-      const double bloom = std::clamp(age / 0.8, 0.0, 1.0);
+      const double bloom = reducedMotion_ ? 1.0 : std::clamp(age / 0.8, 0.0, 1.0);
       // Hold four seconds, then fade over two once the crystal has vented (sooner it stays).
       const double fadeFrom = std::max(chromaTime_ + 4.8, ventTime_);
       const double fade = detector_.climax() ? 1.0 : std::clamp(1.0 - (now - fadeFrom) / 2.0, 0.0, 1.0);
@@ -344,7 +358,7 @@ class BloomScene final : public Scene {
       title.color = glm::vec4(0.030f, 0.028f, 0.027f, 1.0f);  // deep charcoal, linear
       title.opacity = float(bloom * fade);
       title.softnessEm = float(0.25 * (1.0 - bloom));  // it blooms: soft, then sharp
-      title.glow = {phaseColour(1.0f) * 0.35f * float(1.0 - bloom * 0.6), 0.12f};
+      title.glow = {kCrimson * 0.35f * float(1.0 - bloom * 0.6), 0.12f};
       if (title.opacity > 0.0f) draws.push_back(title);
     }
     if (draws.empty()) return;
@@ -353,9 +367,12 @@ class BloomScene final : public Scene {
   }
 
   // The label's ink: the phase's colour, darkened to read on bone white.
-  static glm::vec3 phaseInk(int phase) {
-    static constexpr glm::vec3 kInk[4] = {kPristine, kAmber, kRose, kCrimson};
-    return kInk[phase] * 0.55f;
+  static glm::vec3 phaseInk(int phase) { return kPhaseColours[size_t(phase)] * 0.55f; }
+
+  // The crystal's colour now: flipping (kFlipSeconds; softer under reduced motion) to its state's.
+  glm::vec3 tint() const {
+    return flipColour(flipFrom_, kPhaseColours[size_t(shownPhase_)], float(time_ - flipTime_),
+                      reducedMotion_ ? kReducedMotionFlipSeconds : kFlipSeconds);
   }
 
   void detect(const std::array<float, 4>& signal, const std::array<Hysteresis, 4>& bands, double time) {
@@ -365,9 +382,19 @@ class BloomScene final : public Scene {
       out.values.push_back({"source", settings_.phaseSource == PhaseSource::Gpu ? "gpu" : "cpu"});
       events_.emit(time, out);
       sound(event, time);
+      // The label types in with every flip: the phase reached on the way up, the one fallen to on the
+      // way down (none at pristine, where the crystal is clear again).
       if (event.kind == PhaseEvent::Kind::Up) label_ = int(event.phase), labelTime_ = time_;
-      if (event.kind == PhaseEvent::Kind::Climax) chromaTime_ = time_, ventTime_ = 1e30;
+      if (event.kind == PhaseEvent::Kind::Vent && !event.fromClimax && event.phase != Phase::Amber)
+        label_ = int(event.phase) - 1, labelTime_ = time_;
+      if (event.kind == PhaseEvent::Kind::Climax) chromaTime_ = climaxTime_ = time_, ventTime_ = 1e30;
       if (event.kind == PhaseEvent::Kind::Vent && event.fromClimax) ventTime_ = time_;
+    }
+    // The crystal flips with its label, in the same frame.
+    if (int(detector_.phase()) != shownPhase_) {
+      flipFrom_ = tint();
+      shownPhase_ = int(detector_.phase());
+      flipTime_ = time_;
     }
   }
 
@@ -426,6 +453,12 @@ class BloomScene final : public Scene {
   glm::vec2 labelPosition_{0.5f, 0.1f};
   double chromaTime_ = -1.0;  // when CHROMA bloomed; negative: not showing
   double ventTime_ = 1e30;    // when the climax ended
+  double climaxTime_ = 0.0;   // when the last climax began
+  bool exhaling_ = false;     // after the bloom: no vapour enters until the crystal is pristine again
+  bool reducedMotion_ = false;
+  int shownPhase_ = 0;        // the phase whose colour the crystal shows (or flips to)
+  glm::vec3 flipFrom_ = kPristine;
+  double flipTime_ = -1e9;
 };
 
 }  // namespace

@@ -30,15 +30,15 @@ const params::Schema& schema() {
     s.add(params::choiceParam<S>({"phase_source", "phase source", "gpu: the lattice's own statistics; cpu: the "
                                   "write-up's proxy dV/dt = S - D V.", "phases"},
                                  &S::phaseSource, {"gpu", "cpu"}));
-    s.add(params::floatParam<S>({"threshold_amber", "amber at", "The concentration whose crossing is the amber "
-                                 "phase (the colour flips at 0.20).", "phases"},
+    s.add(params::floatParam<S>({"threshold_amber", "amber at", "The concentration whose crossing (by 45 % of the "
+                                 "crystal's interior) is the amber phase.", "phases"},
                                 &S::thresholdAmber, 0.05, 1.0));
     s.add(params::floatParam<S>({"threshold_rose", "rose at", "The rose phase's concentration.", "phases"},
                                 &S::thresholdRose, 0.05, 1.0));
     s.add(params::floatParam<S>({"threshold_crimson", "crimson at", "The crimson phase's concentration.", "phases"},
                                 &S::thresholdCrimson, 0.05, 1.0));
-    s.add(params::floatParam<S>({"threshold_chroma", "climax at", "The concentration half the crystal must pass "
-                                 "for the climax.", "phases"},
+    s.add(params::floatParam<S>({"threshold_chroma", "climax at", "The concentration half the crystal's interior "
+                                 "must pass for the climax.", "phases"},
                                 &S::thresholdChroma, 0.05, 1.05));
     s.add(params::intParam<S>({"trace_steps", "trace steps", "Sphere-trace budget to the crystal's entry.",
                                "render"},

@@ -10,10 +10,10 @@ enum class PhaseSource { Gpu, Cpu };
 
 struct Settings {
   int lattice = 96;                // voxels per side
-  float diffusion = 30.0f;         // D, voxels^2 / s at 96^3
+  float diffusion = 15.0f;         // D, voxels^2 / s at 96^3 (with the source: bloom_math.h, kFractionBands)
   float decayRising = 0.10f;       // per second while vapour flows in
   float decayVenting = 0.40f;      // per second once it stops
-  float sourceRate = 0.8f;         // concentration per second at the source centre, hovering
+  float sourceRate = 0.5f;         // concentration per second at the source centre, hovering
   float dragBoost = 2.5f;          // times the source rate while the button is held
   float sigma = 20.0f;             // source width, voxels at 96^3
   float reach = 1.3f;              // the cursor's ray injects within this many crystal radii of the centre

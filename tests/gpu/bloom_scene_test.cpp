@@ -1,0 +1,115 @@
+// The bloom scene as a whole, rendered headless: the colour states it promises, measured on its
+// pictures (the hue, saturation and value of the crystal's centre as a viewer sees it, in sRGB), what
+// reduced motion holds still, and a low quality tier that keeps the crystal's edges.
+#include "host/input_script.h"
+#include "host/offscreen.h"
+#include "image/image.h"
+#include "support/gpu_test.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vitrine::test {
+namespace {
+
+constexpr const char* kHover = "0.05 move 0.5 0.45\n";  // over the crystal's centre: keeps a full crystal full
+
+class BloomScene : public GpuTest {
+ protected:
+  ImageRgba render(params::KeyValues values, uint32_t frames, const char* script = nullptr,
+                   bool reducedMotion = false, VkExtent2D size = {160, 90}) {
+    host::OffscreenConfig config;
+    if (script) config.input = host::parseInputScript(script, "test script");
+    config.scene = "bloom";
+    config.size = size;
+    config.reducedMotion = reducedMotion;
+    config.parameters = {{"lattice", "48"}, {"mute", "on"}};
+    config.parameters.insert(config.parameters.end(), values.begin(), values.end());
+    host::Offscreen offscreen(device(), config);
+    for (uint32_t i = 0; i < frames; ++i) offscreen.renderFrame();
+    return offscreen.readback();
+  }
+};
+
+struct Hsv {
+  float hue, saturation, value;  // degrees, 0..1, 0..1 of the sRGB-encoded colour
+};
+
+// The mean sRGB colour of a patch at the crystal's centre (the origin shows at (0.5, 0.53)), as HSV.
+Hsv centreColour(const ImageRgba& image) {
+  double sum[3] = {0, 0, 0};
+  int count = 0;
+  const int cx = int(image.width) / 2, cy = int(0.53f * float(image.height));
+  for (int y = cy - 3; y <= cy + 3; ++y)
+    for (int x = cx - 3; x <= cx + 3; ++x, ++count)
+      for (int c = 0; c < 3; ++c) sum[c] += linearToSrgb(std::clamp(image.at(x, y)[c], 0.0f, 1.0f));
+  const float r = float(sum[0] / count), g = float(sum[1] / count), b = float(sum[2] / count);
+  const float hi = std::max({r, g, b}), lo = std::min({r, g, b}), d = hi - lo;
+  float h = 0.0f;
+  if (d > 0.0f) h = hi == r ? std::fmod((g - b) / d + 6.0f, 6.0f) : hi == g ? (b - r) / d + 2.0f : (r - g) / d + 4.0f;
+  return {h * 60.0f, hi > 0.0f ? d / hi : 0.0f, hi};
+}
+float fromRed(float hue) { return std::min(hue, 360.0f - hue); }  // degrees from pure red
+
+// Each state started full with "fill" (the lattice a held cursor makes), 16 frames on: the crystal's
+// centre is an amber, a rose, a crimson that is deep red, and a cool clear white before any vapour.
+// The old salmon gradient ((226,173,164) -> (219,156,146) -> (216,150,145)) fails every one of these.
+TEST_F(BloomScene, TheCrystalsCentreShowsEachStateInItsOwnColour) {
+  const Hsv pristine = centreColour(render({}, 6));
+  const Hsv amber = centreColour(render({{"fill", "0.35"}}, 16));
+  const Hsv rose = centreColour(render({{"fill", "0.55"}}, 16));
+  const Hsv crimson = centreColour(render({{"fill", "0.75"}}, 16));
+  const Hsv climax = centreColour(render({{"fill", "1.05"}}, 20, kHover));
+  EXPECT_LT(pristine.saturation, 0.12f) << "pristine is clear: hue " << pristine.hue;
+  EXPECT_GT(pristine.hue, 150.0f) << "and cool (bluish), on the warm bone-white chamber";
+  EXPECT_NEAR(amber.hue, 38.0f, 10.0f);
+  EXPECT_GT(amber.saturation, 0.6f);
+  EXPECT_GT(amber.value, 0.8f);
+  EXPECT_GT(rose.hue, 320.0f);
+  EXPECT_LT(rose.hue, 352.0f);
+  EXPECT_GT(rose.saturation, 0.4f);
+  EXPECT_GT(rose.value, 0.75f) << "rose is light";
+  for (const Hsv& red : {crimson, climax}) {
+    EXPECT_LT(fromRed(red.hue), 15.0f) << red.hue;
+    EXPECT_GT(red.saturation, 0.6f);
+    EXPECT_LT(red.value, 0.7f) << "crimson is deep";
+  }
+  EXPECT_GT(rose.value - crimson.value, 0.2f) << "rose and crimson read apart";
+}
+
+// Reduced motion: the climax holds still (no shimmer, no crawling jitter), where it otherwise moves.
+TEST_F(BloomScene, ReducedMotionHoldsTheClimaxStill) {
+  const auto difference = [](const ImageRgba& a, const ImageRgba& b) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - b.pixels[i]);
+    return sum / double(a.pixels.size());
+  };
+  const ImageRgba still1 = render({{"fill", "1.05"}}, 48, kHover, true);
+  const ImageRgba still2 = render({{"fill", "1.05"}}, 60, kHover, true);
+  const ImageRgba moving1 = render({{"fill", "1.05"}}, 48, kHover, false);
+  const ImageRgba moving2 = render({{"fill", "1.05"}}, 60, kHover, false);
+  EXPECT_GT(difference(moving1, moving2), 4.0 * difference(still1, still2) + 1e-4);
+}
+
+// The low tier renders fewer pixels, never a different picture: its crystal edge (upscaled) stays as
+// smooth as the full-scale one, where a binary silhouette at half scale is a staircase of 2-pixel steps.
+// Measured as the largest jump between neighbouring pixels across the silhouette.
+TEST_F(BloomScene, TheLowTierKeepsTheCrystalsEdgesSmooth) {
+  const auto roughest = [](const ImageRgba& image) {
+    float worst = 0.0f;
+    for (uint32_t y = 1; y < image.height; ++y)
+      for (uint32_t x = 1; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float here = linearToSrgb(std::clamp(image.at(x, y)[c], 0.0f, 1.0f));
+          worst = std::max({worst, std::abs(here - linearToSrgb(std::clamp(image.at(x - 1, y)[c], 0.0f, 1.0f))),
+                            std::abs(here - linearToSrgb(std::clamp(image.at(x, y - 1)[c], 0.0f, 1.0f)))});
+        }
+    return worst;
+  };
+  const ImageRgba high = render({{"fill", "0.75"}, {"tier", "high"}}, 12, nullptr, false, {320, 180});
+  const ImageRgba low = render({{"fill", "0.75"}, {"tier", "low"}}, 12, nullptr, false, {320, 180});
+  EXPECT_LT(roughest(low), roughest(high) * 1.1f + 0.02f);
+}
+
+}  // namespace
+}  // namespace vitrine::test
