@@ -1,7 +1,9 @@
 #version 460
 // One step down the bloom chain: reads level L - 1 through a sampler and writes level L (half its size)
 // through a storage image, with the 13-tap filter. The first step (L = 1, reading the full-size HDR
-// image) also keeps only what is bright, through a soft knee, so the dim facade does not glow.
+// image, the tubes' own light) first keeps only what is bright, through a soft knee, texel by texel at
+// full resolution: a tube a pixel or two wide is judged by its own brightness, not by a 6x6 average
+// that would dilute it below the threshold (thin tubes would get no glow).
 // Mirrors BloomDownPush in src/scenes/neon/look.h, which documents the whole chain.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/bloom.glsl"
@@ -32,8 +34,19 @@ void main() {
   if (any(greaterThanEqual(p, size))) return;
   const vec2 uv = (vec2(p) + 0.5) / vec2(size);
   const vec2 texel = 1.0 / vec2(textureSize(source, int(pc.sourceLod)));
-  vec3 c = downsample13(source, uv, texel, pc.sourceLod);
-  if (pc.prefilter != 0u) c = softThreshold(c);
+  vec3 c;
+  if (pc.prefilter != 0u) {  // a 4x4 tent (1 3 3 1) of thresholded full-resolution texels
+    const ivec2 last = textureSize(source, 0) - 1;
+    c = vec3(0.0);
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) {
+        const float w = (x == 0 || x == 3 ? 1.0 : 3.0) * (y == 0 || y == 3 ? 1.0 : 3.0);
+        c += w * softThreshold(texelFetch(source, clamp(2 * p + ivec2(x, y) - 1, ivec2(0), last), 0).rgb);
+      }
+    c *= 1.0 / 64.0;
+  } else {
+    c = downsample13(source, uv, texel, pc.sourceLod);
+  }
   // A stray infinity or NaN from the scene would spread over the whole frame as it climbs the chain.
   c = clamp(c, 0.0, 65000.0);
   imageStore(target, p, vec4(c, 1.0));

@@ -10,6 +10,8 @@ layout(std140, set = 0, binding = 0) uniform Frame {
   vec4 forward;         // xyz: where it looks
   vec4 colourA;         // linear rgb; w: glow
   vec4 colourB;         // linear rgb; w: tube radius
+  vec4 colourC;         // linear rgb; w: the tubes' exposure (tubeExposure: the energy budget)
+  vec4 tube;            // x: the thinnest tube radius drawn, pixels; y: the focal length, pixels; zw: 0
   uvec4 counts;         // chains, particles per chain, boxes, 0
 } F;
 

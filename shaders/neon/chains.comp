@@ -3,6 +3,7 @@
 // particle ahead. Reads last frame's positions, writes this frame's; src/scenes/neon/chains.h is the
 // CPU reference for exactly this.
 #extension GL_GOOGLE_include_directive : require
+#include "common/hash.glsl"
 #include "neon/head_state.glsl"
 #include "noodles/field.glsl"
 
@@ -15,12 +16,19 @@ layout(push_constant) uniform Push {
   vec3 offsetY;  // second potential, drift included (computed in double on the CPU)
   float dt;
   vec3 offsetZ;  // third potential, drift included
-  float lerp;
+  float lerp;  // followerLerp(lerp60, dt), computed on the CPU
   uint chainCount;
   uint particlesPerChain;
   float fieldStrength;
   float noiseScale;
 } pc;
+
+// Mirrors kLaunchSpeed and launchVelocity in chains.h: a free head's own drift, on top of the flow.
+const float kLaunchSpeed = 0.6;
+vec3 launchVelocity(uint serial) {
+  const float angle = hash01(uvec3(serial, 0x6e656f6eu, 7u)) * 6.2831853;
+  return vec3(cos(angle), sin(angle), 0.0) * kLaunchSpeed;
+}
 
 void main() {
   // Rows of workgroups are stacked in y when one row cannot hold them all (see chainGroups()).
@@ -33,9 +41,11 @@ void main() {
   if (state == CHAIN_INITIALISING) {
     position = head.originLife.xyz;
   } else if (state == CHAIN_ALIVE) {
-    if (k == 0u) {
+    if (k == 0u && (head.info.w & HEAD_STEERED) != 0u) {
+      position = head.originLife.xyz;  // a pen: where the cursor is
+    } else if (k == 0u) {
       FieldSettings field = FieldSettings(FIELD_CURL, pc.noiseScale, pc.offsetY, pc.offsetZ, 0.0);
-      position += flowVelocity(position, field) * (pc.fieldStrength * pc.dt);
+      position += (flowVelocity(position, field) * pc.fieldStrength + launchVelocity(head.info.y)) * pc.dt;
     } else {
       position += (previous[index - 1u].xyz - position) * pc.lerp;
     }

@@ -18,7 +18,7 @@ layout(set = 0, binding = 2) uniform sampler2D lighting;
 layout(set = 0, binding = 3, rgba16f) uniform writeonly image2D colour;
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D depth;
 layout(push_constant) uniform Push {
-  vec4 sky;  // linear rgb
+  vec4 sky;  // linear rgb; w: the facade's brightness (the tubes are the subject: the building is their backdrop)
 } pc;
 
 void main() {
@@ -46,6 +46,6 @@ void main() {
     return;
   }
   const vec3 hit = F.eye.xyz + dir * nearest;
-  imageStore(colour, p, vec4(textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb, 1.0));
+  imageStore(colour, p, vec4(textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb * pc.sky.w, 1.0));
   imageStore(depth, p, vec4(F.eye.w / (nearest * dot(dir, F.forward.xyz))));
 }

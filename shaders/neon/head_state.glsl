@@ -5,10 +5,11 @@
 const uint CHAIN_INACTIVE = 0u;
 const uint CHAIN_INITIALISING = 1u;
 const uint CHAIN_ALIVE = 2u;
+const uint HEAD_STEERED = 1u;  // info.w bit: the head sits at originLife.xyz, where the CPU's pen is
 
 struct HeadState {
   vec4 originLife;  // xyz: release position (world), w: life 1..0
-  uvec4 info;       // x: state, y: release serial, z: steps since release, w: 0
+  uvec4 info;       // x: state, y: release serial, z: steps since release, w: HEAD_* bits
 };
 
 #endif

@@ -1,16 +1,34 @@
 #version 460
-// The tubes onto the facade: their light added to its colour, the nearer of the two depths kept, so
-// the depth of field blurs each by its own distance.
+// The tubes onto the facade. Where tubes cross, their light adds, but the sum of a pink, a cyan and an
+// amber tube is white: so the pixel takes the nearest tube's colour (kept in the tubes' alpha, see
+// tube.frag) at the luminance of all their light (nearestColourLight in src/scenes/neon/tube_light.h):
+// crossing tubes read as one in front of another, each its own neon colour, at any density. The
+// result goes back into the tubes' target for the bloom, and onto the facade; the nearer of the two
+// depths is kept, so the depth of field blurs each by its own distance.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0, rgba16f) uniform image2D scene;  // the facade in, facade and tubes out
 layout(set = 0, binding = 1, r32f) uniform image2D depth;     // the facade's in, the nearer out
-layout(set = 0, binding = 2) uniform sampler2D tubes;         // the tubes' light; alpha: the nearest one's reverse-Z depth
+layout(set = 0, binding = 2, rgba16f) uniform image2D tubes;  // the tubes' light; alpha: the nearest one's depth and colour
+layout(push_constant) uniform Push {
+  vec4 colours[3];  // linear rgb of the three neon colours (w unused)
+} pc;
+
+const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
+
+vec3 nearestColourLight(vec3 sum, vec3 nearest) {
+  return nearest * (dot(sum, kLuminance) / max(dot(nearest, kLuminance), 1e-4));
+}
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(scene)))) return;
-  const vec4 tube = texelFetch(tubes, p, 0);
-  imageStore(scene, p, imageLoad(scene, p) + vec4(tube.rgb, 0.0));
-  imageStore(depth, p, vec4(max(imageLoad(depth, p).r, tube.a)));
+  const vec4 tube = imageLoad(tubes, p);
+  const uint bits = packHalf2x16(vec2(tube.a, 0.0)) & 0xffffu;
+  const uint colour = bits & 3u;  // 0: no tube here
+  const float tubeDepth = unpackHalf2x16(bits & 0xfffcu).x;
+  const vec3 light = colour == 0u ? tube.rgb : nearestColourLight(tube.rgb, pc.colours[colour - 1u].rgb);
+  imageStore(tubes, p, vec4(light, tubeDepth));
+  imageStore(scene, p, imageLoad(scene, p) + vec4(light, 0.0));
+  imageStore(depth, p, vec4(max(imageLoad(depth, p).r, tubeDepth)));
 }

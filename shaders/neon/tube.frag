@@ -1,24 +1,33 @@
 #version 460
-// The gas in the tube: brightest along the core, the glass rim faintly lit, in one of two colours
-// per chain, added into the tubes' own target: the merge pass adds it to the facade, the bloom blurs it.
+// The gas in the tube, in one of three neon colours per chain, added into the tubes' own target: the
+// merge pass adds it to the facade, the bloom blurs it. Seen side-on, a glowing cylinder is brightest
+// where the eye looks through the most gas, the chord sqrt(1 - r^2): a round profile, saturated
+// across (no white core), its rim antialiased over a pixel. Brightness fades with life and a little
+// toward the tail, and scales by the frame's exposure (the energy budget, tube_light.h).
 // No depth attachment: light adds in any order, the facade's depth is tested here by hand, and the
-// target's alpha keeps the nearest tube's depth (max blending of reverse-Z).
+// target's alpha keeps the nearest tube's depth and colour (max blending of reverse-Z).
 #extension GL_GOOGLE_include_directive : require
 #include "neon/camera.glsl"
 
 layout(set = 0, binding = 2) uniform sampler2D facadeDepth;  // r32f, reverse-Z: the facade hides what is behind it
 
 layout(location = 0) in float across;
-layout(location = 1) flat in float hue;
+layout(location = 1) flat in uint colour;
 layout(location = 2) in float along;
+layout(location = 3) in float life;
 layout(location = 0) out vec4 glow;
 
 void main() {
   if (gl_FragCoord.z < texelFetch(facadeDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
   const float r = abs(across);
-  const float core = exp(-r * r * 6.0);                 // the discharge, bright in the middle
-  const float rim = smoothstep(0.7, 1.0, r) * 0.25;     // the glass wall catching it
-  const vec3 colour = mix(F.colourA.rgb, F.colourB.rgb, hue);
-  const vec3 light = colour * F.colourA.w * (core + rim) * (1.0 - 0.5 * along) + vec3(core * core) * 0.15 * F.colourA.w;
-  glow = vec4(light, gl_FragCoord.z);  // alpha blends by max: the nearest tube's depth, for the depth of field
+  const float chord = sqrt(max(1.0 - r * r, 0.0));
+  const float edge = 1.0 - smoothstep(1.0 - 1.5 * fwidth(across), 1.0, r);  // a pixel-wide antialiased rim
+  const vec3 hue = colour == 0u ? F.colourA.rgb : colour == 1u ? F.colourB.rgb : F.colourC.rgb;
+  const float strength = F.colourA.w * F.colourC.w * (0.3 + 0.7 * chord) * edge * (1.0 - 0.4 * along) *
+                         smoothstep(0.0, 0.25, life);
+  // Alpha blends by max: the nearest tube's depth (for the depth of field), with its colour (1..3) in
+  // the half float's lowest two mantissa bits, so the max also says which colour is nearest: positive
+  // halfs order as their bits do. The merge pass decodes both (tube_light.h, tubeDepthAndColour).
+  const uint bits = (packHalf2x16(vec2(gl_FragCoord.z, 0.0)) & 0xfffcu) | (colour + 1u);
+  glow = vec4(hue * strength, unpackHalf2x16(bits).x);
 }

@@ -1,15 +1,17 @@
 #version 460
 // One whole chain per instance, drawn as a tube impostor: a ribbon through the chain's particles
 // that always faces the eye (two vertices a particle, one triangle strip), shaded in the fragment
-// shader as the cylinder it stands for. A few pixels wide, it reads as a tube at a fraction of a real
-// tube's vertices. The radius tapers with life and toward the tail.
+// shader as the cylinder it stands for. The radius tapers with life and toward the tail, but never
+// below F.tube.x pixels (drawnTubeRadius in src/scenes/neon/tube_light.h): a far tube on a small frame
+// stays a continuous line instead of a ribbon thinner than a pixel.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/camera.glsl"
 
 layout(std430, set = 0, binding = 1) readonly buffer Particles { vec4 particles[]; };  // xyz, w life
 layout(location = 0) out float across;  // -1..1 over the ribbon
-layout(location = 1) flat out float hue;
+layout(location = 1) flat out uint colour;  // which of the three neon colours
 layout(location = 2) out float along;   // 0 at the head, 1 at the tail
+layout(location = 3) out float life;
 
 void main() {
   const uint chain = gl_InstanceIndex, perChain = F.counts.y;
@@ -24,9 +26,12 @@ void main() {
   const float sideLength = length(side);
   side = sideLength > 1e-6 ? side / sideLength : vec3(0.0);  // a chain still gathered at its origin: no width
   along = float(k) / float(max(perChain - 1, 1u));
-  const float life = clamp(p.w, 0.0, 1.0);
-  const float radius = F.colourB.w * sqrt(life) * (1.0 - 0.6 * along);
+  life = clamp(p.w, 0.0, 1.0);
+  float radius = F.colourB.w * sqrt(life) * (1.0 - 0.5 * along);
+  const float depth = max((F.viewProjection * vec4(p.xyz, 1.0)).w, 1e-3);  // distance along the view
+  const float pixels = radius * F.tube.y / depth;
+  radius = life > 0.0 ? radius * max(1.0, F.tube.x / max(pixels, 1e-6)) : 0.0;
   across = (gl_VertexIndex & 1) == 0 ? -1.0 : 1.0;
-  hue = fract(float(chain) * 0.618034);
+  colour = (chain * 2654435761u >> 16) % 3u;  // neighbouring chains rarely share a colour
   gl_Position = F.viewProjection * vec4(p.xyz + side * across * radius, 1.0);
 }

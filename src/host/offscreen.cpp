@@ -72,6 +72,20 @@ FrameTimes Offscreen::renderFrame() {
   input_.actions.insert(input_.actions.end(), extraActions_.begin(), extraActions_.end());
   extraActions_.clear();
   renderer_.scene().update(input_);
+  FrameTimes times = draw(start);
+  ++input_.frame;
+  return times;
+}
+
+FrameTimes Offscreen::redrawFrame() {
+  if (!rendered_) throw Error("No frame has been rendered to draw again");
+  --input_.frame;  // the input the last frame was drawn with
+  FrameTimes times = draw(std::chrono::steady_clock::now());
+  ++input_.frame;
+  return times;
+}
+
+FrameTimes Offscreen::draw(std::chrono::steady_clock::time_point start) {
   VK_CHECK(vkResetCommandBuffer(cmd_, 0));
   const VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO, nullptr,
                                        VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
@@ -91,7 +105,6 @@ FrameTimes Offscreen::renderFrame() {
   times.passes = renderer_.timer().collect(0);
   for (const auto& pass : times.passes) times.gpuMs += pass.ms;
   input_.lastGpuMs = times.gpuMs;
-  ++input_.frame;
   return times;
 }
 

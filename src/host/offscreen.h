@@ -7,6 +7,7 @@
 #include "host/input_script.h"
 #include "host/scene_renderer.h"
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <utility>
@@ -39,6 +40,8 @@ class Offscreen {
   Offscreen(const gpu::Device& device, const OffscreenConfig& config);
 
   FrameTimes renderFrame();
+  // The last frame's input drawn again with no simulation step, as the gallery draws while paused.
+  FrameTimes redrawFrame();
   ImageRgba readback();  // the output of the last frame
   uint64_t frames() const { return input_.frame; }
   // False when an input script still holds events past the last rendered frame.
@@ -69,6 +72,7 @@ class Offscreen {
   std::optional<Pointer> extraPointer_;
   CursorTracker extraCursor_;
   bool rendered_ = false;
+  FrameTimes draw(std::chrono::steady_clock::time_point start);  // records, submits, waits: input_'s frame
 };
 
 }  // namespace vitrine::host

@@ -39,6 +39,11 @@ class NeonChainsGpu : public GpuTest {
         engine.release({maths::hash01({released, 1u, 9u}) * 6.0f - 3.0f,
                         maths::hash01({released, 2u, 9u}) * 6.0f - 3.0f,
                         maths::hash01({released, 3u, 9u}) * 6.0f - 3.0f});
+      // A pen (a drag's steered head) from step 1 to frame 2, moved every step: the shader puts the
+      // head where the CPU says.
+      if (s == 1) engine.release({0.5f, 1.0f, 1.5f}, true);
+      else if (s > 1 && s < 6) engine.steer({0.5f + 0.3f * float(s), 1.0f, 1.5f - 0.2f * float(s)});
+      else if (s == 6) engine.endSteer();
       engine.step(kDt);
     };
     for (uint32_t s = 0; s < 4; ++s) step(s);
@@ -74,7 +79,7 @@ class NeonChainsGpu : public GpuTest {
       const std::vector<neon::HeadState> snapshot = engine.latest().heads;
       for (const neon::HeadState& h : snapshot) ++statesSeen[h.info.x];
       std::copy(snapshot.begin(), snapshot.end(), heads.view<neon::HeadState>().begin());
-      const neon::ChainParams params{kDt, 0.35f, 1.5f, 0.5f, 10.0 + 0.7 * frame};
+      const neon::ChainParams params{kDt, neon::followerLerp(0.35f, kDt), 1.5f, 0.5f, 10.0 + 0.7 * frame};
 
       gpu::Buffer& previous = positions[frame % 2];
       gpu::Buffer& next = positions[(frame + 1) % 2];

@@ -1,4 +1,6 @@
+#include "scenes/neon/camera.h"
 #include "scenes/neon/facade.h"
+#include "scenes/neon/tube_light.h"
 #include "scenes/neon/look.h"
 #include "scenes/noodles/camera.h"
 
@@ -241,6 +243,66 @@ TEST(FacadeLighting, BrightUnderLedgesDarkInRecesses) {
   };
   EXPECT_GT(at(-7.0f, 1.0f)[0], at(-7.0f, 1.0f)[2]);
   EXPECT_LT(at(9.4f, 19.5f)[0], at(9.4f, 19.5f)[2]);
+}
+
+}  // namespace
+}  // namespace vitrine::neon
+
+namespace vitrine::neon {
+namespace {
+
+// Where a normalised cursor position projects to on screen again (0..1, origin top-left).
+glm::vec2 onScreen(glm::vec3 world, float aspect) {
+  const glm::vec4 clip = projectionMatrix(aspect) * viewMatrix() * glm::vec4(world, 1.0f);
+  return glm::vec2(clip.x, clip.y) / clip.w * 0.5f + 0.5f;
+}
+
+// A drag over the ground (the lower fifth of the frame) used to release tubes under the floor, where
+// the release plane runs below it; now it draws above the floor, under the cursor.
+TEST(NeonRelease, EveryRowOfTheFrameReleasesAboveTheGround) {
+  const float aspect = 16.0f / 9.0f;
+  for (float y = 0.0f; y <= 1.0f; y += 0.02f)
+    for (float x : {0.0f, 0.3f, 0.5f, 1.0f}) {
+      const auto at = cursorOnReleasePlane({x, y}, aspect);
+      ASSERT_TRUE(at) << x << " " << y;
+      EXPECT_GE(at->y, kMinReleaseHeight - 1e-4f) << x << " " << y;
+      EXPECT_LE(at->z, kReleasePlaneZ + 8.0f + 1e-4f);
+      if (at->z < kReleasePlaneZ + 8.0f - 1e-3f) {  // on the cursor's ray: the tube is drawn under the cursor
+        EXPECT_NEAR(glm::distance(onScreen(*at, aspect), glm::vec2(x, y)), 0.0f, 1e-4f) << x << " " << y;
+      }
+    }
+  // Above the ground the release plane itself, as before.
+  EXPECT_NEAR(cursorOnReleasePlane({0.5f, 0.4f}, aspect)->z, kReleasePlaneZ, 1e-4f);
+  // The lower fifth, nearer the camera, at the lowest height.
+  const auto low = *cursorOnReleasePlane({0.5f, 0.9f}, aspect);
+  EXPECT_GT(low.z, kReleasePlaneZ);
+  EXPECT_NEAR(low.y, kMinReleaseHeight, 1e-4f);
+}
+
+// The energy budget: one for a few tubes, then each tube dimmer, while the frame's total tube light
+// still grows with the count, but slower than the count (so 4096 tubes are not 25x the light of 160).
+TEST(NeonTubeLight, ExposureKeepsTheTotalLightGrowingSlowerThanTheCount) {
+  EXPECT_EQ(tubeExposure(0), 1.0f);
+  EXPECT_EQ(tubeExposure(uint32_t(kBudgetTubes)), 1.0f);
+  float lastTotal = 0.0f, lastExposure = 1.0f;
+  for (uint32_t n = 200; n <= 16384; n *= 2) {
+    const float total = float(n) * tubeExposure(n);
+    EXPECT_LT(tubeExposure(n), lastExposure);
+    EXPECT_GT(total, lastTotal);
+    lastTotal = total;
+    lastExposure = tubeExposure(n);
+  }
+  EXPECT_LT(4096.0f * tubeExposure(4096), 4.0f * kBudgetTubes) << "4096 tubes: under 4x the light of 160";
+}
+
+TEST(NeonTubeLight, ThinTubesAreWidenedToTheMinimumOnScreen) {
+  const float fov = kFovY;
+  // 0.1 m at 26 m: about 4.3 px of radius at 1080p, kept; about 1.1 px at 270p, widened.
+  EXPECT_EQ(drawnTubeRadius(0.1f, 26.0f, 1080.0f, fov), 0.1f);
+  EXPECT_NEAR(tubeRadiusPixels(0.1f, 26.0f, 1080.0f, fov), 4.46f, 0.05f);
+  const float small = drawnTubeRadius(0.1f, 26.0f, 270.0f, fov);
+  EXPECT_GT(small, 0.1f);
+  EXPECT_NEAR(tubeRadiusPixels(small, 26.0f, 270.0f, fov), kMinTubeRadiusPixels, 1e-4f);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -38,17 +39,28 @@ inline glm::vec3 clampToReleaseVolume(glm::vec3 at) {
   return glm::clamp(at, glm::vec3(-16.0f, 0.0f, kReleasePlaneZ - 8.0f), glm::vec3(16.0f, 20.0f, kReleasePlaneZ + 8.0f));
 }
 
-// The cursor's ray (normalised coordinates, origin top-left) met with the release plane.
+// The lowest a cursor's tube may be released, m above the ground: a tube's width above the floor, so
+// none is born under it.
+inline constexpr float kMinReleaseHeight = 0.5f;
+
+// Where the cursor (normalised coordinates, origin top-left) releases and steers its tube: where its
+// ray meets the release plane; a ray that meets the plane under kMinReleaseHeight (the lower fifth of
+// the frame, where the ground shows) meets the level kMinReleaseHeight instead, nearer the camera, so
+// the tube is drawn under the cursor and above the floor; no nearer than the release volume's front.
+// Every point lies on the cursor's ray except in the last case, which keeps the height.
 inline std::optional<glm::vec3> cursorOnReleasePlane(glm::vec2 normalized, float aspect) {
   const float f = std::tan(0.5f * kFovY);
   const glm::vec2 ndc = normalized * 2.0f - 1.0f;
-  const glm::mat4 view = viewMatrix();
-  const glm::mat3 toWorld = glm::transpose(glm::mat3(view));
-  const glm::vec3 dir = glm::normalize(toWorld * glm::vec3(ndc.x * f * aspect, -ndc.y * f, -1.0f));
-  if (std::abs(dir.z) < 1e-6f) return std::nullopt;
-  const float t = (kReleasePlaneZ - kEye.z) / dir.z;
-  if (t <= 0.0f) return std::nullopt;
-  return kEye + dir * t;
+  const glm::vec3 dir = glm::normalize(glm::transpose(glm::mat3(viewMatrix())) *
+                                       glm::vec3(ndc.x * f * aspect, -ndc.y * f, -1.0f));
+  if (dir.z > -1e-6f) return std::nullopt;  // the camera looks toward -z: such a ray never reaches the plane
+  glm::vec3 at = kEye + dir * ((kReleasePlaneZ - kEye.z) / dir.z);
+  if (at.y >= kMinReleaseHeight) return at;
+  if (dir.y < 0.0f) at = kEye + dir * ((kMinReleaseHeight - kEye.y) / dir.y);
+  constexpr float kFrontZ = kReleasePlaneZ + 8.0f;  // clampToReleaseVolume's front
+  if (at.z > kFrontZ) at = kEye + dir * ((kFrontZ - kEye.z) / dir.z);
+  at.y = std::max(at.y, kMinReleaseHeight);
+  return at;
 }
 
 }  // namespace vitrine::neon

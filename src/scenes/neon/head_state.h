@@ -20,13 +20,18 @@ enum class ChainState : uint32_t {
 // that shows the previous step's snapshot still sees one initialising state and places the chain.
 inline constexpr uint32_t kInitialisingSteps = 2;
 
+// Bits of info.w. A steered head is a pen: the GPU puts it where the CPU says (originLife.xyz, moved by
+// every steer) instead of letting it swim, so the chain behind it draws the pen's path as one tube.
+inline constexpr uint32_t kHeadSteered = 1u;
+
 struct HeadState {
   glm::vec4 originLife{0.0f};  // xyz: release position (world), w: life, 1 at release down to 0
-  glm::uvec4 info{0u};         // x: ChainState, y: release serial (1, 2, ...), z: steps since release, w: 0
+  glm::uvec4 info{0u};         // x: ChainState, y: release serial (1, 2, ...), z: steps since release, w: kHead* bits
 };
 static_assert(sizeof(HeadState) == 32 && alignof(HeadState) <= 16, "two std430 vec4s, no padding");
 static_assert(std::is_trivially_copyable_v<HeadState>, "copied between threads and into mapped memory");
 
 inline ChainState chainState(const HeadState& head) { return ChainState(head.info.x); }
+inline bool steered(const HeadState& head) { return (head.info.w & kHeadSteered) != 0u; }
 
 }  // namespace vitrine::neon

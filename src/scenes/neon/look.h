@@ -77,6 +77,11 @@ inline int bloomLevels(uint32_t height) {
   return levels;
 }
 
+// The bloom's soft threshold on the tubes' light (which holds nothing but tubes): low, so a dim or
+// dying tube still glows a little, while the knee keeps the faintest rims out.
+inline constexpr float kBloomThreshold = 0.3f;
+inline constexpr float kBloomKnee = 0.25f;
+
 struct BloomDownPush {     // bloom_down.comp
   float sourceLod = 0.0f;  // the mip of `source` holding level L - 1
   float threshold = 1.0f;  // max-channel brightness where the bloom starts (prefilter only)

@@ -57,7 +57,7 @@ gpu::Image& LookPasses::bloom(const FrameContext& frame, const Settings& setting
   for (int level = 1; level <= levels; ++level) {
     const bool first = level == 1;
     if (!first) frame.transition(down, gpu::use::ComputeSampleWrite);  // level - 1 was just written
-    const BloomDownPush push{first ? 0.0f : float(level - 2), 1.0f, 0.6f, first ? 1u : 0u};
+    const BloomDownPush push{first ? 0.0f : float(level - 2), kBloomThreshold, kBloomKnee, first ? 1u : 0u};
     down_.constants(frame.cmd, push);
     down_.push(frame.cmd, gpu::Bindings()
                               .sampledImage(first ? glow.view() : down.view(), mipped, first ? kSampled : kGeneral)

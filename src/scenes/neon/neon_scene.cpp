@@ -15,7 +15,9 @@
 #include "scenes/neon/look_passes.h"
 #include "scenes/neon/particle_engine.h"
 #include "scenes/neon/settings.h"
+#include "scenes/neon/tube_light.h"
 #include "maths/color.h"
+#include "maths/hash.h"
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -29,8 +31,14 @@ namespace {
 constexpr VkFormat kColourFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr uint32_t kLightingSize = 512;
 constexpr glm::vec3 kNightSky{0.004f, 0.005f, 0.012f};
+// The lighting texture's light on the building, scaled down so the tubes, not the facade, hold the eye.
+constexpr float kFacadeBrightness = 0.55f;
 constexpr uint32_t kAutopilotPens = 3;
-constexpr int kMaxChainStepsPerFrame = 4;  // catch-up chain steps in one frame at most
+constexpr size_t kMaxChainStepsPerFrame = 16;  // steps kept for one frame at most (the host makes up 4)
+// --reduced-motion: the heads swim this much slower, the flow does not drift, the autopilot releases
+// a quarter as often, and the tint, ripples and grain stand still.
+constexpr float kReducedMotionFlow = 0.35f;
+constexpr float kReducedMotionAutopilot = 0.25f;
 
 // Mirrors shaders/neon/camera.glsl.
 struct NeonFrame {
@@ -41,9 +49,15 @@ struct NeonFrame {
   glm::vec4 forward;
   glm::vec4 colourA;
   glm::vec4 colourB;
+  glm::vec4 colourC;
+  glm::vec4 tube;
   glm::uvec4 counts;
 };
-static_assert(sizeof(NeonFrame) == 176);
+static_assert(sizeof(NeonFrame) == 208);
+
+struct MergePush {  // merge.comp: the three neon colours, linear
+  glm::vec4 colours[3];
+};
 
 constexpr VkFormat kDepthCopyFormat = VK_FORMAT_R32_SFLOAT;  // the facade's depth, written by compute
 
@@ -87,9 +101,8 @@ class NeonScene final : public Scene {
                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                 0}),
         merge_(context.programs, "neon/merge.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                0}),
+               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                sizeof(MergePush)}),
         clear_(context.programs, "neon/clear.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 0}),
         look_(context) {
     colour_ = resources_.declare(screenImage("neon scene", kColourFormat,
@@ -135,6 +148,7 @@ class NeonScene final : public Scene {
   void handleCursor(const FrameInput& input);
   void autopilot(const FrameInput& input);
   void recordChains(const FrameContext& frame);
+  uint32_t aliveChains();
   void recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block);
 
   const gpu::Device& device_;
@@ -155,7 +169,7 @@ class NeonScene final : public Scene {
   int builtChains_ = 0, builtParticles_ = 0;
   std::optional<gpu::Buffer> heads_, particles_[2], boxBuffer_;
   uint32_t current_ = 0;  // which particle buffer holds this frame's positions
-  int stepsPending_ = 0;  // simulation steps since the chains last moved
+  std::vector<ChainParams> stepsPending_;  // one per simulation step since the chains last moved
   bool placed_ = false;   // the particle buffers have been filled once
   bool boxesUploaded_ = false;
   std::vector<Box> boxes_;
@@ -165,9 +179,9 @@ class NeonScene final : public Scene {
   float aspect_ = 16.0f / 9.0f;
 
   double time_ = 0.0;
-  float dt_ = 1.0f / 60.0f;
-  double lastInput_ = -1e9;         // when the cursor last released a head
-  std::optional<glm::vec3> dragFrom_;  // where the drag last released
+  double lastInput_ = -1e9;  // when the cursor last drew
+  bool drawing_ = false;     // a drag is steering its tube
+  bool reducedMotion_ = false;
   double autopilotNext_ = 0.0;
   uint64_t releases_ = 0;
 };
@@ -197,52 +211,61 @@ void NeonScene::release(double time, glm::vec3 position, const char* by) {
   events_.emit(time, {"release", {{"x", position.x}, {"y", position.y}, {"z", position.z}, {"by", by}}});
 }
 
-// Dragging releases heads along the cursor's path on the release plane, one every `spacing` metres,
-// so the rate follows the drag's speed.
+// A drag draws one tube: its press releases a steered head (a pen) under the cursor, every step of the
+// drag moves the pen there, and its chain follows the path; the button's release lets the tube go to
+// swim and fade like the others.
 void NeonScene::handleCursor(const FrameInput& input) {
   if (!input.cursor.dragging) {
-    dragFrom_.reset();
+    if (std::exchange(drawing_, false)) engine_->endSteer();
     return;
   }
   const auto at = cursorOnReleasePlane(input.cursor.normalized, aspect_);
   if (!at) return;
   lastInput_ = input.time;
-  if (!dragFrom_) {
-    release(input.time, *at, "cursor");
-    dragFrom_ = *at;
-    return;
+  if (!drawing_) {
+    engine_->release(*at, true);
+    ++releases_;
+    events_.emit(input.time, {"release", {{"x", at->x}, {"y", at->y}, {"z", at->z}, {"by", "cursor"}}});
+    drawing_ = true;
+  } else {
+    engine_->steer(*at);
   }
-  const glm::vec3 path = *at - *dragFrom_;
-  const float length = glm::length(path);
-  const int count = int(length / settings_.spacing);
-  for (int i = 1; i <= count; ++i) release(input.time, *dragFrom_ + path * (float(i) * settings_.spacing / length), "cursor");
-  if (count > 0) dragFrom_ = *dragFrom_ + path * (float(count) * settings_.spacing / length);
 }
 
-// When nobody plays, three pens wander slow Lissajous paths over the release plane and release heads
-// as they go; the first drag takes over at once.
+// When nobody plays, pens wander slow Lissajous paths over the release plane and release heads as
+// they go, each a little off the pen's path; the first drag takes over at once. Three pens for the
+// default rate, more for a faster one (one for every 10 heads a second, up to 48), so a dense
+// autopilot spreads its tubes over the facade instead of piling thousands onto three points.
 void NeonScene::autopilot(const FrameInput& input) {
   if (input.time - lastInput_ < settings_.autopilotIdle) {
     autopilotNext_ = input.time;
     return;
   }
+  const float rate = settings_.autopilotRate * (reducedMotion_ ? kReducedMotionAutopilot : 1.0f);
+  const uint32_t pens = std::clamp(uint32_t(std::lround(rate / 10.0f)), kAutopilotPens, 48u);
   while (autopilotNext_ <= input.time) {
     const double t = autopilotNext_;
-    for (uint32_t pen = 0; pen < kAutopilotPens; ++pen) {
-      const double phase = double(pen) * 2.1;
+    for (uint32_t pen = 0; pen < pens; ++pen) {
+      const double phase = double(pen) * (pen < kAutopilotPens ? 2.1 : 2.39996);
+      const glm::vec3 jitter{maths::hash01({uint32_t(releases_), 1u, 0x6a11u}) - 0.5f,
+                             maths::hash01({uint32_t(releases_), 2u, 0x6a11u}) - 0.5f, 0.0f};
       const glm::vec3 at{float(7.5 * std::sin(0.23 * t + phase)), float(7.0 + 5.0 * std::sin(0.31 * t + 1.7 * phase)),
                          kReleasePlaneZ + float(1.5 * std::sin(0.17 * t + phase))};
-      release(t, at, "autopilot");
+      release(t, at + jitter * 1.2f, "autopilot");
     }
-    autopilotNext_ += double(kAutopilotPens) / double(settings_.autopilotRate);
+    autopilotNext_ += double(pens) / double(rate);
   }
 }
 
 void NeonScene::update(const FrameInput& input) {
   quality_.update(settings_.tier, settings_.targetMs, input);
   time_ = input.time;
-  dt_ = input.dt;
-  if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) rebuild();
+  reducedMotion_ = input.reducedMotion;
+  if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) {
+    rebuild();
+    drawing_ = false;  // the new engine has no pen
+    stepsPending_.clear();
+  }
   engine_->setDecayPerSecond(settings_.decay);
   handleCursor(input);
   for (const ActionCall& call : input.actions)  // checked against kActions by the host
@@ -252,10 +275,24 @@ void NeonScene::update(const FrameInput& input) {
     }
   autopilot(input);
   engine_->step(input.dt);
-  ++stepsPending_;
+  // The chains move once per simulation step, by that step's dt and time, whatever the frame rate: a
+  // paused gallery draws frames with no step (the tubes stand still), a 144 Hz display draws some
+  // frames with none and a slow one some with two. The potentials drift slowly through noise space,
+  // so the flow the heads ride keeps changing (not under --reduced-motion).
+  const float strength = settings_.fieldStrength * (reducedMotion_ ? kReducedMotionFlow : 1.0f);
+  if (stepsPending_.size() >= kMaxChainStepsPerFrame) stepsPending_.erase(stepsPending_.begin());
+  stepsPending_.push_back({input.dt, followerLerp(settings_.lerp, input.dt), strength, settings_.fieldScale,
+                           reducedMotion_ ? 0.0 : input.time * 0.05});
+}
+
+uint32_t NeonScene::aliveChains() {
+  uint32_t alive = 0;
+  for (const HeadState& head : engine_->latest().heads) alive += chainState(head) != ChainState::Inactive;
+  return alive;
 }
 
 void NeonScene::recordChains(const FrameContext& frame) {
+  if (stepsPending_.empty()) return;  // no simulation step since the last frame: the chains stand
   const auto pass = frame.pass("neon chains");
   // A head the GPU never saw initialising (the worker ran ahead of the frames) is sent as initialising
   // once, so its chain starts at its origin instead of streaking in from the slot's last tube.
@@ -268,17 +305,10 @@ void NeonScene::recordChains(const FrameContext& frame) {
     frame.upload(*particles_[current_], 0, std::as_bytes(std::span(hidden)), gpu::use::ComputeReadBuffer);
     placed_ = true;
   }
-  // One chain step per simulation step since the last frame (a few at most), so a slow frame rate
-  // does not slow the tubes' motion against their life, which the engine counts in steps.
-  const int steps = std::clamp(stepsPending_, 1, kMaxChainStepsPerFrame);
-  stepsPending_ = 0;
-  // The potentials drift slowly through noise space, so the flow the heads ride keeps changing.
-  const ChainParams params{dt_, settings_.lerp, settings_.fieldStrength, settings_.fieldScale, time_ * 0.05};
-  const ChainPush push = chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params);
   const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_));
   chains_.bind(frame.cmd);
-  chains_.constants(frame.cmd, push);
-  for (int i = 0; i < steps; ++i) {
+  for (const ChainParams& params : std::exchange(stepsPending_, {})) {
+    chains_.constants(frame.cmd, chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params));
     gpu::Buffer& previous = *particles_[current_];
     gpu::Buffer& next = *particles_[current_ ^ 1u];
     frame.transition(previous, gpu::use::ComputeReadBuffer);
@@ -310,7 +340,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
     frame.transition(colour, gpu::use::ComputeWrite);
     frame.transition(depth, gpu::use::ComputeWrite);
     facade_.bind(frame.cmd);
-    facade_.constants(frame.cmd, glm::vec4(kNightSky, 1.0f));
+    facade_.constants(frame.cmd, glm::vec4(kNightSky, kFacadeBrightness));
     facade_.push(frame.cmd, gpu::Bindings()
                                 .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
                                 .storageBuffer(boxBuffer_->handle())
@@ -343,12 +373,13 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   const auto pass = frame.pass("neon merge");
   frame.transition(colour, gpu::use::ComputeReadWrite);
   frame.transition(depth, gpu::use::ComputeReadWrite);
-  frame.transition(glow, gpu::use::ComputeSample);
+  frame.transition(glow, gpu::use::ComputeReadWrite);
   merge_.bind(frame.cmd);
-  merge_.push(frame.cmd, gpu::Bindings()
-                             .storageImage(colour.view())
-                             .storageImage(depth.view())
-                             .sampledImage(glow.view(), nearest, kSampled));
+  merge_.constants(frame.cmd, MergePush{{glm::vec4(linear(settings_.colourA), 0.0f),
+                                         glm::vec4(linear(settings_.colourB), 0.0f),
+                                         glm::vec4(linear(settings_.colourC), 0.0f)}});
+  merge_.push(frame.cmd,
+              gpu::Bindings().storageImage(colour.view()).storageImage(depth.view()).storageImage(glow.view()));
   merge_.dispatchOver(frame.cmd, extent_, {8, 8});
 }
 
@@ -357,6 +388,7 @@ void NeonScene::record(const FrameContext& frame) {
   const glm::mat4 viewProjection = projectionMatrix(aspect_) * viewMatrix();
   const glm::mat3 axes = glm::transpose(glm::mat3(viewMatrix()));  // the camera's right, up and back in world
   const float tanHalf = std::tan(0.5f * kFovY);
+  const float focalPixels = 0.5f * float(extent_.height) / tanHalf;
   const NeonFrame block{viewProjection,
                         glm::vec4(kEye, kNear),
                         glm::vec4(axes[0] * tanHalf * aspect_, float(extent_.width)),
@@ -364,12 +396,14 @@ void NeonScene::record(const FrameContext& frame) {
                         glm::vec4(-axes[2], 0.0f),
                         glm::vec4(linear(settings_.colourA), settings_.glow),
                         glm::vec4(linear(settings_.colourB), settings_.radius),
+                        glm::vec4(linear(settings_.colourC), tubeExposure(aliveChains())),
+                        glm::vec4(kMinTubeRadiusPixels, focalPixels, 0.0f, 0.0f),
                         glm::uvec4(uint32_t(builtChains_), uint32_t(builtParticles_), uint32_t(boxes_.size()), 0u)};
   recordFacadeAndTubes(frame, frame.uniform(block));
   // The ground mirrors about the facade's foot, where it meets the ground straight ahead.
   const float footY = projectedRow(viewProjection, glm::vec3(0.0f), float(extent_.height));
   look_.record(frame, settings_, {frame.image(colour_), frame.image(depth_), frame.image(glow_), footY, kNear,
-                                  float(time_)});
+                                  reducedMotion_ ? 0.0f : float(time_)});
   const auto pass = frame.pass("neon clear");
   gpu::Image& glow = frame.image(glow_);
   frame.transition(glow, gpu::use::ComputeWrite);
@@ -380,9 +414,7 @@ void NeonScene::record(const FrameContext& frame) {
 }
 
 void NeonScene::drawPanel() {
-  const Snapshot& snapshot = engine_->latest();
-  uint32_t alive = 0;
-  for (const HeadState& head : snapshot.heads) alive += chainState(head) != ChainState::Inactive;
+  const uint32_t alive = aliveChains();
   ImGui::Text("%u of %d chains alive, %llu released", alive, builtChains_, (unsigned long long)releases_);
   ImGui::Text("particle engine: %s", mode_ == EngineMode::Worker ? "worker thread" : "lock-step");
   if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
@@ -394,6 +426,6 @@ constexpr SceneAction kActions[] = {
 };
 
 constinit const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema,
-    "Drag to release neon tubes along the cursor's path; leave it alone and the autopilot plays.", kActions);
+    "Drag to draw a neon tube along the cursor's path; leave it alone and the autopilot plays.", kActions);
 
 }  // namespace vitrine::neon

@@ -1,5 +1,6 @@
 #include "scenes/neon/particle_engine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -47,17 +48,25 @@ ParticleEngine::~ParticleEngine() {
   if (worker_.joinable()) worker_.join();
 }
 
-void ParticleEngine::release(glm::vec3 position) {
+void ParticleEngine::post(const Command& command) {
   std::lock_guard lock(inboxMutex_);
-  inbox_.push_back({position, 0.0f, 0.0f, false});  // no wake-up: releases wait for the next step
+  inbox_.push_back(command);  // no wake-up: it waits for the next step
 }
+
+void ParticleEngine::release(glm::vec3 position, bool steered) {
+  post({position, 0.0f, 0.0f, steered ? Kind::ReleaseSteered : Kind::Release});
+}
+
+void ParticleEngine::steer(glm::vec3 position) { post({position, 0.0f, 0.0f, Kind::Steer}); }
+
+void ParticleEngine::endSteer() { post({{}, 0.0f, 0.0f, Kind::EndSteer}); }
 
 void ParticleEngine::setDecayPerSecond(float decayPerSecond) {
   decayPerSecond_ = checkedRate(decayPerSecond, "decay per second");
 }
 
 void ParticleEngine::step(float dt) {
-  const Command command{{}, checkedRate(dt, "dt"), decayPerSecond_, true};
+  const Command command{{}, checkedRate(dt, "dt"), decayPerSecond_, Kind::Step};
   if (mode_ == EngineMode::LockStep) {
     // This thread is the simulation thread: take what was released so far, then step, here and now.
     {
@@ -97,7 +106,7 @@ void ParticleEngine::run() {
     }
     apply(batch_);  // without the lock: posters keep queueing into the other vector meanwhile
     uint64_t steps = 0;
-    for (const Command& command : batch_) steps += command.isStep;
+    for (const Command& command : batch_) steps += command.isStep();
     batch_.clear();
     {
       std::lock_guard lock(inboxMutex_);
@@ -111,16 +120,34 @@ void ParticleEngine::run() {
 // next step: nothing else touches the heads in between, so the result is the same.
 void ParticleEngine::apply(const std::vector<Command>& commands) {
   for (const Command& command : commands) {
-    if (!command.isStep) {
-      spawn(command.position);
-      continue;
+    switch (command.kind) {
+      case Kind::Release: spawn(command.position, false); break;
+      case Kind::ReleaseSteered: spawn(command.position, true); break;
+      case Kind::Steer:
+        if (HeadState* head = pen()) head->originLife = glm::vec4(command.position, head->originLife.w);
+        break;
+      case Kind::EndSteer: letPenGo(); break;
+      case Kind::Step:
+        advance(command.dt, command.decayPerSecond);
+        publish();
+        break;
     }
-    advance(command.dt, command.decayPerSecond);
-    publish();
   }
 }
 
-void ParticleEngine::spawn(glm::vec3 position) {
+void ParticleEngine::letPenGo() {
+  if (HeadState* head = pen()) head->info.w &= ~kHeadSteered;  // from now on it swims and fades
+  pen_ = {0, 0};
+}
+
+HeadState* ParticleEngine::pen() {
+  if (pen_.serial == 0) return nullptr;
+  HeadState& head = heads_[pen_.slot];
+  return chainState(head) != ChainState::Inactive && head.info.y == pen_.serial ? &head : nullptr;
+}
+
+void ParticleEngine::spawn(glm::vec3 position, bool steered) {
+  if (steered) letPenGo();  // one pen at a time
   uint32_t slot;
   if (!free_.empty()) {
     slot = free_.top();
@@ -129,14 +156,24 @@ void ParticleEngine::spawn(glm::vec3 position) {
     // Every slot is taken, so every slot has a live entry in occupants_ and the front live one is the
     // oldest release. It also has the lowest life: all alive heads lose the same amount each step,
     // and float subtraction of the same amount keeps their order, so an older head's life is lower
-    // or equal (equal lives, e.g. all still initialising at 1, go to the older release).
+    // or equal (equal lives, e.g. all still initialising at 1, go to the older release). The one
+    // exception is the pen, whose life is held: it is passed over (a single maxChains = 1 slot aside).
     dropStaleOccupants();
-    slot = occupants_.front().slot;
-    occupants_.pop_front();
+    auto oldest = occupants_.begin();
+    const auto live = [this](const Occupant& o) {
+      return chainState(heads_[o.slot]) != ChainState::Inactive && heads_[o.slot].info.y == o.serial;
+    };
+    if (oldest->serial == pen_.serial && maxChains_ > 1)
+      oldest = std::find_if(std::next(oldest), occupants_.end(), live);
+    slot = oldest->slot;
+    if (slot == pen_.slot) pen_ = {0, 0};
+    occupants_.erase(oldest);
   }
   ++serial_;
-  heads_[slot] = {glm::vec4(position, 1.0f), glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u, 0u)};
+  heads_[slot] = {glm::vec4(position, 1.0f), glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u,
+                                                        steered ? kHeadSteered : 0u)};
   occupants_.push_back({slot, uint32_t(serial_)});
+  if (steered) pen_ = {slot, uint32_t(serial_)};
   releasesApplied_.store(serial_, std::memory_order_relaxed);
 }
 
@@ -148,6 +185,7 @@ void ParticleEngine::advance(float dt, float decayPerSecond) {
     if (chainState(head) == ChainState::Inactive) continue;
     if (++head.info.z <= kInitialisingSteps) continue;
     head.info.x = uint32_t(ChainState::Alive);
+    if (steered(head)) continue;  // the pen keeps its full life while it draws
     head.originLife.w -= decayPerSecond * dt;
     if (head.originLife.w <= 0.0f) {
       head = HeadState{};  // inactive, life 0: the GPU leaves the tube where it is, and it draws nothing

@@ -90,7 +90,14 @@ class ParticleEngine {
   // head with the lowest life - the oldest, since all heads lose life at the same rate - is replaced.
   // With one thread releasing and stepping, both modes compute the same snapshots; releases from
   // several threads are applied in the order they took the inbox lock, which is up to the scheduler.
-  void release(glm::vec3 position);
+  // `steered`: the head is a pen (a drag): it stays where steer() last put it, with its life held at
+  // 1, until endSteer() or the next steered release lets it go to swim and fade like any other. The
+  // pen's slot is never the one a full engine replaces.
+  void release(glm::vec3 position, bool steered = false);
+  // Any thread: moves the pen (the last steered release) to `position` at the start of the next step.
+  void steer(glm::vec3 position);
+  // Any thread: lets the pen go.
+  void endSteer();
 
   // The stepping thread (one thread: the frame loop, or the test). Applies the pending releases, then
   // one step of `dt` seconds (finite, >= 0), then publishes a snapshot. Never waits for the worker.
@@ -110,11 +117,13 @@ class ParticleEngine {
   EngineMode mode() const { return mode_; }
 
  private:
+  enum class Kind : uint8_t { Release, ReleaseSteered, Steer, EndSteer, Step };
   struct Command {
-    glm::vec3 position;  // a release's
+    glm::vec3 position;  // a release's or a steer's
     float dt;            // a step's
     float decayPerSecond;
-    bool isStep;
+    Kind kind;
+    bool isStep() const { return kind == Kind::Step; }
   };
   struct Occupant {  // a slot taken by the release with this serial
     uint32_t slot;
@@ -123,7 +132,10 @@ class ParticleEngine {
 
   void run();                                        // the worker thread
   void apply(const std::vector<Command>& commands);  // the simulation thread, from here on
-  void spawn(glm::vec3 position);
+  void spawn(glm::vec3 position, bool steered);
+  void post(const Command& command);  // a release, steer or end of steering, into the inbox
+  HeadState* pen();                   // the steered head, if it still holds its slot
+  void letPenGo();
   void advance(float dt, float decayPerSecond);
   void dropStaleOccupants();
   void publish();
@@ -138,6 +150,7 @@ class ParticleEngine {
   std::priority_queue<uint32_t, std::vector<uint32_t>, std::greater<>> free_;  // free slots, lowest first
   std::deque<Occupant> occupants_;  // taken slots in release order, plus stale entries for freed ones
   uint64_t serial_ = 0;
+  Occupant pen_{0, 0};  // the steered release (serial 0: none)
   uint64_t steps_ = 0;
   std::vector<Command> batch_;  // the commands being applied, swapped out of the inbox
 

@@ -15,8 +15,8 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"decay", "decay", "Life lost per second once a tube is alive.", "tubes",
                                  kLogarithmic},
                                 &S::decay, 0.02, 4.0));
-    s.add(params::floatParam<S>({"lerp", "follower lerp", "How far each particle moves toward the one ahead, per "
-                                 "step.", "tubes"},
+    s.add(params::floatParam<S>({"lerp", "follower lerp", "Share of the gap to the particle ahead that each "
+                                 "particle closes in 1/60 s (the same tube at any step rate).", "tubes"},
                                 &S::lerp, 0.01, 1.0));
     s.add(params::floatParam<S>({"field_strength", "field strength", "Speed of the curl-noise flow the heads ride, "
                                  "m/s.", "tubes"},
@@ -27,13 +27,12 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"radius", "tube radius", "Radius at full life, m; it tapers as life falls.",
                                  "tubes"},
                                 &S::radius, 0.005, 0.5));
-    s.add(params::colourParam<S>({"colour_a", "colour A", "One end of the tubes' palette.", "tubes"}, &S::colourA));
-    s.add(params::colourParam<S>({"colour_b", "colour B", "The other end.", "tubes"}, &S::colourB));
+    s.add(params::colourParam<S>({"colour_a", "colour A", "One of the three neon colours a tube is lit in.", "tubes"}, &S::colourA));
+    s.add(params::colourParam<S>({"colour_b", "colour B", "Another of the tubes' three colours.", "tubes"},
+                                 &S::colourB));
+    s.add(params::colourParam<S>({"colour_c", "colour C", "The third.", "tubes"}, &S::colourC));
     s.add(params::floatParam<S>({"glow", "glow", "Emissive intensity of the gas.", "tubes", kLogarithmic},
                                 &S::glow, 0.1, 50.0));
-    s.add(params::floatParam<S>({"spacing", "release spacing", "A head is released every this many metres the "
-                                 "cursor drags.", "input", kLogarithmic},
-                                &S::spacing, 0.02, 5.0));
     s.add(params::floatParam<S>({"autopilot_idle", "autopilot after", "Seconds without input before the "
                                  "autopilot plays; input takes over at once.", "input"},
                                 &S::autopilotIdle, 0.0, 60.0));
@@ -69,7 +68,8 @@ const params::Schema& schema() {
     s.add(params::choiceParam<S>({"stage", "stage", "Show the frame after this stage: base, tubes, bloom, dof, "
                                   "tint, final.", "look", kTransient},
                                  &S::stage, {"base", "tubes", "bloom", "dof", "tint", "final"}));
-    s.preset({"dense", "4096 chains of 32.", {{"chains", "4096"}}});
+    s.preset({"dense", "4096 chains of 32, the autopilot releasing fast enough to keep most of them alive.",
+              {{"chains", "4096"}, {"autopilot_rate", "1400"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",
               {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
     addQualityParams<S>(s, "Render scale of the facade, tubes and post passes", 16.0f);

@@ -1,0 +1,51 @@
+#pragma once
+// How bright the neon tubes are and how wide they are drawn, in plain C++: the CPU picks the values,
+// shaders/neon/tube.vert and tube.frag use them (through NeonFrame).
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace vitrine::neon {
+
+// The tubes' light is additive, so a frame with many tubes alive would add up to a white glare; an
+// energy budget scales every tube's emission by tubeExposure(alive): 1 up to kBudgetTubes tubes, then
+// falling as alive^-kBudgetFalloff, so the frame's total tube light still grows with the count (more
+// tubes read as more) but only as alive^(1 - kBudgetFalloff), and overlaps stay coloured.
+inline constexpr float kBudgetTubes = 160.0f;
+inline constexpr float kBudgetFalloff = 0.9f;
+
+inline float tubeExposure(uint32_t alive) {
+  const float n = float(alive);
+  return n <= kBudgetTubes ? 1.0f : std::pow(kBudgetTubes / n, kBudgetFalloff);
+}
+
+// The thinnest a tube is drawn, in pixels of radius: a far tube on a small frame (480x270) would
+// otherwise be a ribbon a pixel wide that rasterises into stripes. A tube narrower than this on screen
+// is widened to it, so it stays a continuous, round line at every size.
+inline constexpr float kMinTubeRadiusPixels = 1.3f;
+
+// A tube's radius on screen, in pixels: `radius` metres at `depth` metres along the view, for a frame
+// `frameHeight` pixels tall seen through a vertical field of view `fovY`.
+inline float tubeRadiusPixels(float radius, float depth, float frameHeight, float fovY) {
+  return radius * (0.5f * frameHeight / std::tan(0.5f * fovY)) / depth;
+}
+
+// The radius drawn (metres): widened to kMinTubeRadiusPixels where the true one is thinner.
+inline float drawnTubeRadius(float radius, float depth, float frameHeight, float fovY) {
+  const float pixels = tubeRadiusPixels(radius, depth, frameHeight, fovY);
+  return pixels >= kMinTubeRadiusPixels ? radius : radius * kMinTubeRadiusPixels / std::max(pixels, 1e-6f);
+}
+
+// Where tubes cross, their light adds; but pink + cyan + amber is white. The merge pass gives the
+// pixel the nearest tube's colour at the luminance of the sum: a single tube is unchanged, crossing
+// tubes stay saturated (one reads in front of the other) and the light still adds up. Mirrored by
+// shaders/neon/merge.comp.
+inline glm::vec3 nearestColourLight(glm::vec3 sum, glm::vec3 nearest) {
+  const glm::vec3 luminance{0.2126f, 0.7152f, 0.0722f};
+  return nearest * (glm::dot(sum, luminance) / std::max(glm::dot(nearest, luminance), 1e-4f));
+}
+
+}  // namespace vitrine::neon

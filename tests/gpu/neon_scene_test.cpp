@@ -1,0 +1,204 @@
+// The neon scene as a whole, rendered headless on small frames: what its pictures promise, measured -
+// tubes that are many, coloured and not white at any density, motion that is a function of simulation
+// time only (a paused frame stands, a recording's finer steps draw the same tube), and tubes in a
+// still field.
+#include "host/input_script.h"
+#include "host/offscreen.h"
+#include "support/gpu_test.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vitrine::test {
+namespace {
+
+struct Render {
+  VkExtent2D size{240, 135};
+  double step = 1.0 / 60.0;
+  double seconds = 1.0;  // simulated
+  params::KeyValues values;
+  const char* script = nullptr;
+};
+
+ImageRgba render(const gpu::Device& device, const Render& r) {
+  host::OffscreenConfig config;
+  config.scene = "neon";
+  config.size = r.size;
+  config.step = r.step;
+  config.parameters = r.values;
+  if (r.script) config.input = host::parseInputScript(r.script, "test script");
+  host::Offscreen offscreen(device, config);
+  const int frames = int(std::lround(r.seconds / r.step));
+  for (int i = 0; i < frames; ++i) offscreen.renderFrame();
+  return offscreen.readback();
+}
+
+// The frame as a viewer sees it: sRGB-encoded display values.
+ImageRgba display(ImageRgba image) {
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) image.pixels[i] = linearToSrgb(std::clamp(image.pixels[i], 0.0f, 1.0f));
+  return image;
+}
+
+// Where the tubes changed `frame` from `facade` (the same frame without tubes, stage base) by more than
+// 0.1 in some channel.
+std::vector<bool> tubeMask(const ImageRgba& frame, const ImageRgba& facade) {
+  std::vector<bool> mask(size_t(frame.width) * frame.height);
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const float* p = &frame.pixels[i * 4];
+    const float* q = &facade.pixels[i * 4];
+    mask[i] = std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])}) >= 0.1f;
+  }
+  return mask;
+}
+
+float maxChannel(const float* p) { return std::max({p[0], p[1], p[2]}); }
+float minChannel(const float* p) { return std::min({p[0], p[1], p[2]}); }
+
+// Pixels a tube lights (the frame's brightest channel above `threshold`, tone-mapped linear light).
+size_t litPixels(const ImageRgba& image, float threshold) {
+  size_t lit = 0;
+  for (size_t i = 0; i < image.pixels.size(); i += 4) lit += maxChannel(&image.pixels[i]) > threshold;
+  return lit;
+}
+
+struct Colours {
+  double tubes = 0.0;      // share of the frame the tubes change (the tubes and their glow)
+  double saturated = 0.0;  // share of the bright tube pixels that are strongly coloured
+  double white = 0.0;      // share of the frame that is blown out to white
+};
+
+// `frame` against `facade` (tubeMask), in the tone-mapped linear light the scene writes.
+Colours colours(const ImageRgba& frame, const ImageRgba& facade) {
+  size_t tube = 0, bright = 0, saturated = 0, white = 0;
+  const std::vector<bool> mask = tubeMask(frame, facade);
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const float* p = &frame.pixels[i * 4];
+    white += minChannel(p) > 0.8f;
+    if (!mask[i]) continue;
+    ++tube;
+    const float hi = maxChannel(p), lo = minChannel(p);
+    if (hi < 0.35f) continue;
+    ++bright;
+    saturated += (hi - lo) / hi > 0.6f;
+  }
+  const double pixels = double(frame.width) * frame.height;
+  return {double(tube) / pixels, bright ? double(saturated) / double(bright) : 0.0, double(white) / pixels};
+}
+
+class NeonScene : public GpuTest {};
+
+// Dense or not, the tubes read as coloured neon: a fair share of the frame is tube, most of its
+// bright pixels strongly coloured, and almost none of the frame white. Measured after the bloom
+// (stage bloom: the tubes, their glow and the tone map, without the tint's and vignette's changes).
+// Measured at 160x90: the old scene's tubes covered 1.1 % of the frame at 256 chains (9 % of their
+// bright pixels saturated), and 4096 chains from a fast autopilot fused into white clouds around its
+// three pens (none saturated, 2.1 % of the frame white); now 14 % / 0.37 / 0.08 % at 256 chains and
+// 21 % / 0.48 / 0.04 % at 4096.
+TEST_F(NeonScene, TubesStayColouredAndDistinctAt256And4096Chains) {
+  const VkExtent2D size{160, 90};
+  const ImageRgba facade = render(device(), {size, 1.0 / 60.0, 1.0 / 60.0, {{"stage", "base"}}});
+  for (const auto& [chains, rate] : {std::pair{"256", "90"}, std::pair{"4096", "1400"}}) {
+    const Colours c = colours(
+        render(device(), {size, 1.0 / 60.0, 2.0, {{"chains", chains}, {"autopilot_rate", rate}, {"stage", "bloom"}}}),
+        facade);
+    RecordProperty(std::string("tubes_") + chains, std::to_string(c.tubes));
+    RecordProperty(std::string("saturated_") + chains, std::to_string(c.saturated));
+    RecordProperty(std::string("white_") + chains, std::to_string(c.white));
+    EXPECT_GT(c.tubes, 0.08) << chains << " chains: the tubes should be the subject of the frame";
+    EXPECT_GT(c.saturated, 0.3) << chains << " chains: the tubes should be saturated neon colours";
+    EXPECT_LT(c.white, 0.005) << chains << " chains: the tubes should not blow out to white";
+  }
+}
+
+// One tube released at the start, seen 2.5 s later: drawn in 60 Hz steps (the gallery) and in 240 Hz
+// steps (`record --fps 30 --spp 8`), it covers the same pixels within 10 %. Its width is the same in
+// both, so the lit area measures its length. With the followers' share per step, the recording's
+// tube was about four times shorter.
+TEST_F(NeonScene, TubeLengthIsTheSameAtTheGallerysStepAndARecordingsStep) {
+  const char* script = "0.00 action release 0 7 10\n";  // near the camera, a wide tube: many pixels
+  // A fast head and a slow fade, so that after 2.5 s the tail has long left the release point and the
+  // tube's length is the followers' lag times the head's speed.
+  const params::KeyValues values{{"stage", "tubes"}, {"chains", "16"},         {"autopilot_idle", "60"},
+                                 {"radius", "0.25"}, {"field_strength", "4"}, {"decay", "0.1"}};
+  const ImageRgba facade = render(device(), {{240, 135}, 1.0 / 60.0, 1.0 / 60.0, {{"stage", "base"}}});
+  const auto tubePixels = [&](double step) {
+    const std::vector<bool> mask = tubeMask(render(device(), {{240, 135}, step, 2.5, values, script}), facade);
+    return size_t(std::count(mask.begin(), mask.end(), true));
+  };
+  const size_t gallery = tubePixels(1.0 / 60.0), recording = tubePixels(1.0 / 240.0);
+  RecordProperty("gallery_pixels", int(gallery));
+  RecordProperty("recording_pixels", int(recording));
+  EXPECT_GT(gallery, 40u) << "the tube should be many pixels long";
+  EXPECT_NEAR(double(recording) / double(gallery), 1.0, 0.1) << gallery << " px at 60 Hz, " << recording << " at 240 Hz";
+}
+
+// The gallery draws frames without simulation steps while paused (and between the steps of a display
+// faster than 60 Hz): the picture must stand still. The chains used to move once per drawn frame.
+TEST_F(NeonScene, APausedFrameIsIdenticalAfterMoreDrawnFrames) {
+  host::OffscreenConfig config;
+  config.scene = "neon";
+  config.size = {160, 90};
+  config.parameters = {{"chains", "256"}};
+  host::Offscreen offscreen(device(), config);
+  for (int i = 0; i < 45; ++i) offscreen.renderFrame();
+  const ImageRgba before = offscreen.readback();
+  ASSERT_GT(litPixels(before, 0.3f), 20u) << "tubes to watch";
+  for (int i = 0; i < 6; ++i) offscreen.redrawFrame();
+  const ImageRgba after = offscreen.readback();
+  size_t changed = 0;
+  for (size_t i = 0; i < before.pixels.size(); ++i) changed += before.pixels[i] != after.pixels[i];
+  EXPECT_EQ(changed, 0u) << "values changed by drawing the paused frame again";
+}
+
+// In a still field (field_strength 0) the tubes used to collapse onto their release points and vanish.
+TEST_F(NeonScene, AStillFieldStillShowsTubes) {
+  const ImageRgba image =
+      render(device(), {{240, 135}, 1.0 / 60.0, 1.5, {{"chains", "256"}, {"field_strength", "0"}, {"stage", "tubes"}}});
+  const std::vector<bool> mask =
+      tubeMask(image, render(device(), {{240, 135}, 1.0 / 60.0, 1.0 / 60.0, {{"stage", "base"}}}));
+  EXPECT_GT(double(std::count(mask.begin(), mask.end(), true)) / (240.0 * 135.0), 0.004);
+}
+
+// A drag draws one tube along its path: its lit pixels form one connected piece (the drag used to
+// release a comb of separate short tubes).
+TEST_F(NeonScene, ADragDrawsOneConnectedTube) {
+  const char* script =
+      "0.00 move 0.2 0.45\n0.00 down\n0.15 move 0.4 0.35\n0.30 move 0.6 0.5\n0.45 move 0.8 0.4\n0.50 up\n";
+  const params::KeyValues values{{"stage", "tubes"}, {"chains", "64"}, {"autopilot_idle", "60"}};
+  const ImageRgba image = display(render(device(), {{320, 180}, 1.0 / 60.0, 0.55, values, script}));
+  const ImageRgba facade =
+      display(render(device(), {{320, 180}, 1.0 / 60.0, 1.0 / 60.0, {{"stage", "base"}, {"chains", "64"}}}));
+  const std::vector<bool> mask = tubeMask(image, facade);
+  const int w = int(image.width), h = int(image.height);
+  std::vector<int> label(size_t(w) * h, -1);
+  const auto lit = [&](int x, int y) { return bool(mask[size_t(y) * w + x]); };
+  int pieces = 0, largest = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!lit(x, y) || label[size_t(y) * w + x] >= 0) continue;
+      std::vector<std::pair<int, int>> stack{{x, y}};
+      label[size_t(y) * w + x] = pieces;
+      int size = 0;
+      while (!stack.empty()) {
+        const auto [px, py] = stack.back();
+        stack.pop_back();
+        ++size;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int qx = px + dx, qy = py + dy;
+            if (qx < 0 || qy < 0 || qx >= w || qy >= h || !lit(qx, qy) || label[size_t(qy) * w + qx] >= 0) continue;
+            label[size_t(qy) * w + qx] = pieces;
+            stack.push_back({qx, qy});
+          }
+      }
+      largest = std::max(largest, size);
+      if (size > 3) ++pieces;  // a stray pixel or two of aliasing is not a tube
+    }
+  EXPECT_EQ(pieces, 1) << "the largest piece has " << largest << " pixels";
+  EXPECT_GT(largest, 150) << "a tube across much of the frame";
+}
+
+}  // namespace
+}  // namespace vitrine::test
