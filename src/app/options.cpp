@@ -135,6 +135,7 @@ constexpr FlagRule kFlagRules[] = {
     {"--remote", kGallery | kHeadless},
     {"--remote-bind", kGallery | kHeadless},
     {"--remote-saves", kGallery},
+    {"--remote-allow", kGallery | kHeadless, true},
     {"--input", kHeadless | kRecord},
     {"--events", kHeadless | kRecord},
     {"--audio-out", kHeadless},

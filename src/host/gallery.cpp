@@ -224,16 +224,16 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
   for (const SceneInfo& info : sceneRegistry()) {
     const std::string_view first = firstScene.name;
     params::KeyValues values = settings_.valuesFor(info.name);
-    bool named = false;
+    bool given = false;  // the command line names values for this scene
     for (const auto& preset : presetsFor(options, info.name, info.name == first)) {
       const params::Preset* found = info.schema().findPreset(preset);
       if (!found) throw Error(fmt::format("Scene {} has no preset '{}'; vitrine --list-params {} lists them.",
                                           info.name, preset, info.name));
       values.insert(values.end(), found->values.begin(), found->values.end());
-      named = true;
+      given = true;
     }
-    for (auto& kv : parametersFor(options, info.name, info.name == first)) values.push_back(std::move(kv)), named = true;
-    if (!named) continue;
+    for (auto& kv : parametersFor(options, info.name, info.name == first)) values.push_back(std::move(kv)), given = true;
+    if (!given) continue;
     if (auto why = checkValues(info, values); !why.empty())
       throw Error(fmt::format("Scene {} rejects {}", info.name, why));
     settings_.remember(info.name, std::move(values), Clock::now());
