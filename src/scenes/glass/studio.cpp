@@ -39,14 +39,15 @@ constexpr std::array<StudioLight, 20> kLights{{
     {-0.44f, 0.0f, 0.022f, 0.022f, 0.006f, {120.0f, 118.0f, 115.0f}},
     {-0.22f, -0.38f, 0.022f, 0.022f, 0.006f, {120.0f, 118.0f, 115.0f}},
     {0.22f, -0.38f, 0.022f, 0.022f, 0.006f, {120.0f, 118.0f, 115.0f}},
-    // A wall of six thin light tubes behind the stone, 6 degrees apart: seen through the stone, where the
-    // seed's leaning exits look, their crisp edges are what its per-wavelength paths split into colour.
-    {kPi - 0.1f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
-    {kPi - 0.2f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
-    {kPi - 0.3f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
-    {-kPi + 0.1f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
-    {-kPi + 0.2f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
-    {-kPi + 0.3f, 0.05f, 0.005f, 0.35f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    // Six short, thin light tubes right behind the stone, 6 degrees apart: seen through the stone, where
+    // the seed's leaning exits look, their crisp edges are what its per-wavelength paths split into
+    // colour; short, so that the stone itself hides most of them from the camera.
+    {kPi - 0.1f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    {kPi - 0.2f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    {kPi - 0.3f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    {-kPi + 0.1f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    {-kPi + 0.2f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
+    {-kPi + 0.3f, 0.0f, 0.005f, 0.16f, 0.002f, {10.0f, 10.0f, 10.0f}},
 }};
 
 constexpr glm::vec3 kWarmWhite{1.0f, 0.975f, 0.95f};  // the cyclorama's paint
