@@ -26,16 +26,18 @@ class FixedStep {
 
   // The number of steps due once `elapsed` more seconds of (scaled) real time have passed, at most
   // `affordable` of them; what is beyond that is dropped, not owed, and counted as falling behind, as
-  // is `lost`: time that passed but is not to be simulated at all (a stall).
-  int advance(double elapsed, int affordable = INT_MAX, double lost = 0.0) {
+  // is `lost`: time that passed but is not to be simulated at all (a stall), and `givenUp`: simulated
+  // time that steps stood for but the scene's GPU simulation could not run (Scene::takeGivenUpSeconds).
+  int advance(double elapsed, int affordable = INT_MAX, double lost = 0.0, double givenUp = 0.0) {
     if (!(elapsed >= 0.0)) elapsed = 0.0;
     if (!(lost >= 0.0)) lost = 0.0;
+    if (!(givenUp >= 0.0)) givenUp = 0.0;
     accumulated_ += elapsed;
     const double whole = std::floor(accumulated_ / step_);
     const int due = whole >= double(INT_MAX) ? INT_MAX : int(whole);
     const int run = std::min(due, std::max(affordable, 0));
     accumulated_ -= double(due) * step_;  // the fraction of a step carries over
-    const double dropped = double(due - run) * step_ + lost;
+    const double dropped = std::min(double(due - run) * step_ + lost + givenUp, elapsed + lost);
     droppedSeconds_ = dropped;
     // The share of real time the simulation kept, smoothed over about a second of frames.
     if (const double passed = elapsed + lost; passed > 0.0) {
@@ -108,14 +110,15 @@ struct TimeControl {
   }
   void normal() { speed = 1.0f; }
 
-  // The steps due for `elapsed` seconds of real time, at most `affordable` (StepCost).
-  int due(FixedStep& steps, double elapsed, int affordable = INT_MAX) {
+  // The steps due for `elapsed` seconds of real time, at most `affordable` (StepCost); `givenUp` as
+  // FixedStep::advance takes it.
+  int due(FixedStep& steps, double elapsed, int affordable = INT_MAX, double givenUp = 0.0) {
     speed = clampSpeed(speed);
     if (paused) return std::exchange(stepRequested, false) ? 1 : (steps.advance(0.0), 0);
     stepRequested = false;
     const double scale = double(speed);
     const double offered = std::min(elapsed, kMaxGap);  // a stall: the rest of it is lost
-    return steps.advance(offered * scale, affordable, (elapsed - offered) * scale);
+    return steps.advance(offered * scale, affordable, (elapsed - offered) * scale, givenUp);
   }
 
  private:

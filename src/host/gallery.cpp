@@ -527,7 +527,7 @@ void Gallery::simulate() {
   if (kiosk_) kioskStep(elapsed, touched);
   cursor_.observe(pointer, !uiHidden_ && overlay_.wantsMouse());
   // Every step that is due, unless a step costs more than the time it stands for (StepCost).
-  const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed));
+  const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed), renderer_->scene().takeGivenUpSeconds());
   const bool firstSteps = input_.frame == 0;  // a scene's first update builds things: not its cost
   const auto simulating = Clock::now();
   for (int left = due; left > 0; --left) {

@@ -55,15 +55,25 @@ void Offscreen::addInput(std::vector<ActionCall> actions, std::optional<Pointer>
   if (pointer) extraPointer_ = pointer;
 }
 
-FrameTimes Offscreen::renderFrame() {
+FrameTimes Offscreen::renderFrame(uint32_t steps) {
   const auto start = std::chrono::steady_clock::now();
+  for (uint32_t i = 0; i < std::max(steps, 1u); ++i) {
+    if (i > 0) ++input_.frame;
+    step();
+  }
+  FrameTimes times = draw(start);
+  ++input_.frame;
+  return times;
+}
+
+void Offscreen::step() {
   input_.time = startTime_ + double(input_.frame) * step_;
   if (player_) {
-    StepInput step = player_->step(input_.time, size_);
-    input_.cursor = step.cursor;
-    input_.keysPressed = std::move(step.keysPressed);
-    input_.keysHeld = std::move(step.keysHeld);
-    input_.actions = std::move(step.actions);
+    StepInput scripted = player_->step(input_.time, size_);
+    input_.cursor = scripted.cursor;
+    input_.keysPressed = std::move(scripted.keysPressed);
+    input_.keysHeld = std::move(scripted.keysHeld);
+    input_.actions = std::move(scripted.actions);
   }
   if (extraPointer_) {
     extraCursor_.observe(*std::exchange(extraPointer_, std::nullopt), false);
@@ -72,9 +82,6 @@ FrameTimes Offscreen::renderFrame() {
   input_.actions.insert(input_.actions.end(), extraActions_.begin(), extraActions_.end());
   extraActions_.clear();
   renderer_.scene().update(input_);
-  FrameTimes times = draw(start);
-  ++input_.frame;
-  return times;
 }
 
 FrameTimes Offscreen::redrawFrame() {

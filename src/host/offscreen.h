@@ -7,6 +7,7 @@
 #include "host/input_script.h"
 #include "host/scene_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -39,7 +40,9 @@ class Offscreen {
  public:
   Offscreen(const gpu::Device& device, const OffscreenConfig& config);
 
-  FrameTimes renderFrame();
+  // One frame after `steps` simulation steps, as the gallery draws after a slow frame (the steps'
+  // frames are simulated, not drawn; frames() counts them all).
+  FrameTimes renderFrame(uint32_t steps = 1);
   // The last frame's input drawn again with no simulation step, as the gallery draws while paused.
   FrameTimes redrawFrame();
   ImageRgba readback();  // the output of the last frame
@@ -72,6 +75,7 @@ class Offscreen {
   std::optional<Pointer> extraPointer_;
   CursorTracker extraCursor_;
   bool rendered_ = false;
+  void step();  // one simulation step: input_'s frame, its script input, the scene's update
   FrameTimes draw(std::chrono::steady_clock::time_point start);  // records, submits, waits: input_'s frame
 };
 

@@ -123,6 +123,10 @@ class Scene {
   // the window freeze for seconds (noodles' strands, bloom's lattice). 1 for scenes whose cost hardly
   // depends on their parameters.
   virtual double frameCost(const void* /*values*/) const { return 1.0; }
+  // Simulated seconds the scene's GPU simulation gave up since it was last asked: steps it was updated
+  // for but could not run within one frame (bloom at a few frames a second). The gallery's clock
+  // counts them as falling behind, so the overlay says so.
+  virtual double takeGivenUpSeconds() { return 0.0; }
 };
 
 struct SceneInfo {

@@ -1,5 +1,6 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -19,25 +20,13 @@
 namespace vitrine {
 namespace {
 
-// A fresh, empty folder per test, removed afterwards (ctest may run the tests side by side).
-class AtomicFile : public ::testing::Test {
+class AtomicFile : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              folderName(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  static std::string folderName(const char* test) {
-    return std::string("vitrine-atomic-") + test + "-" + std::to_string(::getpid());
-  }
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(folder_)) names.push_back(entry.path().filename());
     return names;
   }
-  std::filesystem::path folder_;
 };
 
 std::string readAll(const std::filesystem::path& path) {

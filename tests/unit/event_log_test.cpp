@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "support/temp_folder.h"
 
 namespace vitrine::host {
 namespace {
@@ -113,16 +114,8 @@ TEST(EventLog, MemoryLogCollectsInOrder) {
   EXPECT_TRUE(log.events().empty());
 }
 
-class EventLogFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    folder_ = std::filesystem::path(::testing::TempDir()) / "vitrine_event_log_test";
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  std::filesystem::path folder_;
-};
+// One folder per test: ctest runs these side by side (a shared folder made them remove each other's files).
+using EventLogFiles = test::TempFolderTest;
 
 TEST_F(EventLogFiles, WritesOneLinePerEventWhenClosed) {
   const auto path = folder_ / "events.jsonl";

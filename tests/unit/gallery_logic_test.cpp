@@ -121,6 +121,21 @@ TEST(FixedStep, AStallIsNotMadeUp) {
   EXPECT_TRUE(steps.behind());
 }
 
+// Time a scene's GPU simulation gave up (bloom below 2 fps) is falling behind, as dropped steps are.
+TEST(FixedStep, TimeAScenesSimulationGaveUpIsFallingBehind) {
+  const double dt = 1.0 / 60.0;
+  FixedStep steps(dt);
+  TimeControl time;
+  steps.advance(0.0);
+  for (int frame = 0; frame < 10; ++frame) EXPECT_EQ(time.due(steps, 1.0, INT_MAX, frame ? 0.5 : 0.0), 60);
+  EXPECT_TRUE(steps.behind());
+  EXPECT_NEAR(steps.kept(), 0.5, 0.05);
+  for (int frame = 0; frame < 10; ++frame) time.due(steps, 1.0);
+  EXPECT_FALSE(steps.behind()) << "keeping up again";
+  time.due(steps, 1.0, INT_MAX, 5.0);
+  EXPECT_EQ(steps.kept(), 0.0) << "more given up than passed counts as all of it, never below";
+}
+
 // Issue 23: the speed field accepted and showed any number ("111111114326016.00x").
 TEST(TimeControl, SpeedStaysInItsRangeAndKeysStepThroughIt) {
   EXPECT_EQ(TimeControl::clampSpeed(111111114326016.0f), TimeControl::kMaxSpeed);

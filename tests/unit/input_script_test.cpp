@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "host/input_script.h"
+#include "support/temp_folder.h"
 
 namespace vitrine::host {
 namespace {
@@ -116,15 +117,8 @@ TEST(InputScript, RefusesMalformedLinesNamingFileAndLine) {
   }
 }
 
-class InputScriptFiles : public ::testing::Test {
+class InputScriptFiles : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    // One folder per test: ctest runs this fixture's tests side by side, and TearDown removes it.
-    folder_ = std::filesystem::path(::testing::TempDir()) /
-              (std::string("vitrine_input_script_test_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
   std::filesystem::path write(const std::string& name, const std::string& text) {
     const auto path = folder_ / name;
     std::ofstream(path, std::ios::binary) << text;
@@ -138,7 +132,6 @@ class InputScriptFiles : public ::testing::Test {
     }
     return "(no error)";
   }
-  std::filesystem::path folder_;
 };
 
 TEST_F(InputScriptFiles, LoadNamesTheFileInErrors) {

@@ -1,6 +1,7 @@
 // Every rule of the command line: what is accepted, and the sentence for what is not.
 #include "app/options.h"
 #include "core/error.h"
+#include "support/temp_folder.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -200,15 +201,7 @@ TEST(OptionsListParams, ListsEveryOrOneScene) {
 
 // --------------------------------------------------------------- --input, --events, --reset-settings
 
-class OptionsFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() / ("vitrine-options-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  std::filesystem::path folder_;
-};
+using OptionsFiles = test::TempFolderTest;
 
 TEST(Options, RecordTakesAFilmsShape) {
   const auto o = parse({"record", "--scene", "neon", "--seconds", "2.5", "--fps", "24", "--spp", "4", "--range",

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <utility>
 
 namespace vitrine::bloom {
 namespace {
@@ -28,7 +29,10 @@ namespace {
 // 256^3 sub-step's decay of a concentration near 1 is under half a half-float step, so a half lattice
 // vents at a speed set by the lattice size and the driver's rounding instead of the physics.
 constexpr VkFormat kLatticeFormat = VK_FORMAT_R32_SFLOAT;
-constexpr int kMaxStepsPerFrame = 4;                        // catch-up steps simulated in one frame at most
+// Simulated time one frame's diffusion catches up at most: all of it down to 2 fps, so the vapour
+// follows the clock on a slow device; below that the frame's own GPU time would grow with its
+// slowness, so the rest is given up and the gallery says the simulation is behind.
+constexpr float kMaxSecondsPerFrame = 0.5f;
 constexpr size_t kStatsWords = 8;
 constexpr uint32_t kStatsColumn = 8;  // voxels along z each statistics invocation counts (stats.comp)
 
@@ -139,8 +143,11 @@ class BloomScene final : public Scene {
     const bool near = input.cursor.present && vapour.distance < settings_.reach * kCrystalRadius;
     source_.voxel = worldToVoxel(vapour.point, uint32_t(settings_.lattice));
     source_.rate = settings_.sourceRate * (input.cursor.dragging ? settings_.dragBoost : 1.0f);
-    stepsPending_ = std::min(stepsPending_ + 1, kMaxStepsPerFrame);
     stepSeconds_ = input.dt;
+    if (stepsPending_ < std::max(1, int(std::lround(kMaxSecondsPerFrame / stepSeconds_))))
+      ++stepsPending_;
+    else
+      givenUpSeconds_ += double(stepSeconds_);
 
     // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
     proxy_ = proxyStep(proxy_, !exhaling_ && input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
@@ -186,6 +193,7 @@ class BloomScene final : public Scene {
     const auto& v = *static_cast<const Settings*>(values);
     return std::pow(double(v.lattice), 3.0) * (1.0 + double(v.samples) / 256.0);
   }
+  double takeGivenUpSeconds() override { return std::exchange(givenUpSeconds_, 0.0); }
 
   std::string checkParameters() const override {
     return thresholdOrderError(thresholds());
@@ -438,6 +446,7 @@ class BloomScene final : public Scene {
     float rate = 0.0f;
   } source_;
   int stepsPending_ = 0;
+  double givenUpSeconds_ = 0.0;  // steps beyond kMaxSecondsPerFrame, until the gallery asks
   float stepSeconds_ = 1.0f / 60.0f;
   float proxy_ = 0.0f;
   LatticeStats stats_;
