@@ -7,7 +7,6 @@
 #include "host/input_script.h"
 #include "host/scene_renderer.h"
 
-#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <string>

@@ -50,6 +50,13 @@ Hsv centreColour(const ImageRgba& image) {
   if (d > 0.0f) h = hi == r ? std::fmod((g - b) / d + 6.0f, 6.0f) : hi == g ? (b - r) / d + 2.0f : (r - g) / d + 4.0f;
   return {h * 60.0f, hi > 0.0f ? d / hi : 0.0f, hi};
 }
+// The mean absolute difference of two frames' channels.
+double difference(const ImageRgba& a, const ImageRgba& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - b.pixels[i]);
+  return sum / double(a.pixels.size());
+}
+
 float fromRed(float hue) { return std::min(hue, 360.0f - hue); }  // degrees from pure red
 
 // Each state started full with "fill" (the lattice a held cursor makes), 16 frames on: the crystal's
@@ -79,14 +86,9 @@ TEST_F(BloomScene, TheCrystalsCentreShowsEachStateInItsOwnColour) {
 }
 
 // A slow frame is followed by every step it stood for (host/fixed_step.h), and the lattice runs them
-// all: one frame after 29 extra updates shows the crystal as 30 frames of venting do, not as the 5
-// steps a cap of 4 a frame let through (the vapour crawled at a quarter speed at 15 fps and below).
+// all: one frame after 30 steps shows the crystal as 30 frames of venting do, not as the 4 steps the
+// old cap let through (the vapour crawled at a quarter speed at 15 fps and below).
 TEST_F(BloomScene, ASlowFrameRunsEveryStepItStoodFor) {
-  const auto difference = [](const ImageRgba& a, const ImageRgba& b) {
-    double sum = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - b.pixels[i]);
-    return sum / double(a.pixels.size());
-  };
   host::OffscreenConfig config;
   config.scene = "bloom";
   config.size = {160, 90};
@@ -113,11 +115,6 @@ TEST_F(BloomScene, ASlowFrameRunsEveryStepItStoodFor) {
 
 // Reduced motion: the climax holds still (no shimmer, no crawling jitter), where it otherwise moves.
 TEST_F(BloomScene, ReducedMotionHoldsTheClimaxStill) {
-  const auto difference = [](const ImageRgba& a, const ImageRgba& b) {
-    double sum = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - b.pixels[i]);
-    return sum / double(a.pixels.size());
-  };
   const ImageRgba still1 = render({{"fill", "1.05"}}, 48, kHover, true);
   const ImageRgba still2 = render({{"fill", "1.05"}}, 60, kHover, true);
   const ImageRgba moving1 = render({{"fill", "1.05"}}, 48, kHover, false);
