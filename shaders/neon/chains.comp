@@ -1,9 +1,13 @@
 #version 460
 // One invocation per particle of every neon chain: heads swim through curl noise, followers chase the
 // particle ahead. Reads last frame's positions, writes this frame's; src/scenes/neon/chains.h is the
-// CPU reference for exactly this.
+// CPU reference for exactly this, bit for bit: positions are integrated over hundreds of frames, so a
+// last-bit difference between drivers grows into a tube in another place. Every floating-point
+// operation on the way is an add, subtract, multiply, floor or conversion, which Vulkan rounds
+// correctly, and `precise` (NOISE_EXACT for the field) forbids fusing them; the one transcendental,
+// the launch direction, comes from the CPU in HeadState::launch.
 #extension GL_GOOGLE_include_directive : require
-#include "common/hash.glsl"
+#define NOISE_EXACT
 #include "neon/head_state.glsl"
 #include "noodles/field.glsl"
 
@@ -23,20 +27,13 @@ layout(push_constant) uniform Push {
   float noiseScale;
 } pc;
 
-// Mirrors kLaunchSpeed and launchVelocity in chains.h: a free head's own drift, on top of the flow.
-const float kLaunchSpeed = 0.6;
-vec3 launchVelocity(uint serial) {
-  const float angle = hash01(uvec3(serial, 0x6e656f6eu, 7u)) * 6.2831853;
-  return vec3(cos(angle), sin(angle), 0.0) * kLaunchSpeed;
-}
-
 void main() {
   // Rows of workgroups are stacked in y when one row cannot hold them all (see chainGroups()).
   uint index = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (index >= pc.chainCount * pc.particlesPerChain) return;
   HeadState head = heads[index / pc.particlesPerChain];
   uint k = index % pc.particlesPerChain;
-  vec3 position = previous[index].xyz;
+  precise vec3 position = previous[index].xyz;
   uint state = head.info.x;
   if (state == CHAIN_INITIALISING) {
     position = head.originLife.xyz;
@@ -45,7 +42,7 @@ void main() {
       position = head.originLife.xyz;  // a pen: where the cursor is
     } else if (k == 0u) {
       FieldSettings field = FieldSettings(FIELD_CURL, pc.noiseScale, pc.offsetY, pc.offsetZ, 0.0);
-      position += (flowVelocity(position, field) * pc.fieldStrength + launchVelocity(head.info.y)) * pc.dt;
+      position += (flowVelocity(position, field) * pc.fieldStrength + head.launch.xyz) * pc.dt;
     } else {
       position += (previous[index - 1u].xyz - position) * pc.lerp;
     }

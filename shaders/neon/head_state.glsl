@@ -10,6 +10,7 @@ const uint HEAD_STEERED = 1u;  // info.w bit: the head sits at originLife.xyz, w
 struct HeadState {
   vec4 originLife;  // xyz: release position (world), w: life 1..0
   uvec4 info;       // x: state, y: release serial, z: steps since release, w: HEAD_* bits
+  vec4 launch;      // xyz: the head's own drift, m/s, on top of the flow (computed on the CPU), w: 0
 };
 
 #endif

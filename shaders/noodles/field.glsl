@@ -15,19 +15,27 @@ struct FieldSettings {
 };
 
 vec3 curlNoise(vec3 q, FieldSettings s) {
+  NOISE_PRECISE vec3 qy = q + s.offsetY;
+  NOISE_PRECISE vec3 qz = q + s.offsetZ;
   vec3 gx = gradientNoise(q).gradient;
-  vec3 gy = gradientNoise(q + s.offsetY).gradient;
-  vec3 gz = gradientNoise(q + s.offsetZ).gradient;
-  return vec3(gz.y - gy.z, gx.z - gz.x, gy.x - gx.y);
+  vec3 gy = gradientNoise(qy).gradient;
+  vec3 gz = gradientNoise(qz).gradient;
+  NOISE_PRECISE vec3 curl = vec3(gz.y - gy.z, gx.z - gz.x, gy.x - gx.y);
+  return curl;
 }
 
 vec3 bitangentNoise(vec3 q, FieldSettings s) {
-  return cross(gradientNoise(q + s.offsetY).gradient, gradientNoise(q + s.offsetZ).gradient);
+  NOISE_PRECISE vec3 qy = q + s.offsetY;
+  NOISE_PRECISE vec3 qz = q + s.offsetZ;
+  vec3 a = gradientNoise(qy).gradient;
+  vec3 b = gradientNoise(qz).gradient;
+  NOISE_PRECISE vec3 t = a.yzx * b.zxy - a.zxy * b.yzx;  // cross(a, b), spelt out to carry `precise`
+  return t;
 }
 
 vec3 flowVelocity(vec3 p, FieldSettings s) {
-  vec3 q = p * s.noiseScale;
-  vec3 v = s.kind == FIELD_CURL ? curlNoise(q, s) : bitangentNoise(q, s);
+  NOISE_PRECISE vec3 q = p * s.noiseScale;
+  NOISE_PRECISE vec3 v = s.kind == FIELD_CURL ? curlNoise(q, s) : bitangentNoise(q, s);
   v.z += s.lift;
   return v;
 }

@@ -10,8 +10,6 @@
 
 namespace vitrine::gpu {
 
-std::span<const std::pair<std::string_view, std::span<const uint32_t>>> embeddedShaders();  // generated
-
 // ------------------------------------------------------------------------------------------ library
 
 ProgramLibrary::ProgramLibrary(const Device& device, std::filesystem::path sourceRoot, bool preferNewerSources)

@@ -1,5 +1,6 @@
 // The neon chain pass (shaders/neon/chains.comp) and its C++ reference (src/scenes/neon/chains.h) agree
-// over several frames of heads in every state, each side ping-ponging its own positions.
+// bit for bit over frames of heads in every state, each side ping-ponging its own positions: the
+// positions are integrated, so anything less than exact grows over a run (and did, between drivers).
 #include "gpu/resources.h"
 #include "gpu/program.h"
 #include "gpu/barriers.h"
@@ -22,20 +23,24 @@ namespace {
 
 class NeonChainsGpu : public GpuTest {
  protected:
-  static constexpr uint32_t kChains = 16, kPerChain = 32, kFrames = 5;
+  static constexpr uint32_t kChains = 16, kPerChain = 32;
   static constexpr float kDt = 0.0625f;  // with a decay of 4 per second: life falls by exactly 0.25 a step
 
   // Releases per engine step. Steps 0-3 come before the first frame, so the pass meets heads already
   // alive, heads that die during the run (the releases of step 0 are freed in their sixth step, frame 1),
-  // heads initialising in each frame, and slots that are never used.
-  static constexpr std::array<uint32_t, 4 + kFrames> kReleases{2, 1, 0, 3, 2, 1, 2, 1, 0};
+  // heads initialising in each frame, and slots that are never used. Later steps release from a hash.
+  static constexpr std::array<uint32_t, 9> kReleases{2, 1, 0, 3, 2, 1, 2, 1, 0};
+  static uint32_t releasesAt(uint32_t s) {
+    return s < kReleases.size() ? kReleases[s] : uint32_t(maths::hash01({s, 5u, 9u}) * 1.2f);
+  }
 
-  // Runs the frames on both sides with `groups` workgroups (chainGroups() when zero).
-  void expectMatchesReference(glm::uvec2 groups) {
-    neon::ParticleEngine engine({kChains, 4.0f}, neon::EngineMode::LockStep);
+  // Runs `frames` frames on both sides with `groups` workgroups (chainGroups() when zero); heads lose
+  // `decay` of their life per second once alive.
+  void expectMatchesReference(glm::uvec2 groups, uint32_t frames = 5, float decay = 4.0f) {
+    neon::ParticleEngine engine({kChains, decay}, neon::EngineMode::LockStep);
     uint32_t released = 0;
     auto step = [&](uint32_t s) {
-      for (uint32_t i = 0; i < kReleases[s]; ++i, ++released)
+      for (uint32_t i = 0; i < releasesAt(s); ++i, ++released)
         engine.release({maths::hash01({released, 1u, 9u}) * 6.0f - 3.0f,
                         maths::hash01({released, 2u, 9u}) * 6.0f - 3.0f,
                         maths::hash01({released, 3u, 9u}) * 6.0f - 3.0f});
@@ -73,8 +78,8 @@ class NeonChainsGpu : public GpuTest {
     if (groups == glm::uvec2(0u)) groups = neon::chainGroups(kParticles);
 
     std::array<uint32_t, 3> statesSeen{};
-    float worst = 0.0f, headTravel = 0.0f;
-    for (uint32_t frame = 0; frame < kFrames; ++frame) {
+    float headTravel = 0.0f;
+    for (uint32_t frame = 0; frame < frames; ++frame) {
       step(4 + frame);
       const std::vector<neon::HeadState> snapshot = engine.latest().heads;
       for (const neon::HeadState& h : snapshot) ++statesSeen[h.info.x];
@@ -102,9 +107,7 @@ class NeonChainsGpu : public GpuTest {
       for (uint32_t i = 0; i < kParticles; ++i) {
         const std::string where = fmt::format("frame {} chain {} particle {} state {}", frame, i / kPerChain,
                                               i % kPerChain, snapshot[i / kPerChain].info.x);
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(gpu[i][c], cpuNext[i][c], 1e-4f) << where;
-        ASSERT_EQ(gpu[i].w, cpuNext[i].w) << where;  // the head's life, copied
-        worst = std::max(worst, glm::length(glm::vec3(gpu[i]) - glm::vec3(cpuNext[i])));
+        ASSERT_EQ(gpu[i], cpuNext[i]) << where;  // w: the head's life, copied
         if (i % kPerChain == 0 && snapshot[i / kPerChain].info.x == uint32_t(neon::ChainState::Alive))
           headTravel = std::max(headTravel, glm::length(glm::vec3(cpuNext[i]) - glm::vec3(cpu[i])));
       }
@@ -115,11 +118,16 @@ class NeonChainsGpu : public GpuTest {
     EXPECT_GT(statesSeen[1], 0u);
     EXPECT_GT(statesSeen[2], 0u);
     EXPECT_GT(headTravel, 1e-2f);
-    RecordProperty("worst_position_difference", fmt::format("{:.3g}", worst));
   }
 };
 
 TEST_F(NeonChainsGpu, ShaderMatchesTheCppReference) { expectMatchesReference(glm::uvec2(0u)); }
+
+// 150 steps of 1/16 s, heads that live for 40 of them: they swim far through the field, which is where
+// a last-bit difference grew into a tube in another place (the H200's neon goldens, docs/RELIABILITY.md).
+TEST_F(NeonChainsGpu, AHundredAndFiftyFramesStayOnTheCppReferenceBitForBit) {
+  expectMatchesReference(glm::uvec2(0u), 150, 0.4f);
+}
 
 TEST_F(NeonChainsGpu, StackedRowsOfWorkgroupsMatchTheCppReference) {
   // 3 x 3 groups of 64 for 512 particles: rows as chainGroups() stacks them past 65535 groups, with an

@@ -1,5 +1,6 @@
 // The neon scene's CPU side: the particle engine's life cycle, slot choice, determinism and threading
 // (src/scenes/neon/particle_engine.h), and the chain update's CPU reference (src/scenes/neon/chains.h).
+#include "gpu/program.h"
 #include "maths/hash.h"
 #include "scenes/neon/chains.h"
 #include "scenes/neon/particle_engine.h"
@@ -14,8 +15,11 @@
 #include <cstddef>
 #include <cstring>
 #include <set>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace vitrine::neon {
@@ -34,13 +38,87 @@ bool sameHeads(const std::vector<HeadState>& a, const std::vector<HeadState>& b)
 
 // ---------------------------------------------------------------------------------------- layout
 
-TEST(NeonHeadState, IsTwoStd430Vec4s) {
-  EXPECT_EQ(sizeof(HeadState), 32u);
+TEST(NeonHeadState, IsThreeStd430Vec4s) {
+  EXPECT_EQ(sizeof(HeadState), 48u);
   EXPECT_EQ(offsetof(HeadState, originLife), 0u);
   EXPECT_EQ(offsetof(HeadState, info), 16u);
+  EXPECT_EQ(offsetof(HeadState, launch), 32u);
   const HeadState zero{};
   EXPECT_EQ(chainState(zero), ChainState::Inactive);
   EXPECT_EQ(zero.originLife.w, 0.0f);
+  EXPECT_EQ(zero.launch, glm::vec4(0.0f));
+}
+
+// The launch direction is a sine and a cosine: the CPU computes it once, at release, so that no GPU's
+// own transcendentals enter the integration (see the pass's arithmetic test below).
+TEST(NeonEngine, AReleaseCarriesItsLaunchVelocity) {
+  ParticleEngine engine({4, 1.0f}, EngineMode::LockStep);
+  engine.release({1.0f, 2.0f, 3.0f});
+  engine.release({0.0f, 0.0f, 0.0f}, true);  // a pen too: it swims off with its launch when let go
+  engine.step(0.25f);
+  std::set<std::pair<float, float>> directions;
+  for (const HeadState& h : engine.latest().heads) {
+    if (chainState(h) == ChainState::Inactive) {
+      EXPECT_EQ(h.launch, glm::vec4(0.0f));
+      continue;
+    }
+    EXPECT_EQ(h.launch, glm::vec4(launchVelocity(h.info.y), 0.0f)) << "serial " << h.info.y;
+    EXPECT_NEAR(glm::length(glm::vec3(h.launch)), kLaunchSpeed, 1e-6f);
+    EXPECT_EQ(h.launch.z, 0.0f) << "in the facade's plane";
+    directions.insert({h.launch.x, h.launch.y});
+  }
+  EXPECT_EQ(directions.size(), 2u) << "each tube its own direction";
+}
+
+// ------------------------------------------------------------------------------ the pass's arithmetic
+
+// The instructions of a SPIR-V module whose results are ids, by opcode (SPIR-V spec, 2.3).
+struct SpirvScan {
+  std::set<uint32_t> noContraction;                    // ids decorated NoContraction
+  std::vector<std::pair<uint16_t, uint32_t>> results;  // (opcode, result id) of the ops below
+  std::vector<uint32_t> std450;                        // GLSL.std.450 instruction numbers used
+};
+
+SpirvScan scanSpirv(std::span<const uint32_t> code) {
+  constexpr uint16_t kOpExtInstImport = 11, kOpExtInst = 12, kOpDecorate = 71, kNoContraction = 42;
+  // Floating-point arithmetic a driver could fuse or compute to less than correct rounding.
+  const std::set<uint16_t> kArithmetic{127 /*FNegate*/, 129 /*FAdd*/,  131 /*FSub*/,
+                                       133 /*FMul*/,    136 /*FDiv*/,  141 /*FMod*/,
+                                       142 /*VectorTimesScalar*/,      148 /*Dot*/};
+  SpirvScan scan;
+  uint32_t std450 = 0;  // the id of the GLSL.std.450 import (the debug information is another set)
+  for (size_t at = 5; at < code.size();) {
+    const uint16_t opcode = uint16_t(code[at] & 0xffffu), words = uint16_t(code[at] >> 16);
+    if (words == 0 || at + words > code.size()) throw std::runtime_error("malformed SPIR-V");
+    if (opcode == kOpDecorate && code[at + 2] == kNoContraction) scan.noContraction.insert(code[at + 1]);
+    if (kArithmetic.contains(opcode)) scan.results.push_back({opcode, code[at + 2]});
+    if (opcode == kOpExtInstImport &&
+        std::string(reinterpret_cast<const char*>(&code[at + 2])).starts_with("GLSL.std.450"))
+      std450 = code[at + 1];
+    if (opcode == kOpExtInst && code[at + 3] == std450) scan.std450.push_back(code[at + 4]);
+    at += words;
+  }
+  return scan;
+}
+
+// The chains are integrated on the GPU frame after frame, so they can only stay where the CPU
+// reference puts them, on every driver, if each operation rounds the same everywhere: additions,
+// subtractions and multiplications (correctly rounded in Vulkan) that no driver may fuse, floor, and
+// nothing else - no dot products, divisions or transcendentals, whose precision Vulkan leaves open.
+TEST(NeonChains, ThePassComputesOnlyCorrectlyRoundedUnfusedArithmetic) {
+  std::span<const uint32_t> code;
+  for (const auto& [name, spirv] : gpu::embeddedShaders())
+    if (name == "neon/chains.comp") code = spirv;
+  ASSERT_FALSE(code.empty());
+  const SpirvScan scan = scanSpirv(code);
+  EXPECT_GT(scan.results.size(), 40u) << "the curl noise is in the pass";
+  for (const auto& [opcode, id] : scan.results) {
+    EXPECT_NE(opcode, 136) << "a division";
+    EXPECT_NE(opcode, 148) << "a dot product";
+    EXPECT_TRUE(scan.noContraction.contains(id)) << "opcode " << opcode << ", id %" << id << " may be fused";
+  }
+  constexpr uint32_t kFloor = 8;
+  for (uint32_t instruction : scan.std450) EXPECT_EQ(instruction, kFloor) << "GLSL.std.450 instruction";
 }
 
 // ------------------------------------------------------------------------------------- life cycle
@@ -416,7 +494,7 @@ TEST(NeonPlacementGuard, PlacesAChainWhoseInitialisationWasSkipped) {
 ChainParams stillField(float lerp) { return {1.0f / 60.0f, lerp, 0.0f, 0.5f, 0.0}; }
 
 HeadState headIn(ChainState state, glm::vec3 origin, float life, uint32_t flags = 0u) {
-  return {glm::vec4(origin, life), glm::uvec4(uint32_t(state), 1u, 0u, flags)};
+  return {glm::vec4(origin, life), glm::uvec4(uint32_t(state), 1u, 0u, flags), glm::vec4(launchVelocity(1u), 0.0f)};
 }
 
 TEST(NeonChains, AFollowerConvergesGeometricallyToAStillHead) {
@@ -451,7 +529,7 @@ TEST(NeonChains, FollowersChaseLastFramesPositions) {
   stepChains(heads, P, previous, next, p);
   const glm::vec3 velocity = noodles::flowVelocity(glm::vec3(previous[0]), chainField(p));
   const glm::vec3 moved =
-      glm::vec3(previous[0]) + (velocity * p.fieldStrength + launchVelocity(heads[0].info.y)) * p.dt;
+      glm::vec3(previous[0]) + (velocity * p.fieldStrength + glm::vec3(heads[0].launch)) * p.dt;
   EXPECT_EQ(glm::vec3(next[0]), moved);
   EXPECT_GT(glm::length(moved - glm::vec3(previous[0])), 1e-3f);  // the field is not zero there
   for (uint32_t k = 1; k < P; ++k) EXPECT_EQ(glm::vec3(next[k]), glm::vec3(previous[k - 1])) << k;

@@ -4,12 +4,10 @@
 // (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
 // tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
 // particle depends only on the previous frame and the order of the invocations cannot matter.
-#include "maths/hash.h"
 #include "scenes/neon/head_state.h"
 #include "scenes/noodles/field.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -28,16 +26,6 @@ namespace vitrine::neon {
 // proportional to dt keeps that lag - and the tube's length, the sum of its followers' lags - the same
 // at every step rate: 60 Hz in the gallery, 240 Hz in `record --fps 30 --spp 8`.
 inline float followerLerp(float lerp60, float dt) { return std::clamp(lerp60 * dt * 60.0f, 0.0f, 1.0f); }
-
-// A free head leaves its release point at this speed, m/s, in a direction of its own (launchVelocity)
-// on top of the flow: tubes have length even in a still field (field_strength 0).
-inline constexpr float kLaunchSpeed = 0.6f;
-
-// The launch direction: in the facade's plane (the tube reads side-on), from the release serial.
-inline glm::vec3 launchVelocity(uint32_t serial) {
-  const float angle = maths::hash01(glm::uvec3(serial, 0x6e656f6eu, 7u)) * 6.2831853f;
-  return glm::vec3(std::cos(angle), std::sin(angle), 0.0f) * kLaunchSpeed;
-}
 
 struct ChainParams {
   float dt;             // seconds this step
@@ -67,7 +55,7 @@ inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t partic
     if (k == 0 && steered(head))  // a pen: where the cursor is
       position = glm::vec3(head.originLife);
     else if (k == 0)
-      position += (noodles::flowVelocity(position, field) * p.fieldStrength + launchVelocity(head.info.y)) * p.dt;
+      position += (noodles::flowVelocity(position, field) * p.fieldStrength + glm::vec3(head.launch)) * p.dt;
     else  // chase where the particle ahead was last step
       position += (glm::vec3(previous[index - 1]) - position) * p.lerp;
   }

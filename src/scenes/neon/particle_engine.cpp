@@ -170,8 +170,9 @@ void ParticleEngine::spawn(glm::vec3 position, bool steered) {
     occupants_.erase(oldest);
   }
   ++serial_;
-  heads_[slot] = {glm::vec4(position, 1.0f), glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u,
-                                                        steered ? kHeadSteered : 0u)};
+  heads_[slot] = {glm::vec4(position, 1.0f),
+                  glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u, steered ? kHeadSteered : 0u),
+                  glm::vec4(launchVelocity(uint32_t(serial_)), 0.0f)};
   occupants_.push_back({slot, uint32_t(serial_)});
   if (steered) pen_ = {slot, uint32_t(serial_)};
   releasesApplied_.store(serial_, std::memory_order_relaxed);
