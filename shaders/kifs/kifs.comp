@@ -5,19 +5,12 @@
 #include "common/color.glsl"
 #include "common/hash.glsl"
 #include "kifs/field.glsl"
+#include "kifs/march_push.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba16f) uniform writeonly image2D target;
 
-layout(push_constant) uniform Push {
-  vec2 angles;      // tumble + drag, radians on the xz and xy planes
-  uint frame;       // decorrelates jitter and grain between frames
-  uint seed;
-  int step;         // 1..9: the write-up's stages
-  int maxSteps;     // march budget (quality tier)
-  float grain;      // film grain amplitude (0 under reduced motion)
-  uint jitterFrame; // frame index for the ray-start jitter (frozen under reduced motion)
-} pc;
+layout(push_constant) uniform Push { KifsMarchPush pc; };
 
 const vec3 NAVY = vec3(0.027, 0.043, 0.098);
 

@@ -1,8 +1,8 @@
 #version 460
 // One invocation per particle of every neon chain: heads swim through curl noise, followers chase the
 // particle ahead. Reads last frame's positions, writes this frame's; src/scenes/neon/chains.h is the
-// CPU reference for exactly this, bit for bit: positions are integrated over hundreds of frames, so a
-// last-bit difference between drivers grows into a tube in another place. Every floating-point
+// CPU reference for exactly this, bit for bit: positions are integrated frame after frame, so a
+// last-bit difference between drivers would grow over a run instead of staying put. Every floating-point
 // operation on the way is an add, subtract, multiply, floor or conversion, which Vulkan rounds
 // correctly, and `precise` (NOISE_EXACT for the field) forbids fusing them; the one transcendental,
 // the launch direction, comes from the CPU in HeadState::launch.

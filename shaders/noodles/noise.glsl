@@ -38,7 +38,8 @@ NoiseSample cornerRamp(uvec3 cell, vec3 f, uvec3 corner) {
 }
 
 NoiseSample blend(NoiseSample a, NoiseSample b, float w, float dw, int axis) {
-  NOISE_PRECISE NoiseSample blended = NoiseSample(a.value + (b.value - a.value) * w, a.gradient + (b.gradient - a.gradient) * w);
+  NOISE_PRECISE NoiseSample blended =
+      NoiseSample(a.value + (b.value - a.value) * w, a.gradient + (b.gradient - a.gradient) * w);
   blended.gradient[axis] += (b.value - a.value) * dw;
   return blended;
 }

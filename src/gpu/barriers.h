@@ -68,6 +68,13 @@ inline constexpr BufferUse ComputeReadBuffer{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_
 inline constexpr BufferUse VertexReadBuffer{VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
 inline constexpr BufferUse FragmentReadBuffer{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                                               VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+// Atomics: a compute pass that reads and writes the same buffer (a visibility buffer's atomicMin).
+inline constexpr BufferUse ComputeReadWriteBuffer{
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+// The arguments of vkCmdDispatchIndirect, which the dispatched shader may read too (its count).
+inline constexpr BufferUse DispatchIndirectBuffer{
+    VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
 inline constexpr BufferUse IndirectBuffer{VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                                           VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT};
 inline constexpr BufferUse TransferDstBuffer{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};

@@ -74,9 +74,13 @@ void FrameResources::resize(VkExtent2D target) {
   target_ = target;
   for (Entry& entry : entries_)
     if (entry.decl.size.isRelative()) create(entry, target);
+  for (BufferEntry& entry : buffers_)
+    if (entry.decl.size.isRelative()) create(entry, target);
 }
 
-void FrameResources::beginFrame(VkCommandBuffer cmd, StreamArena& stream) {
+void FrameResources::beginFrame(VkCommandBuffer cmd, StreamArena& stream, uint32_t slot) {
+  slot_ = slot % framesInFlight_;
+  beginBuffers(cmd, stream);
   for (Entry& entry : entries_) {
     if (!entry.images[0]) continue;  // relative, before the first resize
     const bool history = entry.decl.pairing == Pairing::History;

@@ -1,10 +1,12 @@
 #pragma once
-// The images a scene declares instead of creating: by format, usage, mip count and a size relative to
-// its render target (1, 1/2, 1/4 ...) or absolute (a 96^3 lattice, a 1024^2 atlas), single, as a
-// ping-pong pair or as a history pair (this frame's and last frame's). The host creates them,
-// recreates relative ones on resize (the old ones are retired, never waited for), uploads initial
-// data, flips history pairs each frame and clears a history pair after it is (re)created, reporting
-// it invalid for that one frame.
+// The images and buffers a scene declares instead of creating. An image: by format, usage, mip count
+// and a size relative to its render target (1, 1/2, 1/4 ...) or absolute (a 96^3 lattice, a 1024^2
+// atlas), single, as a ping-pong pair or as a history pair (this frame's and last frame's). A buffer:
+// by usage and a size in bytes, absolute or per pixel of the target (a visibility buffer), single, a
+// ping-pong pair or one per frame in flight (CPU-written or read back), with initial bytes or a
+// word to clear it to. The host creates them, recreates relative ones on resize and redeclared ones
+// at once (the old ones are retired, never waited for), uploads initial data, flips history pairs
+// each frame and clears a history pair after it is (re)created, reporting it invalid for that frame.
 #include "gpu/resources.h"
 #include "gpu/stream.h"
 
@@ -24,8 +26,9 @@ struct ImageSize {
 
 enum class Pairing {
   Single,
-  PingPong,  // two images the scene flips between (iterative passes: read one, write the other)
-  History,   // flipped by the host each frame: current() is this frame's, previous() last frame's
+  PingPong,  // two the scene flips between (iterative passes: read one, write the other)
+  History,   // images: flipped by the host each frame: current() is this frame's, previous() last frame's
+  PerFrame,  // buffers: one per frame in flight, current() the one of the frame being recorded
 };
 
 struct ImageDecl {
@@ -44,6 +47,30 @@ struct ImageHandle {
   uint32_t index = ~0u;
 };
 
+struct BufferSize {
+  VkDeviceSize bytes = 0;     // absolute
+  VkDeviceSize perPixel = 0;  // relative: this many bytes per pixel of the target
+  static BufferSize absolute(VkDeviceSize bytes) { return {bytes, 0}; }
+  static BufferSize relative(VkDeviceSize bytesPerPixel) { return {0, bytesPerPixel}; }
+  bool isRelative() const { return perPixel > 0; }
+};
+
+struct BufferDecl {
+  std::string name;
+  BufferSize size;
+  VkBufferUsageFlags usage = 0;
+  Pairing pairing = Pairing::Single;
+  MemoryUse memory = MemoryUse::Device;
+  std::vector<std::byte> initial;  // uploaded at creation (a prefix of the buffer)
+  bool clear = false;              // else every 32-bit word set to clearValue at creation
+  uint32_t clearValue = 0;
+  BufferUse initialUse = use::ComputeReadBuffer;  // where initial contents leave it
+};
+
+struct BufferHandle {
+  uint32_t index = ~0u;
+};
+
 class FrameResources {
  public:
   // Destroying the set destroys its images at once: its owner retires the whole set (a scene switch)
@@ -59,10 +86,20 @@ class FrameResources {
   // are uploaded or cleared as the next frame begins, and using one before that is an error.
   void redeclare(ImageHandle handle, ImageDecl decl);
 
-  // Host: the scene's target has this extent; recreates relative images whose size changed.
+  // Buffers, likewise: absolute ones exist at once, relative ones from the next resize on; a
+  // redeclared buffer (a size that follows a parameter) is recreated at once, the old one retired.
+  BufferHandle declare(BufferDecl decl);
+  void redeclare(BufferHandle handle, BufferDecl decl);
+  Buffer& current(BufferHandle handle);   // Single: the buffer. PingPong: the one to read. PerFrame: this frame's
+  Buffer& previous(BufferHandle handle);  // PingPong: the one to write
+  void flip(BufferHandle handle);         // PingPong: swaps current and previous
+
+  // Host: how many frames may be in flight (PerFrame buffers), before any buffer is declared.
+  void setFramesInFlight(uint32_t frames) { framesInFlight_ = frames; }
+  // Host: the scene's target has this extent; recreates relative images and buffers whose size changed.
   void resize(VkExtent2D target);
   // Host, first thing in a frame: initial uploads, history flips and clears.
-  void beginFrame(VkCommandBuffer cmd, StreamArena& stream);
+  void beginFrame(VkCommandBuffer cmd, StreamArena& stream, uint32_t slot = 0);
 
   Image& current(ImageHandle handle);   // Single: the image. PingPong: the one to read. History: this frame's
   Image& previous(ImageHandle handle);  // PingPong: the one to write. History: last frame's
@@ -79,11 +116,22 @@ class FrameResources {
     bool fresh = true;         // created since the last beginFrame: upload / clear pending
     bool historyValid = false;
   };
+  struct BufferEntry {
+    BufferDecl decl;
+    std::vector<Buffer> buffers;
+    uint32_t front = 0;
+    bool fresh = true;
+  };
   void create(Entry& entry, VkExtent2D target);
+  void create(BufferEntry& entry, VkExtent2D target);
+  void beginBuffers(VkCommandBuffer cmd, StreamArena& stream);
   Entry& ready(ImageHandle handle);
+  BufferEntry& ready(BufferHandle handle);
   const Device& device_;
   std::vector<Entry> entries_;
+  std::vector<BufferEntry> buffers_;
   VkExtent2D target_{0, 0};
+  uint32_t framesInFlight_ = 1, slot_ = 0;
 };
 
 }  // namespace vitrine::gpu

@@ -110,72 +110,117 @@ void ProgramLibrary::remove(Program* program) { std::erase(programs_, program); 
 
 // ------------------------------------------------------------------------------------------ bindings
 
-Bindings::Slot& Bindings::next(VkDescriptorType type) {
+Bindings::Slot& Bindings::next(std::string_view name, VkDescriptorType type) {
   if (count_ == kMax) throw Error("Too many descriptor bindings for one program");
+  if (name.empty() || name.size() >= kMaxName) throw Error(fmt::format("Binding name '{}' is empty or too long", name));
+  for (uint32_t i = 0; i < count_; ++i)
+    if (slots_[i].nameView() == name) throw Error(fmt::format("Binding '{}' is given twice", name));
   Slot& slot = slots_[count_++];
-  slot = {type, {}, {}};
+  slot = {{}, type, {}, {}};
+  name.copy(slot.name.data(), name.size());
   return slot;
 }
 
-Bindings& Bindings::storageImage(VkImageView view, VkImageLayout layout) {
-  next(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).image = {VK_NULL_HANDLE, view, layout};
+Bindings& Bindings::storageImage(std::string_view name, VkImageView view, VkImageLayout layout) {
+  next(name, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).image = {VK_NULL_HANDLE, view, layout};
   return *this;
 }
 
-Bindings& Bindings::sampledImage(VkImageView view, VkSampler sampler, VkImageLayout layout) {
-  next(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).image = {sampler, view, layout};
+Bindings& Bindings::sampledImage(std::string_view name, VkImageView view, VkSampler sampler, VkImageLayout layout) {
+  next(name, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).image = {sampler, view, layout};
   return *this;
 }
 
-Bindings& Bindings::storageBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  next(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).buffer = {buffer, offset, range};
+Bindings& Bindings::storageBuffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  next(name, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).buffer = {buffer, offset, range};
   return *this;
 }
 
-Bindings& Bindings::uniformBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-  next(VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).buffer = {buffer, offset, range};
+Bindings& Bindings::uniformBuffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  next(name, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).buffer = {buffer, offset, range};
   return *this;
 }
 
 // ------------------------------------------------------------------------------------------- program
 
 Program::Program(ProgramLibrary& library, std::string label, std::vector<std::string> shaders,
-                 const ProgramLayout& layout, VkPipelineBindPoint bindPoint)
+                 const ProgramOptions& options, VkPipelineBindPoint bindPoint)
     : library_(library), label_(std::move(label)), shaders_(std::move(shaders)), bindPoint_(bindPoint),
-      specializationValues_(layout.specialization) {
-  const Device& dev = library.device();
+      specializationValues_(options.specialization) {
   for (uint32_t i = 0; i < specializationValues_.size(); ++i)
     specializationEntries_.push_back({i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)});
   specializationInfo_ = {uint32_t(specializationEntries_.size()), specializationEntries_.data(),
                          specializationValues_.size() * sizeof(int32_t), specializationValues_.data()};
   stages_ = bindPoint == VK_PIPELINE_BIND_POINT_COMPUTE ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_ALL_GRAPHICS;
+  interface_ = reflect();
+  createLayouts();
+  library_.add(this);
+}
+
+Program::~Program() { library_.remove(this); }
+
+// The stages' interfaces as one: a binding number two stages share must be the same resource, and
+// the push block is as large as the largest stage's (each stage declares the part it reads).
+ShaderInterface Program::reflect() const {
+  ShaderInterface merged;
+  for (const auto& shader : shaders_) {
+    ShaderInterface stage = reflectShader(library_.spirv(shader), shader);
+    for (auto& binding : stage.bindings) {
+      const auto same = std::find_if(merged.bindings.begin(), merged.bindings.end(),
+                                     [&](const auto& b) { return b.binding == binding.binding; });
+      if (same == merged.bindings.end()) {
+        merged.bindings.push_back(std::move(binding));
+      } else if (same->type != binding.type || same->name != binding.name) {
+        throw Error(fmt::format("{}: binding {} is {} '{}' in one stage and {} '{}' in {}", label_, binding.binding,
+                                describe(same->type), same->name, describe(binding.type), binding.name, shader));
+      }
+    }
+    merged.pushConstantBytes = std::max(merged.pushConstantBytes, stage.pushConstantBytes);
+    if (bindPoint_ == VK_PIPELINE_BIND_POINT_COMPUTE) merged.localSize = stage.localSize;
+  }
+  std::sort(merged.bindings.begin(), merged.bindings.end(),
+            [](const auto& a, const auto& b) { return a.binding < b.binding; });
+  return merged;
+}
+
+void Program::createLayouts() {
+  const Device& dev = device();
   std::vector<VkDescriptorSetLayoutBinding> bindings;
-  for (uint32_t i = 0; i < layout.bindings.size(); ++i)
-    bindings.push_back({i, layout.bindings[i], 1, stages_, nullptr});
+  for (const auto& binding : interface_.bindings)
+    bindings.push_back({binding.binding, binding.type, 1, stages_, nullptr});
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
   setInfo.pBindings = bindings.data();
   VkDescriptorSetLayout setLayout;
   VK_CHECK(vkCreateDescriptorSetLayout(dev, &setInfo, nullptr, &setLayout));
+  if (setLayout_) dev.retire(std::move(setLayout_));
   setLayout_ = Unique<VkDescriptorSetLayout>(dev, setLayout);
 
-  const VkPushConstantRange range{stages_, 0, layout.pushConstantBytes};
+  const VkPushConstantRange range{stages_, 0, interface_.pushConstantBytes};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &setLayout;
-  layoutInfo.pushConstantRangeCount = layout.pushConstantBytes ? 1 : 0;
+  layoutInfo.pushConstantRangeCount = interface_.pushConstantBytes ? 1 : 0;
   layoutInfo.pPushConstantRanges = &range;
   VkPipelineLayout pipelineLayout;
   VK_CHECK(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &pipelineLayout));
+  if (layout_) dev.retire(std::move(layout_));
   layout_ = Unique<VkPipelineLayout>(dev, pipelineLayout);
   dev.name(pipelineLayout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, label_ + " layout");
-  library_.add(this);
 }
 
-Program::~Program() { library_.remove(this); }
-
 void Program::rebuild() {
+  if (pipeline_) {  // a reload: the edited shader may declare other bindings or another push block
+    ShaderInterface fresh = reflect();
+    const bool sameLayout = fresh.pushConstantBytes == interface_.pushConstantBytes &&
+                            std::equal(fresh.bindings.begin(), fresh.bindings.end(), interface_.bindings.begin(),
+                                       interface_.bindings.end(), [](const auto& a, const auto& b) {
+                                         return a.binding == b.binding && a.type == b.type;
+                                       });
+    interface_ = std::move(fresh);
+    if (!sameLayout) createLayouts();
+  }
   Unique<VkPipeline> fresh(device(), build());
   if (pipeline_) device().retire(std::move(pipeline_));  // frames in flight may still run the old one
   pipeline_ = std::move(fresh);
@@ -194,28 +239,55 @@ Unique<VkShaderModule> Program::module(const std::string& shader) const {
 
 void Program::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
 
+// Every binding the shader declares must be given once, by its name and of its type, and nothing
+// else: the writes are made in the shader's binding order, whatever order the scene gave them in.
 void Program::push(VkCommandBuffer cmd, const Bindings& bindings) const {
   std::array<VkWriteDescriptorSet, Bindings::kMax> writes{};
-  for (uint32_t i = 0; i < bindings.count_; ++i) {
-    const Bindings::Slot& slot = bindings.slots_[i];
-    const bool image = slot.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE ||
-                       slot.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  if (interface_.bindings.size() > Bindings::kMax)
+    throw Error(fmt::format("{}: declares {} bindings, more than {}", label_, interface_.bindings.size(), Bindings::kMax));
+  uint32_t used = 0;
+  for (size_t i = 0; i < interface_.bindings.size(); ++i) {
+    const ReflectedBinding& expected = interface_.bindings[i];
+    const Bindings::Slot* given = nullptr;
+    for (uint32_t s = 0; s < bindings.count_; ++s)
+      if (bindings.slots_[s].nameView() == expected.name) given = &bindings.slots_[s];
+    if (!given)
+      throw Error(fmt::format("{}: binding {} '{}' ({}) was not given", label_, expected.binding, expected.name,
+                              describe(expected.type)));
+    if (given->type != expected.type)
+      throw Error(fmt::format("{}: binding {} '{}' is a {} in the shader, given a {}", label_, expected.binding,
+                              expected.name, describe(expected.type), describe(given->type)));
+    const bool image = given->type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE ||
+                       given->type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstBinding = i;
+    writes[i].dstBinding = expected.binding;
     writes[i].descriptorCount = 1;
-    writes[i].descriptorType = slot.type;
-    writes[i].pImageInfo = image ? &slot.image : nullptr;
-    writes[i].pBufferInfo = image ? nullptr : &slot.buffer;
+    writes[i].descriptorType = given->type;
+    writes[i].pImageInfo = image ? &given->image : nullptr;
+    writes[i].pBufferInfo = image ? nullptr : &given->buffer;
+    ++used;
   }
-  device().cmdPushDescriptorSet(cmd, bindPoint_, layout_, 0, bindings.count_, writes.data());
+  if (used != bindings.count_) {
+    std::string names;
+    for (const auto& b : interface_.bindings) names += fmt::format("{}{}", names.empty() ? "" : ", ", b.name);
+    for (uint32_t s = 0; s < bindings.count_; ++s)
+      if (std::none_of(interface_.bindings.begin(), interface_.bindings.end(),
+                       [&](const auto& b) { return b.name == bindings.slots_[s].nameView(); }))
+        throw Error(fmt::format("{}: the shader has no binding '{}' (it has: {})", label_,
+                                bindings.slots_[s].nameView(), names.empty() ? "none" : names));
+  }
+  if (used) device().cmdPushDescriptorSet(cmd, bindPoint_, layout_, 0, used, writes.data());
 }
 
 void Program::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const {
+  if (size != interface_.pushConstantBytes)
+    throw Error(fmt::format("{}: the push block is {} bytes in the shader, {} given", label_,
+                            interface_.pushConstantBytes, size));
   vkCmdPushConstants(cmd, layout_, stages_, 0, size, data);
 }
 
-ComputeProgram::ComputeProgram(ProgramLibrary& library, const std::string& shader, const ProgramLayout& layout)
-    : Program(library, shader, {shader}, layout, VK_PIPELINE_BIND_POINT_COMPUTE) {
+ComputeProgram::ComputeProgram(ProgramLibrary& library, const std::string& shader, const ProgramOptions& options)
+    : Program(library, shader, {shader}, options, VK_PIPELINE_BIND_POINT_COMPUTE) {
   rebuild();
 }
 
@@ -230,18 +302,22 @@ VkPipeline ComputeProgram::build() const {
   return pipeline;
 }
 
-void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent3D extent, VkExtent3D local) const {
-  vkCmdDispatch(cmd, (extent.width + local.width - 1) / local.width, (extent.height + local.height - 1) / local.height,
-                (extent.depth + local.depth - 1) / local.depth);
+void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent3D invocations) const {
+  const auto& local = localSize();
+  dispatchGroups(cmd, {(invocations.width + local[0] - 1) / local[0], (invocations.height + local[1] - 1) / local[1],
+                       (invocations.depth + local[2] - 1) / local[2]});
 }
 
-void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent2D extent, VkExtent2D local) const {
-  vkCmdDispatch(cmd, (extent.width + local.width - 1) / local.width, (extent.height + local.height - 1) / local.height,
-                1);
+void ComputeProgram::dispatchOver(VkCommandBuffer cmd, VkExtent2D invocations) const {
+  dispatchOver(cmd, VkExtent3D{invocations.width, invocations.height, 1});
 }
 
-GraphicsProgram::GraphicsProgram(ProgramLibrary& library, const GraphicsState& state, const ProgramLayout& layout)
-    : Program(library, state.vertex + "+" + state.fragment, {state.vertex, state.fragment}, layout,
+void ComputeProgram::dispatchGroups(VkCommandBuffer cmd, VkExtent3D groups) const {
+  vkCmdDispatch(cmd, groups.width, groups.height, groups.depth);
+}
+
+GraphicsProgram::GraphicsProgram(ProgramLibrary& library, const GraphicsState& state, const ProgramOptions& options)
+    : Program(library, state.vertex + "+" + state.fragment, {state.vertex, state.fragment}, options,
               VK_PIPELINE_BIND_POINT_GRAPHICS),
       state_(state) {
   rebuild();

@@ -28,13 +28,12 @@ TEST_F(KifsField, ShaderMatchesTheCppReference) {
   std::copy(points.begin(), points.end(), input.view<glm::vec4>().begin());
 
   gpu::ProgramLibrary library(device());
-  gpu::ComputeProgram probe(library, "kifs/field_probe.comp",
-                            {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0});
+  gpu::ComputeProgram probe(library, "kifs/field_probe.comp");
   device().submitNow([&](VkCommandBuffer cmd) {
     probe.bind(cmd);
-    probe.push(cmd, gpu::Bindings().storageBuffer(input.handle()).storageBuffer(output.handle()));
+    probe.push(cmd, gpu::Bindings().storageBuffer("Points", input.handle()).storageBuffer("Samples", output.handle()));
     output.use(cmd, gpu::use::ComputeWriteBuffer);
-    vkCmdDispatch(cmd, uint32_t(points.size() + 63) / 64, 1, 1);
+    probe.dispatchOver(cmd, uint32_t(points.size()));
     output.use(cmd, gpu::use::HostReadBuffer);
   });
   output.invalidate();

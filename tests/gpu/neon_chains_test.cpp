@@ -1,6 +1,6 @@
 // The neon chain pass (shaders/neon/chains.comp) and its C++ reference (src/scenes/neon/chains.h) agree
 // bit for bit over frames of heads in every state, each side ping-ponging its own positions: the
-// positions are integrated, so anything less than exact grows over a run (and did, between drivers).
+// positions are integrated, so anything less than exact would grow over a run.
 #include "gpu/resources.h"
 #include "gpu/program.h"
 #include "gpu/barriers.h"
@@ -123,8 +123,8 @@ class NeonChainsGpu : public GpuTest {
 
 TEST_F(NeonChainsGpu, ShaderMatchesTheCppReference) { expectMatchesReference(glm::uvec2(0u)); }
 
-// 150 steps of 1/16 s, heads that live for 40 of them: they swim far through the field, which is where
-// a last-bit difference grew into a tube in another place (the H200's neon goldens, docs/RELIABILITY.md).
+// 150 steps of 1/16 s, heads that live for 40 of them: they swim far through the field, where a
+// last-bit difference would have grown with every step.
 TEST_F(NeonChainsGpu, AHundredAndFiftyFramesStayOnTheCppReferenceBitForBit) {
   expectMatchesReference(glm::uvec2(0u), 150, 0.4f);
 }

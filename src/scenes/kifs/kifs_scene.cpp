@@ -5,6 +5,7 @@
 #include "scenes/kifs/kifs_math.h"
 #include "scenes/kifs/settings.h"
 #include "scenes/quality.h"
+#include "shaders/kifs/march_push.h"
 
 #include <imgui.h>
 
@@ -19,21 +20,11 @@ const std::vector<std::string> kStageNames = {
 
 TierMarch settingsFor(Tier tier) { return kTierMarch[int(tier)]; }
 
-struct Push {
-  glm::vec2 angles;
-  uint32_t frame;
-  uint32_t seed;
-  int32_t step;
-  int32_t maxSteps;
-  float grain;
-  uint32_t jitterFrame;
-};
-
 class KifsScene final : public Scene {
  public:
   explicit KifsScene(const SceneContext& context)
       : quality_(context),
-        march_(context.programs, "kifs/kifs.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(Push)}) {}
+        march_(context.programs, "kifs/kifs.comp") {}
 
   void update(const FrameInput& input) override {
     if (input.cursor.dragging) {
@@ -48,7 +39,7 @@ class KifsScene final : public Scene {
 
   void record(const FrameContext& frame) override {
     const auto pass = frame.pass("kifs march");
-    const Push push{angles_,
+    const shader::KifsMarchPush push{angles_,
                     uint32_t(frame.input.frame),
                     frame.input.seed,
                     settings_.step,
@@ -57,9 +48,9 @@ class KifsScene final : public Scene {
                     reducedMotion_ ? 0u : uint32_t(frame.input.frame)};
     frame.transition(frame.target, gpu::use::ComputeWrite);
     march_.bind(frame.cmd);
-    march_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view()));
+    march_.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));
     march_.constants(frame.cmd, push);
-    march_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
+    march_.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 
   float renderScale() const override { return settingsFor(activeTier()).renderScale; }

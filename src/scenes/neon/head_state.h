@@ -1,7 +1,7 @@
 #pragma once
 // What the CPU particle engine tells the GPU about one chain's head each step: where it was released,
-// how much life it has left, which state it is in and the drift it was launched with. Uploaded as-is into a std430 storage buffer;
-// mirrored by shaders/neon/head_state.glsl.
+// how much life it has left, which state it is in and the drift it was launched with. Uploaded as-is
+// into a std430 storage buffer; mirrored by shaders/neon/head_state.glsl.
 #include "maths/hash.h"
 
 #include <glm/vec3.hpp>
@@ -34,8 +34,8 @@ inline constexpr float kLaunchSpeed = 0.6f;
 
 // The launch direction: in the facade's plane (the tube reads side-on), from the release serial.
 // Computed once, here on the CPU, and handed to the GPU in HeadState::launch: a GPU's own sin and cos
-// differ from the C library's in the last bits, and over hundreds of integrated frames those bits
-// moved a tube between drivers (docs/RELIABILITY.md, "The goldens on a real GPU").
+// differ from the C library's in the last bits, and the chain pass is to integrate exactly what
+// its C++ reference does, on every driver (see shaders/neon/chains.comp).
 inline glm::vec3 launchVelocity(uint32_t serial) {
   const float angle = maths::hash01(glm::uvec3(serial, 0x6e656f6eu, 7u)) * 6.2831853f;
   return glm::vec3(std::cos(angle), std::sin(angle), 0.0f) * kLaunchSpeed;

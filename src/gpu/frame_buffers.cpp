@@ -1,0 +1,79 @@
+// FrameResources' buffers: the declared counterpart of its images (frame_resources.cpp).
+#include "gpu/buffer_commands.h"
+#include "gpu/frame_resources.h"
+
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+namespace vitrine::gpu {
+
+BufferHandle FrameResources::declare(BufferDecl decl) {
+  buffers_.push_back({std::move(decl), {}, 0, true});
+  BufferEntry& entry = buffers_.back();
+  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  return {uint32_t(buffers_.size() - 1)};
+}
+
+void FrameResources::redeclare(BufferHandle handle, BufferDecl decl) {
+  BufferEntry& entry = buffers_.at(handle.index);
+  entry.decl = std::move(decl);
+  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+}
+
+void FrameResources::create(BufferEntry& entry, VkExtent2D target) {
+  const BufferDecl& decl = entry.decl;
+  const VkDeviceSize bytes =
+      decl.size.isRelative() ? VkDeviceSize(target.width) * target.height * decl.size.perPixel : decl.size.bytes;
+  if (bytes == 0) throw Error(fmt::format("Buffer {} is declared with no size", decl.name));
+  if (decl.initial.size() > bytes)
+    throw Error(fmt::format("Buffer {}: {} initial bytes for {}", decl.name, decl.initial.size(), bytes));
+  VkBufferUsageFlags usage = decl.usage;
+  if ((!decl.initial.empty() || decl.clear) && decl.memory == MemoryUse::Device) usage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  const size_t count = decl.pairing == Pairing::PingPong ? 2 : decl.pairing == Pairing::PerFrame ? framesInFlight_ : 1;
+  for (Buffer& old : entry.buffers) device_.retire(std::move(old));
+  entry.buffers.clear();
+  for (size_t i = 0; i < count; ++i)
+    entry.buffers.emplace_back(device_, bytes, usage, decl.memory,
+                               count == 1 ? decl.name : fmt::format("{} {}", decl.name, i));
+  entry.front = 0;
+  entry.fresh = true;
+}
+
+void FrameResources::beginBuffers(VkCommandBuffer cmd, StreamArena& stream) {
+  for (BufferEntry& entry : buffers_) {
+    if (!entry.fresh || entry.buffers.empty()) continue;
+    entry.fresh = false;
+    for (Buffer& buffer : entry.buffers) {
+      if (entry.decl.clear) fillBuffer(cmd, buffer, entry.decl.clearValue, entry.decl.initialUse);
+      if (!entry.decl.initial.empty()) uploadBuffer(cmd, stream, buffer, 0, entry.decl.initial, entry.decl.initialUse);
+    }
+  }
+}
+
+// A buffer whose initial contents are still pending holds garbage (see the images' ready()).
+FrameResources::BufferEntry& FrameResources::ready(BufferHandle handle) {
+  BufferEntry& entry = buffers_.at(handle.index);
+  if (entry.buffers.empty()) throw Error(fmt::format("{} is used before the target's size is known", entry.decl.name));
+  if (entry.fresh && (!entry.decl.initial.empty() || entry.decl.clear))
+    throw Error(fmt::format("{} is used before its initial contents were written: (re)declare it in the scene's "
+                            "constructor or update(), not while recording",
+                            entry.decl.name));
+  return entry;
+}
+
+Buffer& FrameResources::current(BufferHandle handle) {
+  BufferEntry& entry = ready(handle);
+  if (entry.decl.pairing == Pairing::PerFrame) return entry.buffers.at(slot_);
+  return entry.buffers[entry.front];
+}
+
+Buffer& FrameResources::previous(BufferHandle handle) {
+  BufferEntry& entry = ready(handle);
+  if (entry.decl.pairing != Pairing::PingPong) throw Error(fmt::format("{} is not a ping-pong pair", entry.decl.name));
+  return entry.buffers[entry.front ^ 1u];
+}
+
+void FrameResources::flip(BufferHandle handle) { buffers_.at(handle.index).front ^= 1u; }
+
+}  // namespace vitrine::gpu
