@@ -40,6 +40,7 @@ void SceneRenderer::setScene(const SceneInfo& info) {
   if (gpu::injectedSceneFailure(info.name))
     throw Error(fmt::format("scene {} failed to start (injected by VITRINE_INJECT)", info.name));
   resources_ = std::make_unique<gpu::FrameResources>(device_);
+  resources_->setFramesInFlight(framesInFlight_);  // before the scene declares per-frame buffers
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
   scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, SceneEvents(events_, info.name),
                                              *audio_, framesInFlight_, realtime_});
@@ -88,7 +89,7 @@ void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const Frame
   device_.collectRetired();
   ensureTarget(output);
   timer_.beginFrame(cmd, slot);
-  resources_->beginFrame(cmd, stream_);
+  resources_->beginFrame(cmd, stream_, slot);
   target_.discard();  // a scene draws every texel each frame
   scene_->record(FrameContext{device_, cmd, &timer_, target_, *resources_, stream_, input, slot});
 }
