@@ -4,19 +4,15 @@
 // image, the tubes' own light) first keeps only what is bright, through a soft knee, texel by texel at
 // full resolution: a tube a pixel or two wide is judged by its own brightness, not by a 6x6 average
 // that would dilute it below the threshold (thin tubes would get no glow).
-// Mirrors BloomDownPush in src/scenes/neon/look.h, which documents the whole chain.
+// Its push block is neon/bloom_push.h; src/scenes/neon/look.h documents the whole chain.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/bloom.glsl"
+#include "neon/bloom_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D source;                   // level L - 1; linear, clamp to edge
 layout(set = 0, binding = 1, rgba16f) uniform writeonly image2D target;  // level L
-layout(push_constant) uniform Push {
-  float sourceLod;  // the mip of `source` holding level L - 1: 0 for a one-level view
-  float threshold;  // brightness (max channel) where the bloom starts; used when `prefilter` is set
-  float knee;       // half-width of the soft transition around the threshold (0: a hard cut)
-  uint prefilter;   // 1 on the first step only
-} pc;
+layout(push_constant) uniform Push { NeonBloomDownPush pc; };
 
 // Scales the colour so its brightest channel b becomes max(b - threshold, quadratic ease within the
 // knee) instead of cutting at the threshold: fades glow in and out smoothly as a tube brightens.

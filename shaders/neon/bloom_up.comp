@@ -2,20 +2,16 @@
 // One step up the bloom chain: level L of the up chain = level L of the down chain + scale * a tent
 // upsample of level L + 1 (the up chain's, or for the first step the down chain's smallest level).
 // Three different images or mips, so nothing is sampled and written in one dispatch.
-// Mirrors BloomUpPush in src/scenes/neon/look.h, which documents the whole chain.
+// Its push block is neon/bloom_push.h; src/scenes/neon/look.h documents the whole chain.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/bloom.glsl"
+#include "neon/bloom_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D smaller;                  // level L + 1; linear, clamp to edge
 layout(set = 0, binding = 1) uniform sampler2D current;                  // down chain, level L (same size as target)
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D target;  // up chain, level L
-layout(push_constant) uniform Push {
-  float smallerLod;  // the mip of `smaller` holding level L + 1: 0 for a one-level view
-  float currentLod;  // the mip of `current` holding level L: 0 for a one-level view
-  float radius;      // tent tap spacing in target texels: 1 is smooth, more spreads the glow wider
-  float scale;       // weight of the wider levels against this one: 1 sums them evenly, < 1 tightens the glow
-} pc;
+layout(push_constant) uniform Push { NeonBloomUpPush pc; };
 
 void main() {
   const ivec2 size = imageSize(target);

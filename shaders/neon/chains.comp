@@ -5,47 +5,39 @@
 // last-bit difference between drivers would grow over a run instead of staying put. Every floating-point
 // operation on the way is an add, subtract, multiply, floor or conversion, which Vulkan rounds
 // correctly, and `precise` (NOISE_EXACT for the field) forbids fusing them; the one transcendental,
-// the launch direction, comes from the CPU in HeadState::launch.
+// the launch direction, comes from the CPU in NeonHeadState::launch.
 #extension GL_GOOGLE_include_directive : require
 #define NOISE_EXACT
-#include "neon/head_state.glsl"
+#include "neon/chain_push.h"
+#include "neon/head_state.h"
 #include "noodles/field.glsl"
 
 layout(local_size_x = 64) in;
-layout(binding = 0, std430) readonly buffer Heads { HeadState heads[]; };
+layout(binding = 0, std430) readonly buffer Heads { NeonHeadState heads[]; };
 layout(binding = 1, std430) readonly buffer Previous { vec4 previous[]; };  // chain-major, k = 0 the head
 layout(binding = 2, std430) writeonly buffer Next { vec4 next[]; };
 
-layout(push_constant) uniform Push {
-  vec3 offsetY;  // second potential, drift included (computed in double on the CPU)
-  float dt;
-  vec3 offsetZ;  // third potential, drift included
-  float lerp;  // followerLerp(lerp60, dt), computed on the CPU
-  uint chainCount;
-  uint particlesPerChain;
-  float fieldStrength;
-  float noiseScale;
-} pc;
+layout(push_constant) uniform Push { NeonChainPush pc; };
 
 void main() {
   // Rows of workgroups are stacked in y when one row cannot hold them all (see chainGroups()).
   uint index = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (index >= pc.chainCount * pc.particlesPerChain) return;
-  HeadState head = heads[index / pc.particlesPerChain];
+  NeonHeadState head = heads[index / pc.particlesPerChain];
   uint k = index % pc.particlesPerChain;
   precise vec3 position = previous[index].xyz;
-  uint state = head.info.x;
-  if (state == CHAIN_INITIALISING) {
-    position = head.originLife.xyz;
-  } else if (state == CHAIN_ALIVE) {
-    if (k == 0u && (head.info.w & HEAD_STEERED) != 0u) {
-      position = head.originLife.xyz;  // a pen: where the cursor is
+  uint state = head.state;
+  if (state == NEON_CHAIN_INITIALISING) {
+    position = head.origin;
+  } else if (state == NEON_CHAIN_ALIVE) {
+    if (k == 0u && (head.flags & NEON_HEAD_STEERED) != 0u) {
+      position = head.origin;  // a pen: where the cursor is
     } else if (k == 0u) {
       FieldSettings field = FieldSettings(FIELD_CURL, pc.noiseScale, pc.offsetY, pc.offsetZ, 0.0);
-      position += (flowVelocity(position, field) * pc.fieldStrength + head.launch.xyz) * pc.dt;
+      position += (flowVelocity(position, field) * pc.fieldStrength + head.launch) * pc.dt;
     } else {
       position += (previous[index - 1u].xyz - position) * pc.lerp;
     }
   }
-  next[index] = vec4(position, head.originLife.w);
+  next[index] = vec4(position, head.life);
 }

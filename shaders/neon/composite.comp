@@ -3,37 +3,20 @@
 // bloom, the ground's mirror reflection, the seed's noise tint blended by linear burn, a vignette, the
 // ACES fit, then film grain. Every effect has a bit in `flags`, so the lead's stage switch (and any
 // debugging) turns effects off without another shader. Writes linear light for the host's present pass.
-// Mirrors CompositePush and the kComposite* flags in src/scenes/neon/look.h.
+// Its push block and flags are neon/composite_push.h.
 #extension GL_GOOGLE_include_directive : require
 #include "common/color.glsl"
 #include "common/hash.glsl"
 #include "noodles/noise.glsl"
 #include "neon/bloom.glsl"
+#include "neon/composite_push.h"
 #include "neon/look.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D scene;                    // linear HDR; linear, clamp to edge
 layout(set = 0, binding = 1) uniform sampler2D bloom;                    // up chain level 1; linear, clamp
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D target;  // tone-mapped linear light
-layout(push_constant) uniform Push {
-  vec3 tintColour0;        // linear; the burn takes 1 - sqrt(colour) off sqrt(pixel): light colours tint gently
-  float tintStrength;      // 0..1: mix from the plain image to the burned one
-  vec3 tintColour1;
-  float time;              // seconds: drifts the tint's noise and the ripples
-  float bloomStrength;     // the up chain sums every level, so this is small (about 0.02..0.1)
-  float bloomLod;          // the mip of `bloom` to read: 0 for a one-level view
-  float vignette;          // 0..1: how dark the corners get
-  float grain;             // amplitude in a square-root encoding, about 0.02..0.05
-  float aberration;        // red/blue shift per unit of distance from the centre, in uv (about 0.004)
-  float horizonY;          // the mirror line, pixels from the top
-  float mirrorStrength;    // 0..1: the reflection's brightness at the mirror line
-  float mirrorDistortion;  // ripple offset in pixels a frame height below the mirror line
-  float mirrorFade;        // pixels below the mirror line where the reflection has faded out
-  uint frame;              // seeds the grain (hold it for still pictures)
-  uint flags;              // kBloom | kTint | ...
-} pc;
-
-const uint kBloom = 1u, kTint = 2u, kVignette = 4u, kGrain = 8u, kAberration = 16u, kMirror = 32u;
+layout(push_constant) uniform Push { NeonCompositePush pc; };
 
 bool on(uint flag) { return (pc.flags & flag) != 0u; }
 
@@ -59,7 +42,7 @@ vec3 reflection(vec2 pixel, vec2 size) {
   const float fade = (1.0 - smoothstep(0.0, pc.mirrorFade, below)) * smoothstep(0.0, 0.05 * size.y, mirrored.y);
   const vec2 uv = mirrored / size;
   vec3 c = textureLod(scene, uv, 0.0).rgb;
-  if (on(kBloom)) c += pc.bloomStrength * textureLod(bloom, uv, pc.bloomLod).rgb;
+  if (on(NEON_COMPOSITE_BLOOM)) c += pc.bloomStrength * textureLod(bloom, uv, pc.bloomLod).rgb;
   return c * (pc.mirrorStrength * fade);
 }
 
@@ -72,16 +55,16 @@ void main() {
   const vec2 uv = pixel / sizeF;
 
   vec3 c;
-  if (on(kAberration)) {  // a lens' lateral colour: red lands a little outward, blue a little inward
+  if (on(NEON_COMPOSITE_ABERRATION)) {  // a lens' lateral colour: red lands a little outward, blue a little inward
     const vec2 shift = (uv - 0.5) * pc.aberration;
     c = vec3(textureLod(scene, uv + shift, 0.0).r, textureLod(scene, uv, 0.0).g, textureLod(scene, uv - shift, 0.0).b);
   } else {
     c = textureLod(scene, uv, 0.0).rgb;
   }
-  if (on(kBloom)) c += pc.bloomStrength * upsampleTent(bloom, uv, 1.0 / sizeF, pc.bloomLod);
-  if (on(kMirror)) c += reflection(pixel, sizeF);
+  if (on(NEON_COMPOSITE_BLOOM)) c += pc.bloomStrength * upsampleTent(bloom, uv, 1.0 / sizeF, pc.bloomLod);
+  if (on(NEON_COMPOSITE_MIRROR)) c += reflection(pixel, sizeF);
 
-  if (on(kTint)) {  // the seed's colour mask: slow noise picks between the two colours
+  if (on(NEON_COMPOSITE_TINT)) {  // the seed's colour mask: slow noise picks between the two colours
     // (the noise rarely leaves +-0.5, so +-0.35 spans the colours and still reaches each of them)
     const vec2 q = pixel / sizeF.y * 1.5 + pc.time * 0.05;
     const float n = smoothstep(-0.35, 0.35, gradientNoise(vec3(q, pc.time * 0.02)).value);
@@ -91,12 +74,12 @@ void main() {
     const vec3 burned = linearBurn(sqrt(c), mask);
     c = mix(c, burned * burned, pc.tintStrength);
   }
-  if (on(kVignette)) c *= vignette(length(pixel - 0.5 * sizeF) / length(0.5 * sizeF), pc.vignette);
+  if (on(NEON_COMPOSITE_VIGNETTE)) c *= vignette(length(pixel - 0.5 * sizeF) / length(0.5 * sizeF), pc.vignette);
 
   c = acesNarkowicz(c);
   // Grain after the tone map, or the curve's toe would crush it in the shadows; added in a square-root
   // encoding (near perceptual) so it reads evenly from shadows to highlights.
-  if (on(kGrain)) {
+  if (on(NEON_COMPOSITE_GRAIN)) {
     const float g = (hash01(uvec3(p, pc.frame * 3u + 0x5bd1e995u)) - 0.5) * pc.grain;
     const vec3 s = max(sqrt(c) + g, 0.0);
     c = s * s;

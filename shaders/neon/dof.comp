@@ -11,23 +11,16 @@
 // Depth and colour are read from the same texel, so a tap is never judged by one pixel's depth while
 // showing its neighbour's colour (which would outline sharp edges).
 // The spirals are the same every frame (unless `spin` turns them): a still camera gives a still picture.
-// Mirrors DofPush in src/scenes/neon/look.h.
+// Its push block is neon/dof_push.h.
 #extension GL_GOOGLE_include_directive : require
+#include "neon/dof_push.h"
 #include "neon/look.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D colour;                   // linear HDR; read with texelFetch
 layout(set = 0, binding = 1) uniform sampler2D depth;                    // r32f reverse-Z; read with texelFetch
 layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D target;  // same size as colour
-layout(push_constant) uniform Push {
-  vec2 frameSize;       // pixels, of colour, depth and target
-  float near;           // the projection's near distance: linear depth = near / depth
-  float focalDistance;  // linear depth in sharp focus, world units
-  float aperture;       // circle of confusion at infinity, pixels (its radius)
-  float maxRadius;      // clamp on the circle of confusion and the spiral's radius, pixels
-  uint taps;            // spiral taps, 24..32 is plenty; 0 copies the colour through
-  float spin;           // radians the spiral is turned by; 0 keeps the picture still
-} pc;
+layout(push_constant) uniform Push { NeonDofPush pc; };
 
 float coc(float d) { return circleOfConfusion(d, pc.near, pc.focalDistance, pc.aperture, pc.maxRadius); }
 

@@ -6,32 +6,27 @@
 // read.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/camera.glsl"
+#include "neon/facade_blocks.h"
 #include "neon/facade_uv.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
-struct Box {
-  vec4 centre;
-  vec4 halfSize;
-};
-layout(std430, set = 0, binding = 1) readonly buffer Boxes { Box boxes[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Boxes { NeonFacadeBox boxes[]; };
 layout(set = 0, binding = 2) uniform sampler2D lighting;
 layout(set = 0, binding = 3, rgba16f) uniform writeonly image2D colour;
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D depth;
-layout(push_constant) uniform Push {
-  vec4 sky;  // linear rgb; w: the facade's brightness (the tubes are the subject: the building is their backdrop)
-} pc;
+layout(push_constant) uniform Push { NeonFacadePush pc; };
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(F.right.w, F.up.w)))) return;
+  if (any(greaterThanEqual(p, ivec2(F.frameWidth, F.frameHeight)))) return;
   const vec3 dir = pixelRay(vec2(p) + 0.5);
   const vec3 inverse = 1.0 / mix(dir, vec3(1e-20), lessThan(abs(dir), vec3(1e-20)));
   float nearest = 1e30;
   vec3 normal = vec3(0.0);
-  for (uint i = 0u; i < F.counts.z; ++i) {
+  for (uint i = 0u; i < F.boxes; ++i) {
     // The slab test: where the ray is inside all three slabs of the box.
-    const vec3 t0 = (boxes[i].centre.xyz - boxes[i].halfSize.xyz - F.eye.xyz) * inverse;
-    const vec3 t1 = (boxes[i].centre.xyz + boxes[i].halfSize.xyz - F.eye.xyz) * inverse;
+    const vec3 t0 = (boxes[i].centre - boxes[i].halfSize - F.eye) * inverse;
+    const vec3 t1 = (boxes[i].centre + boxes[i].halfSize - F.eye) * inverse;
     const vec3 lo = min(t0, t1), hi = max(t0, t1);
     const float enter = max(max(lo.x, lo.y), lo.z), leave = min(min(hi.x, hi.y), hi.z);
     if (enter <= leave && enter > 0.0 && enter < nearest) {
@@ -41,11 +36,12 @@ void main() {
     }
   }
   if (nearest == 1e30) {
-    imageStore(colour, p, vec4(pc.sky.rgb, 1.0));
+    imageStore(colour, p, vec4(pc.sky, 1.0));
     imageStore(depth, p, vec4(0.0));
     return;
   }
-  const vec3 hit = F.eye.xyz + dir * nearest;
-  imageStore(colour, p, vec4(textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb * pc.sky.w, 1.0));
-  imageStore(depth, p, vec4(F.eye.w / (nearest * dot(dir, F.forward.xyz))));
+  const vec3 hit = F.eye + dir * nearest;
+  const vec3 lit = textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb;
+  imageStore(colour, p, vec4(lit * pc.facadeBrightness, 1.0));
+  imageStore(depth, p, vec4(F.near / (nearest * dot(dir, F.forward))));
 }

@@ -5,14 +5,14 @@
 // crossing tubes read as one in front of another, each its own neon colour, at any density. The
 // result goes back into the tubes' target for the bloom, and onto the facade; the nearer of the two
 // depths is kept, so the depth of field blurs each by its own distance.
+#extension GL_GOOGLE_include_directive : require
+#include "neon/merge_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0, rgba16f) uniform image2D scene;  // the facade in, facade and tubes out
 layout(set = 0, binding = 1, r32f) uniform image2D depth;     // the facade's in, the nearer out
 layout(set = 0, binding = 2, rgba16f) uniform image2D tubes;  // the tubes' light; alpha: the nearest one's depth and colour
-layout(push_constant) uniform Push {
-  vec4 colours[3];  // linear rgb of the three neon colours (w unused)
-} pc;
+layout(push_constant) uniform Push { NeonMergePush pc; };
 
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
 

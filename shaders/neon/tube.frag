@@ -22,8 +22,8 @@ void main() {
   const float r = abs(across);
   const float chord = sqrt(max(1.0 - r * r, 0.0));
   const float edge = 1.0 - smoothstep(1.0 - 1.5 * fwidth(across), 1.0, r);  // a pixel-wide antialiased rim
-  const vec3 hue = colour == 0u ? F.colourA.rgb : colour == 1u ? F.colourB.rgb : F.colourC.rgb;
-  const float strength = F.colourA.w * F.colourC.w * (0.3 + 0.7 * chord) * edge * (1.0 - 0.4 * along) *
+  const vec3 hue = colour == 0u ? F.colourA : colour == 1u ? F.colourB : F.colourC;
+  const float strength = F.glow * F.exposure * (0.3 + 0.7 * chord) * edge * (1.0 - 0.4 * along) *
                          smoothstep(0.0, 0.25, life);
   // Alpha blends by max: the nearest tube's depth (for the depth of field), with its colour (1..3) in
   // the half float's lowest two mantissa bits, so the max also says which colour is nearest: positive

@@ -2,8 +2,8 @@
 // One whole chain per instance, drawn as a tube impostor: a ribbon through the chain's particles
 // that always faces the eye (two vertices a particle, one triangle strip), shaded in the fragment
 // shader as the cylinder it stands for. The radius tapers with life and toward the tail, but never
-// below F.tube.x pixels (drawnTubeRadius in src/scenes/neon/tube_light.h): a far tube on a small frame
-// stays a continuous line instead of a ribbon thinner than a pixel.
+// below F.minTubeRadiusPixels (drawnTubeRadius in src/scenes/neon/tube_light.h): a far tube on a small
+// frame stays a continuous line instead of a ribbon thinner than a pixel.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/camera.glsl"
 
@@ -14,23 +14,23 @@ layout(location = 2) out float along;   // 0 at the head, 1 at the tail
 layout(location = 3) out float life;
 
 void main() {
-  const uint chain = gl_InstanceIndex, perChain = F.counts.y;
+  const uint chain = gl_InstanceIndex, perChain = F.particlesPerChain;
   const uint k = gl_VertexIndex / 2;
   const uint base = chain * perChain;
   const vec4 p = particles[base + k];
   const vec3 ahead = particles[base + (k == 0 ? 0 : k - 1)].xyz;
   const vec3 behind = particles[base + min(k + 1, perChain - 1)].xyz;
   vec3 tangent = ahead - behind;
-  const vec3 toEye = normalize(F.eye.xyz - p.xyz);
+  const vec3 toEye = normalize(F.eye - p.xyz);
   vec3 side = cross(tangent, toEye);
   const float sideLength = length(side);
   side = sideLength > 1e-6 ? side / sideLength : vec3(0.0);  // a chain still gathered at its origin: no width
   along = float(k) / float(max(perChain - 1, 1u));
   life = clamp(p.w, 0.0, 1.0);
-  float radius = F.colourB.w * sqrt(life) * (1.0 - 0.5 * along);
+  float radius = F.tubeRadius * sqrt(life) * (1.0 - 0.5 * along);
   const float depth = max((F.viewProjection * vec4(p.xyz, 1.0)).w, 1e-3);  // distance along the view
-  const float pixels = radius * F.tube.y / depth;
-  radius = life > 0.0 ? radius * max(1.0, F.tube.x / max(pixels, 1e-6)) : 0.0;
+  const float pixels = radius * F.focalPixels / depth;
+  radius = life > 0.0 ? radius * max(1.0, F.minTubeRadiusPixels / max(pixels, 1e-6)) : 0.0;
   across = (gl_VertexIndex & 1) == 0 ? -1.0 : 1.0;
   colour = (chain * 2654435761u >> 16) % 3u;  // neighbouring chains rarely share a colour
   gl_Position = F.viewProjection * vec4(p.xyz + side * across * radius, 1.0);

@@ -71,18 +71,15 @@ class NeonChainsGpu : public GpuTest {
     std::copy(cpu.begin(), cpu.end(), positions[0].view<glm::vec4>().begin());
 
     gpu::ProgramLibrary library(device());
-    gpu::ComputeProgram chains(
-        library, "neon/chains.comp",
-        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-         sizeof(neon::ChainPush)});
-    if (groups == glm::uvec2(0u)) groups = neon::chainGroups(kParticles);
+    gpu::ComputeProgram chains(library, "neon/chains.comp");
+    if (groups == glm::uvec2(0u)) groups = neon::chainGroups(kParticles, chains.localSize()[0]);
 
     std::array<uint32_t, 3> statesSeen{};
     float headTravel = 0.0f;
     for (uint32_t frame = 0; frame < frames; ++frame) {
       step(4 + frame);
       const std::vector<neon::HeadState> snapshot = engine.latest().heads;
-      for (const neon::HeadState& h : snapshot) ++statesSeen[h.info.x];
+      for (const neon::HeadState& h : snapshot) ++statesSeen[h.state];
       std::copy(snapshot.begin(), snapshot.end(), heads.view<neon::HeadState>().begin());
       const neon::ChainParams params{kDt, neon::followerLerp(0.35f, kDt), 1.5f, 0.5f, 10.0 + 0.7 * frame};
 
@@ -92,12 +89,12 @@ class NeonChainsGpu : public GpuTest {
         chains.bind(cmd);
         chains.constants(cmd, neon::chainPush(kChains, kPerChain, params));
         chains.push(cmd, gpu::Bindings()
-                             .storageBuffer(heads.handle())
-                             .storageBuffer(previous.handle())
-                             .storageBuffer(next.handle()));
+                             .storageBuffer("Heads", heads.handle())
+                             .storageBuffer("Previous", previous.handle())
+                             .storageBuffer("Next", next.handle()));
         previous.use(cmd, gpu::use::ComputeReadBuffer);
         next.use(cmd, gpu::use::ComputeWriteBuffer);
-        vkCmdDispatch(cmd, groups.x, groups.y, 1);
+        chains.dispatchGroups(cmd, {groups.x, groups.y, 1});
         next.use(cmd, gpu::use::HostReadBuffer);
       });
       next.invalidate();
@@ -106,9 +103,9 @@ class NeonChainsGpu : public GpuTest {
       const auto gpu = next.view<const glm::vec4>();
       for (uint32_t i = 0; i < kParticles; ++i) {
         const std::string where = fmt::format("frame {} chain {} particle {} state {}", frame, i / kPerChain,
-                                              i % kPerChain, snapshot[i / kPerChain].info.x);
+                                              i % kPerChain, snapshot[i / kPerChain].state);
         ASSERT_EQ(gpu[i], cpuNext[i]) << where;  // w: the head's life, copied
-        if (i % kPerChain == 0 && snapshot[i / kPerChain].info.x == uint32_t(neon::ChainState::Alive))
+        if (i % kPerChain == 0 && snapshot[i / kPerChain].state == uint32_t(neon::ChainState::Alive))
           headTravel = std::max(headTravel, glm::length(glm::vec3(cpuNext[i]) - glm::vec3(cpu[i])));
       }
       std::swap(cpu, cpuNext);

@@ -36,17 +36,18 @@ bool sameHeads(const std::vector<HeadState>& a, const std::vector<HeadState>& b)
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(HeadState)) == 0;
 }
 
-// ---------------------------------------------------------------------------------------- layout
+// A head's bookkeeping as one comparable value: (state, serial, steps since release, flags).
+glm::uvec4 bookkeeping(const HeadState& h) { return {h.state, h.serial, h.steps, h.flags}; }
+glm::vec4 originAndLife(const HeadState& h) { return {h.origin, h.life}; }
 
-TEST(NeonHeadState, IsThreeStd430Vec4s) {
-  EXPECT_EQ(sizeof(HeadState), 48u);
-  EXPECT_EQ(offsetof(HeadState, originLife), 0u);
-  EXPECT_EQ(offsetof(HeadState, info), 16u);
-  EXPECT_EQ(offsetof(HeadState, launch), 32u);
+// ---------------------------------------------------------------------------------------- record
+
+// Its layout is the shader's, checked by the build (shaders/neon/head_state.h); a zeroed one is free.
+TEST(NeonHeadState, ZeroIsAFreeSlot) {
   const HeadState zero{};
   EXPECT_EQ(chainState(zero), ChainState::Inactive);
-  EXPECT_EQ(zero.originLife.w, 0.0f);
-  EXPECT_EQ(zero.launch, glm::vec4(0.0f));
+  EXPECT_EQ(zero.life, 0.0f);
+  EXPECT_EQ(zero.launch, glm::vec3(0.0f));
 }
 
 // The launch direction is a sine and a cosine: the CPU computes it once, at release, so that no GPU's
@@ -59,11 +60,11 @@ TEST(NeonEngine, AReleaseCarriesItsLaunchVelocity) {
   std::set<std::pair<float, float>> directions;
   for (const HeadState& h : engine.latest().heads) {
     if (chainState(h) == ChainState::Inactive) {
-      EXPECT_EQ(h.launch, glm::vec4(0.0f));
+      EXPECT_EQ(h.launch, glm::vec3(0.0f));
       continue;
     }
-    EXPECT_EQ(h.launch, glm::vec4(launchVelocity(h.info.y), 0.0f)) << "serial " << h.info.y;
-    EXPECT_NEAR(glm::length(glm::vec3(h.launch)), kLaunchSpeed, 1e-6f);
+    EXPECT_EQ(h.launch, launchVelocity(h.serial)) << "serial " << h.serial;
+    EXPECT_NEAR(glm::length(h.launch), kLaunchSpeed, 1e-6f);
     EXPECT_EQ(h.launch.z, 0.0f) << "in the facade's plane";
     directions.insert({h.launch.x, h.launch.y});
   }
@@ -139,20 +140,20 @@ TEST(NeonEngine, WaitsTwoStepsThenDecaysThenRecycles) {
     engine.step(0.25f);
     const HeadState h = engine.latest().heads[0];
     EXPECT_EQ(chainState(h), ChainState::Initialising) << "step " << step;
-    EXPECT_EQ(h.originLife, glm::vec4(1.0f, 2.0f, 3.0f, 1.0f)) << "step " << step;
-    EXPECT_EQ(h.info, glm::uvec4(1u, 1u, step, 0u)) << "step " << step;
+    EXPECT_EQ(originAndLife(h), glm::vec4(1.0f, 2.0f, 3.0f, 1.0f)) << "step " << step;
+    EXPECT_EQ(bookkeeping(h), glm::uvec4(1u, 1u, step, 0u)) << "step " << step;
   }
   for (uint32_t step = 3; step <= 9; ++step) {
     engine.step(0.25f);
     const HeadState h = engine.latest().heads[0];
     EXPECT_EQ(chainState(h), ChainState::Alive) << "step " << step;
-    EXPECT_EQ(h.originLife.w, 1.0f - 0.125f * float(step - 2)) << "step " << step;
-    EXPECT_EQ(h.info.z, step);
-    EXPECT_EQ(glm::vec3(h.originLife), glm::vec3(1.0f, 2.0f, 3.0f));  // the origin never moves
+    EXPECT_EQ(h.life, 1.0f - 0.125f * float(step - 2)) << "step " << step;
+    EXPECT_EQ(h.steps, step);
+    EXPECT_EQ(h.origin, glm::vec3(1.0f, 2.0f, 3.0f));  // the origin never moves
   }
   engine.step(0.25f);  // life reaches 0: the slot is free again
   EXPECT_EQ(chainState(engine.latest().heads[0]), ChainState::Inactive);
-  EXPECT_EQ(engine.latest().heads[0].originLife.w, 0.0f);
+  EXPECT_EQ(engine.latest().heads[0].life, 0.0f);
   for (const HeadState& h : engine.latest().heads) EXPECT_EQ(chainState(h), ChainState::Inactive);
 
   engine.release({-1.0f, 0.0f, 0.0f});
@@ -160,18 +161,18 @@ TEST(NeonEngine, WaitsTwoStepsThenDecaysThenRecycles) {
   const Snapshot& s = engine.latest();
   EXPECT_EQ(s.steps, 11u);
   EXPECT_EQ(s.releases, 2u);
-  EXPECT_EQ(s.heads[0].info, glm::uvec4(1u, 2u, 1u, 0u));  // slot 0 again, second serial
-  EXPECT_EQ(s.heads[0].originLife, glm::vec4(-1.0f, 0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(bookkeeping(s.heads[0]), glm::uvec4(1u, 2u, 1u, 0u));  // slot 0 again, second serial
+  EXPECT_EQ(originAndLife(s.heads[0]), glm::vec4(-1.0f, 0.0f, 0.0f, 1.0f));
 }
 
 TEST(NeonEngine, DecayIsRatePerSecondTimesDt) {
   ParticleEngine engine({1, 2.0f}, EngineMode::LockStep);
   engine.release({});
   for (int i = 0; i < 3; ++i) engine.step(0.0625f);  // the third step is the first alive one
-  EXPECT_EQ(engine.latest().heads[0].originLife.w, 1.0f - 2.0f * 0.0625f);
+  EXPECT_EQ(engine.latest().heads[0].life, 1.0f - 2.0f * 0.0625f);
   engine.setDecayPerSecond(4.0f);
   engine.step(0.0625f);
-  EXPECT_EQ(engine.latest().heads[0].originLife.w, 1.0f - 2.0f * 0.0625f - 4.0f * 0.0625f);
+  EXPECT_EQ(engine.latest().heads[0].life, 1.0f - 2.0f * 0.0625f - 4.0f * 0.0625f);
 }
 
 TEST(NeonEngine, ARecycledSlotIsTheFirstFreeOne) {
@@ -186,9 +187,9 @@ TEST(NeonEngine, ARecycledSlotIsTheFirstFreeOne) {
   engine.release({2.0f, 0.0f, 0.0f});
   engine.step(0.25f);
   const Snapshot& s = engine.latest();
-  EXPECT_EQ(s.heads[0].info.y, 3u);
-  EXPECT_EQ(s.heads[0].originLife.x, 2.0f);
-  EXPECT_EQ(s.heads[1].info.y, 2u);
+  EXPECT_EQ(s.heads[0].serial, 3u);
+  EXPECT_EQ(s.heads[0].origin.x, 2.0f);
+  EXPECT_EQ(s.heads[1].serial, 2u);
   EXPECT_EQ(chainState(s.heads[1]), ChainState::Alive);
   EXPECT_EQ(chainState(s.heads[2]), ChainState::Inactive);
 }
@@ -196,7 +197,7 @@ TEST(NeonEngine, ARecycledSlotIsTheFirstFreeOne) {
 uint32_t lowestLife(const std::vector<HeadState>& heads) {
   uint32_t lowest = 0;
   for (uint32_t i = 1; i < heads.size(); ++i)
-    if (heads[i].originLife.w < heads[lowest].originLife.w) lowest = i;
+    if (heads[i].life < heads[lowest].life) lowest = i;
   return lowest;
 }
 
@@ -222,11 +223,11 @@ TEST(NeonEngine, WhenFullTheLowestLifeIsReplaced) {
     engine.release({float(serial), 0.0f, 0.0f});
     engine.step(0.25f);
     const std::vector<HeadState>& after = engine.latest().heads;
-    EXPECT_EQ(after[expectedSlot].info, glm::uvec4(1u, serial, 1u, 0u)) << "serial " << serial;
-    EXPECT_EQ(after[expectedSlot].originLife, glm::vec4(float(serial), 0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(bookkeeping(after[expectedSlot]), glm::uvec4(1u, serial, 1u, 0u)) << "serial " << serial;
+    EXPECT_EQ(originAndLife(after[expectedSlot]), glm::vec4(float(serial), 0.0f, 0.0f, 1.0f));
     for (uint32_t slot = 0; slot < 3; ++slot) {
       if (slot == expectedSlot) continue;
-      EXPECT_EQ(after[slot].info.y, before[slot].info.y) << "slot " << slot << " kept";
+      EXPECT_EQ(after[slot].serial, before[slot].serial) << "slot " << slot << " kept";
     }
     ++serial;
   }
@@ -240,8 +241,8 @@ TEST(NeonEngine, MoreReleasesInOneStepThanSlotsKeepTheNewest) {
   EXPECT_EQ(s.releases, 5u);
   EXPECT_EQ(engine.releasesApplied(), 5u);
   // 1 -> slot 0, 2 -> slot 1, 3 replaces 1, 4 replaces 2, 5 replaces 3.
-  EXPECT_EQ(s.heads[0].info.y, 5u);
-  EXPECT_EQ(s.heads[1].info.y, 4u);
+  EXPECT_EQ(s.heads[0].serial, 5u);
+  EXPECT_EQ(s.heads[1].serial, 4u);
 }
 
 TEST(NeonEngine, RejectsBadSettings) {
@@ -390,8 +391,8 @@ TEST(NeonEngine, ReleasesFromEightThreadsAreAllApplied) {
   std::set<uint32_t> serials;
   for (const HeadState& h : s.heads) {
     EXPECT_NE(chainState(h), ChainState::Inactive);
-    EXPECT_LE(h.info.y, kTotal);
-    serials.insert(h.info.y);
+    EXPECT_LE(h.serial, kTotal);
+    serials.insert(h.serial);
   }
   EXPECT_EQ(serials.size(), 4096u);
   EXPECT_TRUE(serials.count(kTotal));
@@ -415,9 +416,9 @@ TEST(NeonEngine, ReaderNeverWaitsAndNeverSeesAHalfWrittenStep) {
       wrongReleases += s.releases != s.steps;
       for (const HeadState& h : s.heads) {
         if (chainState(h) == ChainState::Inactive) continue;
-        const auto releasedIn = uint64_t(h.originLife.x);
-        const auto expectedState = h.info.z <= kInitialisingSteps ? ChainState::Initialising : ChainState::Alive;
-        torn += h.info.y != releasedIn || h.info.z != s.steps - releasedIn + 1 || chainState(h) != expectedState;
+        const auto releasedIn = uint64_t(h.origin.x);
+        const auto expectedState = h.steps <= kInitialisingSteps ? ChainState::Initialising : ChainState::Alive;
+        torn += h.serial != releasedIn || h.steps != s.steps - releasedIn + 1 || chainState(h) != expectedState;
       }
     }
     readerDone = true;
@@ -470,9 +471,9 @@ TEST(NeonPlacementGuard, PlacesAChainWhoseInitialisationWasSkipped) {
   ASSERT_EQ(chainState(heads[0]), ChainState::Alive);
   EXPECT_EQ(guard.copy(heads, upload), 1u);
   EXPECT_EQ(chainState(upload[0]), ChainState::Initialising);
-  EXPECT_EQ(upload[0].originLife, heads[0].originLife);
-  EXPECT_EQ(glm::uvec3(upload[0].info.y, upload[0].info.z, upload[0].info.w),
-            glm::uvec3(heads[0].info.y, heads[0].info.z, heads[0].info.w));
+  EXPECT_EQ(originAndLife(upload[0]), originAndLife(heads[0]));
+  EXPECT_EQ(glm::uvec3(upload[0].serial, upload[0].steps, upload[0].flags),
+            glm::uvec3(heads[0].serial, heads[0].steps, heads[0].flags));
   engine.step(0.1f);
   EXPECT_EQ(guard.copy(engine.latest().heads, upload), 0u);  // placed once; from now on it moves
   EXPECT_EQ(chainState(upload[0]), ChainState::Alive);
@@ -482,7 +483,7 @@ TEST(NeonPlacementGuard, PlacesAChainWhoseInitialisationWasSkipped) {
   engine.release({6.0f, 0.0f, 0.0f});  // full: replaces slot 0
   for (int i = 0; i < 3; ++i) engine.step(0.1f);
   heads = engine.latest().heads;
-  ASSERT_EQ(heads[0].info.y, 3u);
+  ASSERT_EQ(heads[0].serial, 3u);
   EXPECT_EQ(guard.copy(heads, upload), 2u);
   EXPECT_EQ(chainState(upload[0]), ChainState::Initialising);
   EXPECT_EQ(chainState(upload[1]), ChainState::Initialising);
@@ -494,7 +495,13 @@ TEST(NeonPlacementGuard, PlacesAChainWhoseInitialisationWasSkipped) {
 ChainParams stillField(float lerp) { return {1.0f / 60.0f, lerp, 0.0f, 0.5f, 0.0}; }
 
 HeadState headIn(ChainState state, glm::vec3 origin, float life, uint32_t flags = 0u) {
-  return {glm::vec4(origin, life), glm::uvec4(uint32_t(state), 1u, 0u, flags), glm::vec4(launchVelocity(1u), 0.0f)};
+  return {.origin = origin,
+          .life = life,
+          .state = uint32_t(state),
+          .serial = 1u,
+          .steps = 0u,
+          .flags = flags,
+          .launch = launchVelocity(1u)};
 }
 
 TEST(NeonChains, AFollowerConvergesGeometricallyToAStillHead) {
@@ -529,7 +536,7 @@ TEST(NeonChains, FollowersChaseLastFramesPositions) {
   stepChains(heads, P, previous, next, p);
   const glm::vec3 velocity = noodles::flowVelocity(glm::vec3(previous[0]), chainField(p));
   const glm::vec3 moved =
-      glm::vec3(previous[0]) + (velocity * p.fieldStrength + glm::vec3(heads[0].launch)) * p.dt;
+      glm::vec3(previous[0]) + (velocity * p.fieldStrength + heads[0].launch) * p.dt;
   EXPECT_EQ(glm::vec3(next[0]), moved);
   EXPECT_GT(glm::length(moved - glm::vec3(previous[0])), 1e-3f);  // the field is not zero there
   for (uint32_t k = 1; k < P; ++k) EXPECT_EQ(glm::vec3(next[k]), glm::vec3(previous[k - 1])) << k;
@@ -556,7 +563,7 @@ TEST(NeonChains, RejectsShortBuffers) {
 
 TEST(NeonChains, PushBlockCarriesTheDriftComputedInDouble) {
   const ChainParams p{0.02f, 0.3f, 1.5f, 0.4f, 1234.5};
-  const ChainPush push = chainPush(16, 32, p);
+  const shader::NeonChainPush push = chainPush(16, 32, p);
   const noodles::FieldSettings field = noodles::fieldAtTime(noodles::FieldKind::Curl, 0.4f, 0.0f, 1234.5);
   EXPECT_EQ(push.offsetY, field.offsetY);
   EXPECT_EQ(push.offsetZ, field.offsetZ);
@@ -607,7 +614,7 @@ float penTubeLength(float dt) {
   std::vector<glm::vec4> previous(P, glm::vec4(0.0f, 5.0f, 4.0f, 1.0f)), next(P);
   const int steps = int(std::lround(2.0f / dt));
   for (int n = 1; n <= steps; ++n) {
-    heads[0].originLife = glm::vec4(3.0f * float(n) * dt, 5.0f, 4.0f, 1.0f);  // 3 m/s to the right
+    heads[0].origin = glm::vec3(3.0f * float(n) * dt, 5.0f, 4.0f);  // 3 m/s to the right
     stepChains(heads, P, previous, next, {dt, followerLerp(0.3f, dt), 1.6f, 0.22f, 0.0});
     std::swap(previous, next);
   }
@@ -635,15 +642,15 @@ TEST(NeonEngine, APenIsOneHeadThatFollowsSteerAndKeepsItsLifeUntilLetGo) {
   EXPECT_EQ(drawn.releases, 1u) << "a drag is one release";
   EXPECT_EQ(chainState(drawn.heads[0]), ChainState::Alive);
   EXPECT_TRUE(steered(drawn.heads[0]));
-  EXPECT_EQ(glm::vec3(drawn.heads[0].originLife), glm::vec3(10.0f, 2.0f, 3.0f));
-  EXPECT_EQ(drawn.heads[0].originLife.w, 1.0f) << "full life while it draws";
+  EXPECT_EQ(drawn.heads[0].origin, glm::vec3(10.0f, 2.0f, 3.0f));
+  EXPECT_EQ(drawn.heads[0].life, 1.0f) << "full life while it draws";
   engine.endSteer();
   engine.steer({-5.0f, 0.0f, 0.0f});  // no pen any more: ignored
   engine.step(0.1f);
   const Snapshot& free = engine.latest();
   EXPECT_FALSE(steered(free.heads[0]));
-  EXPECT_EQ(glm::vec3(free.heads[0].originLife), glm::vec3(10.0f, 2.0f, 3.0f));
-  EXPECT_NEAR(free.heads[0].originLife.w, 0.95f, 1e-6f) << "let go, it fades";
+  EXPECT_EQ(free.heads[0].origin, glm::vec3(10.0f, 2.0f, 3.0f));
+  EXPECT_NEAR(free.heads[0].life, 0.95f, 1e-6f) << "let go, it fades";
 }
 
 TEST(NeonEngine, AFullEngineNeverReplacesThePen) {
@@ -656,21 +663,23 @@ TEST(NeonEngine, AFullEngineNeverReplacesThePen) {
   }
   const Snapshot& s = engine.latest();
   EXPECT_TRUE(steered(s.heads[0]));
-  EXPECT_EQ(s.heads[0].info.y, 1u);
+  EXPECT_EQ(s.heads[0].serial, 1u);
   EXPECT_EQ(s.releases, 6u);
 }
 
 TEST(NeonChains, WorkgroupsCoverEveryParticleWithinDeviceLimits) {
+  constexpr uint32_t kGroup = 64;  // chains.comp's local size (the scene asks the program for it)
   for (uint64_t particles : {1ull, 64ull, 65ull, 512ull, 65535ull * 64, 65536ull * 64, 65536ull * 64 + 1}) {
-    const glm::uvec2 groups = chainGroups(particles);
-    const uint64_t invocations = uint64_t(groups.x) * groups.y * kChainGroupSize;
+    const glm::uvec2 groups = chainGroups(particles, kGroup);
+    const uint64_t invocations = uint64_t(groups.x) * groups.y * kGroup;
     EXPECT_LE(groups.x, 65535u) << particles;
     EXPECT_GE(invocations, particles) << particles;
-    EXPECT_LT(invocations - particles, uint64_t(groups.y + 1) * kChainGroupSize) << "few spare groups";
+    EXPECT_LT(invocations - particles, uint64_t(groups.y + 1) * kGroup) << "few spare groups";
   }
-  EXPECT_EQ(chainGroups(16 * 32), glm::uvec2(8u, 1u));
-  EXPECT_EQ(chainGroups(65536ull * 64).y, 2u);
-  EXPECT_EQ(chainGroups(0), glm::uvec2(0u, 0u));
+  EXPECT_EQ(chainGroups(16 * 32, kGroup), glm::uvec2(8u, 1u));
+  EXPECT_EQ(chainGroups(65536ull * 64, kGroup).y, 2u);
+  EXPECT_EQ(chainGroups(0, kGroup), glm::uvec2(0u, 0u));
+  EXPECT_EQ(chainGroups(512, 256), glm::uvec2(2u, 1u)) << "any local size";
 }
 
 }  // namespace

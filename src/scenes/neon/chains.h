@@ -4,6 +4,7 @@
 // (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
 // tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
 // particle depends only on the previous frame and the order of the invocations cannot matter.
+#include "shaders/neon/chain_push.h"
 #include "scenes/neon/head_state.h"
 #include "scenes/noodles/field.h"
 
@@ -50,17 +51,17 @@ inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t partic
   glm::vec3 position = glm::vec3(previous[index]);
   const ChainState state = chainState(head);
   if (state == ChainState::Initialising) {
-    position = glm::vec3(head.originLife);  // the whole chain collapses onto the release point
+    position = head.origin;  // the whole chain collapses onto the release point
   } else if (state == ChainState::Alive) {
     if (k == 0 && steered(head))  // a pen: where the cursor is
-      position = glm::vec3(head.originLife);
+      position = head.origin;
     else if (k == 0)
-      position += (noodles::flowVelocity(position, field) * p.fieldStrength + glm::vec3(head.launch)) * p.dt;
+      position += (noodles::flowVelocity(position, field) * p.fieldStrength + head.launch) * p.dt;
     else  // chase where the particle ahead was last step
       position += (glm::vec3(previous[index - 1]) - position) * p.lerp;
   }
   // Inactive: stays put, so a recycled tube does not jump before it fades (its life is 0).
-  return {position, head.originLife.w};
+  return {position, head.life};
 }
 
 inline void stepChains(std::span<const HeadState> heads, uint32_t particlesPerChain,
@@ -72,37 +73,19 @@ inline void stepChains(std::span<const HeadState> heads, uint32_t particlesPerCh
   for (size_t i = 0; i < count; ++i) next[i] = chainParticle(heads, particlesPerChain, previous, uint32_t(i), field, p);
 }
 
-// The push block of shaders/neon/chains.comp (std430: each vec3 starts a 16-byte slot and the float
-// after it fills the slot's last 4 bytes).
-struct ChainPush {
-  glm::vec3 offsetY;  // second potential, drift included
-  float dt;
-  glm::vec3 offsetZ;  // third potential, drift included
-  float lerp;
-  uint32_t chainCount;
-  uint32_t particlesPerChain;
-  float fieldStrength;
-  float noiseScale;
-};
-static_assert(offsetof(ChainPush, offsetY) == 0 && offsetof(ChainPush, dt) == 12 &&
-              offsetof(ChainPush, offsetZ) == 16 && offsetof(ChainPush, lerp) == 28 &&
-              offsetof(ChainPush, chainCount) == 32 && offsetof(ChainPush, particlesPerChain) == 36 &&
-              offsetof(ChainPush, fieldStrength) == 40 && offsetof(ChainPush, noiseScale) == 44 &&
-              sizeof(ChainPush) == 48);
-
-inline ChainPush chainPush(uint32_t chainCount, uint32_t particlesPerChain, const ChainParams& p) {
+// The chain pass's push constants for one step (the block is shaders/neon/chain_push.h).
+inline shader::NeonChainPush chainPush(uint32_t chainCount, uint32_t particlesPerChain, const ChainParams& p) {
   const noodles::FieldSettings field = chainField(p);
   return {field.offsetY, p.dt, field.offsetZ, p.lerp, chainCount, particlesPerChain, p.fieldStrength, field.noiseScale};
 }
 
-inline constexpr uint32_t kChainGroupSize = 64;  // local_size_x of chains.comp
-
-// Workgroups for `particles` invocations. One row while it fits the 65535 groups every device allows
-// in x; beyond that (65536 chains of 64 particles need 65536 groups) rows are stacked in y, and the
-// shader numbers invocations row by row, skipping the overhang.
-inline glm::uvec2 chainGroups(uint64_t particles) {
+// Workgroups of `groupSize` invocations (the pass's local size) for `particles` invocations. One row
+// while it fits the 65535 groups every device allows in x; beyond that (65536 chains of 64 particles
+// in groups of 64 need 65536 groups) rows are stacked in y, and the shader numbers invocations row by
+// row, skipping the overhang.
+inline glm::uvec2 chainGroups(uint64_t particles, uint32_t groupSize) {
   constexpr uint64_t kMaxGroups = 65535;
-  const uint64_t groups = (particles + kChainGroupSize - 1) / kChainGroupSize;
+  const uint64_t groups = (particles + groupSize - 1) / groupSize;
   const uint64_t rows = (groups + kMaxGroups - 1) / kMaxGroups;
   if (rows == 0) return {0u, 0u};
   return {uint32_t((groups + rows - 1) / rows), uint32_t(rows)};

@@ -2,6 +2,8 @@
 // The neon scene's building: a facade of axis-aligned boxes (world space, metres, y up; the facade's
 // front plane at z = 0 facing +z, the ground's top at y = 0) and the soft lighting texture it samples
 // through UVs projected along its normals. shaders/neon/facade_uv.glsl mirrors facadeUv.
+#include "shaders/neon/facade_blocks.h"
+
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -12,11 +14,7 @@
 
 namespace vitrine::neon {
 
-struct Box {
-  glm::vec4 centre;    // w unused
-  glm::vec4 halfSize;  // w unused; every component > 0
-};
-static_assert(sizeof(Box) == 32);  // two vec4s: uploads as a std430 array as is
+using Box = shader::NeonFacadeBox;  // the shader's: uploads as its std430 array as is
 
 // The layout's numbers, for the camera and for tests.
 inline constexpr float kFacadeHalfWidth = 10.0f;  // the front spans x in [-10, 10]

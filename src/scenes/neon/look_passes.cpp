@@ -2,6 +2,9 @@
 
 #include "maths/color.h"
 #include "scenes/neon/look.h"
+#include "shaders/neon/bloom_push.h"
+#include "shaders/neon/composite_push.h"
+#include "shaders/neon/dof_push.h"
 
 namespace vitrine::neon {
 namespace {
@@ -16,21 +19,15 @@ gpu::ImageDecl chainDecl(std::string name) {
           0};
 }
 
-gpu::ProgramLayout layout(size_t samplers, uint32_t push) {
-  std::vector<VkDescriptorType> bindings(samplers, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  bindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
-  return {bindings, push};
-}
-
 }  // namespace
 
 LookPasses::LookPasses(const SceneContext& context)
     : device_(context.device),
       resources_(context.resources),
-      down_(context.programs, "neon/bloom_down.comp", layout(1, sizeof(BloomDownPush))),
-      up_(context.programs, "neon/bloom_up.comp", layout(2, sizeof(BloomUpPush))),
-      dof_(context.programs, "neon/dof.comp", layout(2, sizeof(DofPush))),
-      composite_(context.programs, "neon/composite.comp", layout(2, sizeof(CompositePush))) {
+      down_(context.programs, "neon/bloom_down.comp"),
+      up_(context.programs, "neon/bloom_up.comp"),
+      dof_(context.programs, "neon/dof.comp"),
+      composite_(context.programs, "neon/composite.comp") {
   downChain_ = resources_.declare(chainDecl("neon bloom down"));
   upChain_ = resources_.declare(chainDecl("neon bloom up"));
   focused_ = resources_.declare({"neon depth of field", kHdr, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
@@ -47,8 +44,7 @@ gpu::Image& LookPasses::bloom(const FrameContext& frame, const Settings& setting
   const VkExtent2D size = down.extent2d();
   const int levels = std::min(bloomLevels(size.height * 2), int(down.desc().mips));
   const auto dispatch = [&](const gpu::ComputeProgram& program, int mip) {
-    program.dispatchOver(frame.cmd, VkExtent2D{std::max(1u, size.width >> mip), std::max(1u, size.height >> mip)},
-                         {8, 8});
+    program.dispatchOver(frame.cmd, VkExtent2D{std::max(1u, size.width >> mip), std::max(1u, size.height >> mip)});
   };
 
   frame.transition(glow, gpu::use::ComputeSample);
@@ -57,11 +53,12 @@ gpu::Image& LookPasses::bloom(const FrameContext& frame, const Settings& setting
   for (int level = 1; level <= levels; ++level) {
     const bool first = level == 1;
     if (!first) frame.transition(down, gpu::use::ComputeSampleWrite);  // level - 1 was just written
-    const BloomDownPush push{first ? 0.0f : float(level - 2), kBloomThreshold, kBloomKnee, first ? 1u : 0u};
+    const shader::NeonBloomDownPush push{first ? 0.0f : float(level - 2), kBloomThreshold, kBloomKnee, first ? 1u : 0u};
     down_.constants(frame.cmd, push);
-    down_.push(frame.cmd, gpu::Bindings()
-                              .sampledImage(first ? glow.view() : down.view(), mipped, first ? kSampled : kGeneral)
-                              .storageImage(down.mipView(uint32_t(level - 1))));
+    down_.push(frame.cmd,
+               gpu::Bindings()
+                   .sampledImage("source", first ? glow.view() : down.view(), mipped, first ? kSampled : kGeneral)
+                   .storageImage("target", down.mipView(uint32_t(level - 1))));
     dispatch(down_, level - 1);
   }
   frame.transition(down, gpu::use::ComputeSampleWrite);
@@ -70,12 +67,12 @@ gpu::Image& LookPasses::bloom(const FrameContext& frame, const Settings& setting
   for (int level = levels - 1; level >= 1; --level) {
     if (level < levels - 1) frame.transition(up, gpu::use::ComputeSampleWrite);
     const bool fromDown = level == levels - 1;  // the smallest level comes from the down chain
-    const BloomUpPush push{float(level), float(level - 1), settings.bloomRadius, 1.0f};
+    const shader::NeonBloomUpPush push{float(level), float(level - 1), settings.bloomRadius, 1.0f};
     up_.constants(frame.cmd, push);
     up_.push(frame.cmd, gpu::Bindings()
-                            .sampledImage(fromDown ? down.view() : up.view(), mipped, kGeneral)
-                            .sampledImage(down.view(), mipped, kGeneral)
-                            .storageImage(up.mipView(uint32_t(level - 1))));
+                            .sampledImage("smaller", fromDown ? down.view() : up.view(), mipped, kGeneral)
+                            .sampledImage("current", down.view(), mipped, kGeneral)
+                            .storageImage("target", up.mipView(uint32_t(level - 1))));
     dispatch(up_, level - 1);
   }
   return levels > 1 ? up : down;  // level 1
@@ -85,6 +82,7 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
   const bool bloomOn = settings.stage >= Stage::Bloom;
   const bool dofOn = settings.stage >= Stage::Dof;
   const VkExtent2D extent = in.scene.extent2d();
+  const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   gpu::Image* bloomed = &frame.image(upChain_);  // not read unless the bloom ran
   if (bloomOn) bloomed = &bloom(frame, settings, in.glow);
   gpu::Image& focused = frame.image(focused_);
@@ -94,18 +92,17 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
     frame.transition(in.depth, gpu::use::ComputeSample);
     frame.transition(focused, gpu::use::ComputeWrite);
     const float pixels = float(extent.height) / 1080.0f;  // circles of confusion scale with the frame
-    const DofPush push{glm::vec2(extent.width, extent.height), in.near, settings.focalDistance,
-                       settings.aperture * 6.0f * pixels, 14.0f * pixels, 32u, 0.0f};
+    const shader::NeonDofPush push{glm::vec2(extent.width, extent.height), in.near, settings.focalDistance,
+                                   settings.aperture * 6.0f * pixels, 14.0f * pixels, 32u, 0.0f};
     dof_.bind(frame.cmd);
     dof_.constants(frame.cmd, push);
-    dof_.push(frame.cmd,
-              gpu::Bindings()
-                  .sampledImage(in.scene.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
-                                kSampled)
-                  .sampledImage(in.depth.view(), device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
-                                kSampled)
-                  .storageImage(focused.view()));
-    dof_.dispatchOver(frame.cmd, extent, {8, 8});
+    dof_.push(frame.cmd, gpu::Bindings()
+                             .sampledImage("colour", in.scene.view(), linear, kSampled)
+                             .sampledImage("depth", in.depth.view(),
+                                           device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
+                                           kSampled)
+                             .storageImage("target", focused.view()));
+    dof_.dispatchOver(frame.cmd, extent);
   }
   const auto pass = frame.pass("neon composite");
   gpu::Image& scene = dofOn ? focused : in.scene;
@@ -117,11 +114,11 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
     case Stage::Base:
     case Stage::Tubes: flags = 0; break;
     case Stage::Bloom:
-    case Stage::Dof: flags = kCompositeBloom; break;
-    case Stage::Tint: flags = kCompositeBloom | kCompositeTint; break;
-    case Stage::Final: flags = kCompositeAll; break;
+    case Stage::Dof: flags = shader::NEON_COMPOSITE_BLOOM; break;
+    case Stage::Tint: flags = shader::NEON_COMPOSITE_BLOOM | shader::NEON_COMPOSITE_TINT; break;
+    case Stage::Final: flags = shader::NEON_COMPOSITE_ALL; break;
   }
-  CompositePush push;
+  shader::NeonCompositePush push{};
   push.tintColour0 = maths::srgbToLinear(settings.tintA);
   push.tintStrength = settings.tintStrength;
   push.tintColour1 = maths::srgbToLinear(settings.tintB);
@@ -139,15 +136,14 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
   push.flags = flags;
   composite_.bind(frame.cmd);
   composite_.constants(frame.cmd, push);
-  composite_.push(frame.cmd,
-                  gpu::Bindings()
-                      .sampledImage(scene.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
-                                    kSampled)
-                      .sampledImage(bloomed->view(), device_.sampler(gpu::Device::Filter::Linear,
-                                                                    gpu::Device::Address::Clamp, true),
-                                    kSampled)
-                      .storageImage(frame.target.view()));
-  composite_.dispatchOver(frame.cmd, extent, {8, 8});
+  composite_.push(frame.cmd, gpu::Bindings()
+                                 .sampledImage("scene", scene.view(), linear, kSampled)
+                                 .sampledImage("bloom", bloomed->view(),
+                                               device_.sampler(gpu::Device::Filter::Linear,
+                                                               gpu::Device::Address::Clamp, true),
+                                               kSampled)
+                                 .storageImage("target", frame.target.view()));
+  composite_.dispatchOver(frame.cmd, extent);
 }
 
 }  // namespace vitrine::neon

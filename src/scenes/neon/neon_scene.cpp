@@ -18,12 +18,16 @@
 #include "scenes/neon/tube_light.h"
 #include "maths/color.h"
 #include "maths/hash.h"
+#include "shaders/neon/facade_blocks.h"
+#include "shaders/neon/frame.h"
+#include "shaders/neon/merge_push.h"
 
 #include <fmt/format.h>
 #include <imgui.h>
 
 #include <cmath>
-#include <cstring>
+#include <span>
+#include <vector>
 
 namespace vitrine::neon {
 namespace {
@@ -40,29 +44,45 @@ constexpr size_t kMaxChainStepsPerFrame = 16;  // steps kept for one frame at mo
 constexpr float kReducedMotionFlow = 0.35f;
 constexpr float kReducedMotionAutopilot = 0.25f;
 
-// Mirrors shaders/neon/camera.glsl.
-struct NeonFrame {
-  glm::mat4 viewProjection;
-  glm::vec4 eye;
-  glm::vec4 right;
-  glm::vec4 up;
-  glm::vec4 forward;
-  glm::vec4 colourA;
-  glm::vec4 colourB;
-  glm::vec4 colourC;
-  glm::vec4 tube;
-  glm::uvec4 counts;
-};
-static_assert(sizeof(NeonFrame) == 208);
-
-struct MergePush {  // merge.comp: the three neon colours, linear
-  glm::vec4 colours[3];
-};
-
 constexpr VkFormat kDepthCopyFormat = VK_FORMAT_R32_SFLOAT;  // the facade's depth, written by compute
 
 gpu::ImageDecl screenImage(std::string name, VkFormat format, VkImageUsageFlags usage, uint32_t mips = 1) {
   return {std::move(name), format, usage, gpu::ImageSize::relative(1.0f), mips};
+}
+
+template <typename T> std::vector<std::byte> bytesOf(const std::vector<T>& values) {
+  const auto bytes = std::as_bytes(std::span(values));
+  return {bytes.begin(), bytes.end()};
+}
+
+// The heads, in device memory (every particle of a chain reads its head), refreshed through the frame's
+// upload ring whenever the chains move.
+gpu::BufferDecl headsDecl(int chains) {
+  return {.name = "neon heads",
+          .size = gpu::BufferSize::absolute(VkDeviceSize(chains) * sizeof(HeadState)),
+          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT};
+}
+
+// Every particle's position and life, chain-major: a pair, as each chain step reads last step's and
+// writes the other. Both start with every particle out of sight (life 0, under the ground) until its
+// chain is released.
+gpu::BufferDecl particlesDecl(int chains, int particles) {
+  const std::vector<glm::vec4> hidden(size_t(chains) * particles, glm::vec4(0.0f, -100.0f, 0.0f, 0.0f));
+  return {.name = "neon particles",
+          .size = gpu::BufferSize::absolute(hidden.size() * sizeof(glm::vec4)),
+          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+          .pairing = gpu::Pairing::PingPong,
+          .initial = bytesOf(hidden),
+          .initialUse = gpu::use::ComputeReadBuffer};
+}
+
+// The building's boxes, uploaded once.
+gpu::BufferDecl boxesDecl(const std::vector<Box>& boxes) {
+  return {.name = "neon facade boxes",
+          .size = gpu::BufferSize::absolute(boxes.size() * sizeof(Box)),
+          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+          .initial = bytesOf(boxes),
+          .initialUse = gpu::use::ComputeReadBuffer};
 }
 
 gpu::GraphicsState tubeState() {
@@ -87,23 +107,11 @@ class NeonScene final : public Scene {
         events_(context.events),
         quality_(context),
         mode_(context.realtime ? EngineMode::Worker : EngineMode::LockStep),
-        chains_(context.programs, "neon/chains.comp",
-                {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                  VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                 sizeof(ChainPush)}),
-        facade_(context.programs, "neon/facade.comp",
-                {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                  VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                 sizeof(glm::vec4)}),
-        tubes_(context.programs, tubeState(),
-               {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                0}),
-        merge_(context.programs, "neon/merge.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                sizeof(MergePush)}),
-        clear_(context.programs, "neon/clear.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 0}),
+        chains_(context.programs, "neon/chains.comp"),
+        facade_(context.programs, "neon/facade.comp"),
+        tubes_(context.programs, tubeState()),
+        merge_(context.programs, "neon/merge.comp"),
+        clear_(context.programs, "neon/clear.comp"),
         look_(context) {
     colour_ = resources_.declare(screenImage("neon scene", kColourFormat,
                                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
@@ -115,15 +123,15 @@ class NeonScene final : public Scene {
     const std::vector<uint8_t> texels = facadeLightingTexture(kLightingSize);
     gpu::ImageDecl lighting{"neon facade lighting", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_SAMPLED_BIT,
                             gpu::ImageSize::absolute(kLightingSize, kLightingSize), 0};
-    lighting.initial.resize(texels.size());
-    std::memcpy(lighting.initial.data(), texels.data(), texels.size());
+    lighting.initial = bytesOf(texels);
     lighting.initialUse = gpu::use::ComputeSample;
     lighting_ = resources_.declare(std::move(lighting));
-    boxes_ = facadeBoxes();
-    boxBuffer_.emplace(device_, boxes_.size() * sizeof(Box),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Device,
-                       "neon facade boxes");
-    rebuild();
+    const std::vector<Box> boxes = facadeBoxes();
+    boxCount_ = uint32_t(boxes.size());
+    boxes_ = resources_.declare(boxesDecl(boxes));
+    heads_ = resources_.declare(headsDecl(settings_.chains));
+    particles_ = resources_.declare(particlesDecl(settings_.chains, settings_.particles));
+    startEngine();
   }
 
   void resize(VkExtent2D target) override {
@@ -143,7 +151,8 @@ class NeonScene final : public Scene {
   void drawPanel() override;
 
  private:
-  void rebuild();
+  void startEngine();
+  void resizeChains();
   void release(double time, glm::vec3 position, const char* by);
   void handleCursor(const FrameInput& input);
   void autopilot(const FrameInput& input);
@@ -167,12 +176,10 @@ class NeonScene final : public Scene {
   std::optional<PlacementGuard> placement_;
   std::vector<HeadState> uploadHeads_;
   int builtChains_ = 0, builtParticles_ = 0;
-  std::optional<gpu::Buffer> heads_, particles_[2], boxBuffer_;
-  uint32_t current_ = 0;  // which particle buffer holds this frame's positions
+  // current(particles_) holds the latest positions: the chain pass reads it, writes previous() and flips.
+  gpu::BufferHandle heads_, particles_, boxes_;
+  uint32_t boxCount_ = 0;
   std::vector<ChainParams> stepsPending_;  // one per simulation step since the chains last moved
-  bool placed_ = false;   // the particle buffers have been filled once
-  bool boxesUploaded_ = false;
-  std::vector<Box> boxes_;
   gpu::ImageHandle colour_, depth_, glow_, lighting_;
   bool glowCleared_ = false;  // the tubes' target holds zeros (cleared after its last use, or at creation)
   VkExtent2D extent_{1, 1};
@@ -186,23 +193,20 @@ class NeonScene final : public Scene {
   uint64_t releases_ = 0;
 };
 
-// The engine and the particle buffers for the current sizes; the old ones are retired, not waited for.
-void NeonScene::rebuild() {
+// An engine for the current number of chains, with none released.
+void NeonScene::startEngine() {
   builtChains_ = settings_.chains;
   builtParticles_ = settings_.particles;
   engine_ = std::make_unique<ParticleEngine>(EngineSettings{uint32_t(settings_.chains), settings_.decay}, mode_);
   placement_.emplace(uint32_t(settings_.chains));
-  const VkDeviceSize headBytes = VkDeviceSize(settings_.chains) * sizeof(HeadState);
-  const VkDeviceSize particleBytes = VkDeviceSize(settings_.chains) * settings_.particles * sizeof(glm::vec4);
-  if (heads_) device_.retire(std::move(*heads_));
-  heads_.emplace(device_, headBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                 gpu::MemoryUse::Device, "neon heads");
-  for (auto& buffer : particles_) {
-    if (buffer) device_.retire(std::move(*buffer));
-    buffer.emplace(device_, particleBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   gpu::MemoryUse::Device, "neon particles");
-  }
-  placed_ = false;
+}
+
+// The chains or their particles changed: a new engine, and buffers of the new sizes with every particle
+// hidden again (the host retires the old ones, never waits for them).
+void NeonScene::resizeChains() {
+  resources_.redeclare(heads_, headsDecl(settings_.chains));
+  resources_.redeclare(particles_, particlesDecl(settings_.chains, settings_.particles));
+  startEngine();
 }
 
 void NeonScene::release(double time, glm::vec3 position, const char* by) {
@@ -262,7 +266,7 @@ void NeonScene::update(const FrameInput& input) {
   time_ = input.time;
   reducedMotion_ = input.reducedMotion;
   if (settings_.chains != builtChains_ || settings_.particles != builtParticles_) {
-    rebuild();
+    resizeChains();
     drawing_ = false;  // the new engine has no pen
     stepsPending_.clear();
   }
@@ -299,26 +303,22 @@ void NeonScene::recordChains(const FrameContext& frame) {
   const Snapshot& snapshot = engine_->latest();
   uploadHeads_.resize(snapshot.heads.size());
   placement_->copy(snapshot.heads, uploadHeads_);
-  frame.upload(*heads_, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
-  if (!placed_) {  // the first frame: every particle out of sight until its chain is released
-    const std::vector<glm::vec4> hidden(size_t(builtChains_) * builtParticles_, glm::vec4(0.0f, -100.0f, 0.0f, 0.0f));
-    frame.upload(*particles_[current_], 0, std::as_bytes(std::span(hidden)), gpu::use::ComputeReadBuffer);
-    placed_ = true;
-  }
-  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_));
+  gpu::Buffer& heads = frame.resources.current(heads_);
+  frame.upload(heads, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
+  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_), chains_.localSize()[0]);
   chains_.bind(frame.cmd);
   for (const ChainParams& params : std::exchange(stepsPending_, {})) {
     chains_.constants(frame.cmd, chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params));
-    gpu::Buffer& previous = *particles_[current_];
-    gpu::Buffer& next = *particles_[current_ ^ 1u];
+    gpu::Buffer& previous = frame.resources.current(particles_);
+    gpu::Buffer& next = frame.resources.previous(particles_);
     frame.transition(previous, gpu::use::ComputeReadBuffer);
     frame.transition(next, gpu::use::ComputeWriteBuffer);
     chains_.push(frame.cmd, gpu::Bindings()
-                                .storageBuffer(heads_->handle())
-                                .storageBuffer(previous.handle())
-                                .storageBuffer(next.handle()));
-    vkCmdDispatch(frame.cmd, groups.x, groups.y, 1);
-    current_ ^= 1u;
+                                .storageBuffer("Heads", heads.handle())
+                                .storageBuffer("Previous", previous.handle())
+                                .storageBuffer("Next", next.handle()));
+    chains_.dispatchGroups(frame.cmd, {groups.x, groups.y, 1});
+    frame.resources.flip(particles_);
   }
 }
 
@@ -329,32 +329,29 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   gpu::Image& lighting = frame.image(lighting_);
   const VkSampler nearest = device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp);
   constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  if (!boxesUploaded_) {
-    frame.upload(*boxBuffer_, 0, std::as_bytes(std::span(boxes_)), gpu::use::ComputeReadBuffer);
-    boxesUploaded_ = true;
-  }
   {
     const auto pass = frame.pass("neon facade");
-    frame.transition(*boxBuffer_, gpu::use::ComputeReadBuffer);
+    gpu::Buffer& boxes = frame.resources.current(boxes_);
+    frame.transition(boxes, gpu::use::ComputeReadBuffer);
     frame.transition(lighting, gpu::use::ComputeSample);
     frame.transition(colour, gpu::use::ComputeWrite);
     frame.transition(depth, gpu::use::ComputeWrite);
     facade_.bind(frame.cmd);
-    facade_.constants(frame.cmd, glm::vec4(kNightSky, kFacadeBrightness));
+    facade_.constants(frame.cmd, shader::NeonFacadePush{kNightSky, kFacadeBrightness});
     facade_.push(frame.cmd, gpu::Bindings()
-                                .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
-                                .storageBuffer(boxBuffer_->handle())
-                                .sampledImage(lighting.view(),
+                                .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
+                                .storageBuffer("Boxes", boxes.handle())
+                                .sampledImage("lighting", lighting.view(),
                                               device_.sampler(gpu::Device::Filter::Linear,
                                                               gpu::Device::Address::Clamp, true),
                                               kSampled)
-                                .storageImage(colour.view())
-                                .storageImage(depth.view()));
-    facade_.dispatchOver(frame.cmd, extent_, {8, 8});
+                                .storageImage("colour", colour.view())
+                                .storageImage("depth", depth.view()));
+    facade_.dispatchOver(frame.cmd, extent_);
   }
   {
     const auto pass = frame.pass("neon tubes");
-    gpu::Buffer& positions = *particles_[current_];
+    gpu::Buffer& positions = frame.resources.current(particles_);
     frame.transition(positions, gpu::use::VertexReadBuffer);
     frame.transition(depth, gpu::use::FragmentSample);
     gpu::RenderingDesc desc;
@@ -364,9 +361,9 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
     if (settings_.stage != Stage::Base) {  // the base stage is the facade alone
       tubes_.bind(frame.cmd);
       tubes_.push(frame.cmd, gpu::Bindings()
-                                 .uniformBuffer(block.buffer, block.offset, sizeof(NeonFrame))
-                                 .storageBuffer(positions.handle())
-                                 .sampledImage(depth.view(), nearest, kSampled));
+                                 .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
+                                 .storageBuffer("Particles", positions.handle())
+                                 .sampledImage("facadeDepth", depth.view(), nearest, kSampled));
       vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
     }
   }
@@ -375,12 +372,14 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   frame.transition(depth, gpu::use::ComputeReadWrite);
   frame.transition(glow, gpu::use::ComputeReadWrite);
   merge_.bind(frame.cmd);
-  merge_.constants(frame.cmd, MergePush{{glm::vec4(linear(settings_.colourA), 0.0f),
-                                         glm::vec4(linear(settings_.colourB), 0.0f),
-                                         glm::vec4(linear(settings_.colourC), 0.0f)}});
-  merge_.push(frame.cmd,
-              gpu::Bindings().storageImage(colour.view()).storageImage(depth.view()).storageImage(glow.view()));
-  merge_.dispatchOver(frame.cmd, extent_, {8, 8});
+  merge_.constants(frame.cmd, shader::NeonMergePush{{glm::vec4(linear(settings_.colourA), 0.0f),
+                                                     glm::vec4(linear(settings_.colourB), 0.0f),
+                                                     glm::vec4(linear(settings_.colourC), 0.0f)}});
+  merge_.push(frame.cmd, gpu::Bindings()
+                             .storageImage("scene", colour.view())
+                             .storageImage("depth", depth.view())
+                             .storageImage("tubes", glow.view()));
+  merge_.dispatchOver(frame.cmd, extent_);
 }
 
 void NeonScene::record(const FrameContext& frame) {
@@ -389,16 +388,25 @@ void NeonScene::record(const FrameContext& frame) {
   const glm::mat3 axes = glm::transpose(glm::mat3(viewMatrix()));  // the camera's right, up and back in world
   const float tanHalf = std::tan(0.5f * kFovY);
   const float focalPixels = 0.5f * float(extent_.height) / tanHalf;
-  const NeonFrame block{viewProjection,
-                        glm::vec4(kEye, kNear),
-                        glm::vec4(axes[0] * tanHalf * aspect_, float(extent_.width)),
-                        glm::vec4(axes[1] * tanHalf, float(extent_.height)),
-                        glm::vec4(-axes[2], 0.0f),
-                        glm::vec4(linear(settings_.colourA), settings_.glow),
-                        glm::vec4(linear(settings_.colourB), settings_.radius),
-                        glm::vec4(linear(settings_.colourC), tubeExposure(aliveChains())),
-                        glm::vec4(kMinTubeRadiusPixels, focalPixels, 0.0f, 0.0f),
-                        glm::uvec4(uint32_t(builtChains_), uint32_t(builtParticles_), uint32_t(boxes_.size()), 0u)};
+  const shader::NeonFrame block{.viewProjection = viewProjection,
+                                .eye = kEye,
+                                .near = kNear,
+                                .right = axes[0] * tanHalf * aspect_,
+                                .frameWidth = float(extent_.width),
+                                .up = axes[1] * tanHalf,
+                                .frameHeight = float(extent_.height),
+                                .forward = -axes[2],
+                                .focalPixels = focalPixels,
+                                .colourA = linear(settings_.colourA),
+                                .glow = settings_.glow,
+                                .colourB = linear(settings_.colourB),
+                                .tubeRadius = settings_.radius,
+                                .colourC = linear(settings_.colourC),
+                                .exposure = tubeExposure(aliveChains()),
+                                .minTubeRadiusPixels = kMinTubeRadiusPixels,
+                                .chains = uint32_t(builtChains_),
+                                .particlesPerChain = uint32_t(builtParticles_),
+                                .boxes = boxCount_};
   recordFacadeAndTubes(frame, frame.uniform(block));
   // The ground mirrors about the facade's foot, where it meets the ground straight ahead.
   const float footY = projectedRow(viewProjection, glm::vec3(0.0f), float(extent_.height));
@@ -408,8 +416,8 @@ void NeonScene::record(const FrameContext& frame) {
   gpu::Image& glow = frame.image(glow_);
   frame.transition(glow, gpu::use::ComputeWrite);
   clear_.bind(frame.cmd);
-  clear_.push(frame.cmd, gpu::Bindings().storageImage(glow.view()));
-  clear_.dispatchOver(frame.cmd, extent_, {8, 8});
+  clear_.push(frame.cmd, gpu::Bindings().storageImage("target", glow.view()));
+  clear_.dispatchOver(frame.cmd, extent_);
   glowCleared_ = true;
 }
 

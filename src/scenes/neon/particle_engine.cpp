@@ -124,7 +124,7 @@ void ParticleEngine::apply(const std::vector<Command>& commands) {
       case Kind::Release: spawn(command.position, false); break;
       case Kind::ReleaseSteered: spawn(command.position, true); break;
       case Kind::Steer:
-        if (HeadState* head = pen()) head->originLife = glm::vec4(command.position, head->originLife.w);
+        if (HeadState* head = pen()) head->origin = command.position;
         break;
       case Kind::EndSteer: letPenGo(); break;
       case Kind::Step:
@@ -136,14 +136,14 @@ void ParticleEngine::apply(const std::vector<Command>& commands) {
 }
 
 void ParticleEngine::letPenGo() {
-  if (HeadState* head = pen()) head->info.w &= ~kHeadSteered;  // from now on it swims and fades
+  if (HeadState* head = pen()) head->flags &= ~kHeadSteered;  // from now on it swims and fades
   pen_ = {0, 0};
 }
 
 HeadState* ParticleEngine::pen() {
   if (pen_.serial == 0) return nullptr;
   HeadState& head = heads_[pen_.slot];
-  return chainState(head) != ChainState::Inactive && head.info.y == pen_.serial ? &head : nullptr;
+  return chainState(head) != ChainState::Inactive && head.serial == pen_.serial ? &head : nullptr;
 }
 
 void ParticleEngine::spawn(glm::vec3 position, bool steered) {
@@ -161,7 +161,7 @@ void ParticleEngine::spawn(glm::vec3 position, bool steered) {
     dropStaleOccupants();
     auto oldest = occupants_.begin();
     const auto live = [this](const Occupant& o) {
-      return chainState(heads_[o.slot]) != ChainState::Inactive && heads_[o.slot].info.y == o.serial;
+      return chainState(heads_[o.slot]) != ChainState::Inactive && heads_[o.slot].serial == o.serial;
     };
     if (oldest->serial == pen_.serial && maxChains_ > 1)
       oldest = std::find_if(std::next(oldest), occupants_.end(), live);
@@ -170,9 +170,14 @@ void ParticleEngine::spawn(glm::vec3 position, bool steered) {
     occupants_.erase(oldest);
   }
   ++serial_;
-  heads_[slot] = {glm::vec4(position, 1.0f),
-                  glm::uvec4(uint32_t(ChainState::Initialising), uint32_t(serial_), 0u, steered ? kHeadSteered : 0u),
-                  glm::vec4(launchVelocity(uint32_t(serial_)), 0.0f)};
+  heads_[slot] = {.origin = position,
+                  .life = 1.0f,
+                  .state = uint32_t(ChainState::Initialising),
+                  .serial = uint32_t(serial_),
+                  .steps = 0u,
+                  .flags = steered ? kHeadSteered : 0u,
+                  .launch = launchVelocity(uint32_t(serial_)),
+                  .padding = 0u};
   occupants_.push_back({slot, uint32_t(serial_)});
   if (steered) pen_ = {slot, uint32_t(serial_)};
   releasesApplied_.store(serial_, std::memory_order_relaxed);
@@ -184,11 +189,11 @@ void ParticleEngine::advance(float dt, float decayPerSecond) {
   for (uint32_t slot = 0; slot < maxChains_; ++slot) {
     HeadState& head = heads_[slot];
     if (chainState(head) == ChainState::Inactive) continue;
-    if (++head.info.z <= kInitialisingSteps) continue;
-    head.info.x = uint32_t(ChainState::Alive);
+    if (++head.steps <= kInitialisingSteps) continue;
+    head.state = uint32_t(ChainState::Alive);
     if (steered(head)) continue;  // the pen keeps its full life while it draws
-    head.originLife.w -= decayPerSecond * dt;
-    if (head.originLife.w <= 0.0f) {
+    head.life -= decayPerSecond * dt;
+    if (head.life <= 0.0f) {
       head = HeadState{};  // inactive, life 0: the GPU leaves the tube where it is, and it draws nothing
       free_.push(slot);
     }
@@ -202,7 +207,7 @@ void ParticleEngine::dropStaleOccupants() {
   while (!occupants_.empty()) {
     const Occupant& o = occupants_.front();
     const HeadState& head = heads_[o.slot];
-    if (chainState(head) != ChainState::Inactive && head.info.y == o.serial) return;
+    if (chainState(head) != ChainState::Inactive && head.serial == o.serial) return;
     occupants_.pop_front();
   }
 }
@@ -222,12 +227,12 @@ uint32_t PlacementGuard::copy(std::span<const HeadState> heads, std::span<HeadSt
   for (size_t i = 0; i < heads.size(); ++i) {
     out[i] = heads[i];
     const ChainState state = chainState(heads[i]);
-    if (state == ChainState::Inactive || placed_[i] == heads[i].info.y) continue;
+    if (state == ChainState::Inactive || placed_[i] == heads[i].serial) continue;
     if (state == ChainState::Alive) {
-      out[i].info.x = uint32_t(ChainState::Initialising);  // skipped: place it now, move it from next frame
+      out[i].state = uint32_t(ChainState::Initialising);  // skipped: place it now, move it from next frame
       ++fixed;
     }
-    placed_[i] = heads[i].info.y;
+    placed_[i] = heads[i].serial;
   }
   return fixed;
 }
