@@ -2,7 +2,7 @@
 // The gas in the tube, in one of three neon colours per chain, added into the tubes' own target: the
 // merge pass adds it to the facade, the bloom blurs it. Seen side-on, a glowing cylinder is brightest
 // where the eye looks through the most gas, the chord sqrt(1 - r^2): a round profile, saturated
-// across (no white core), its rim antialiased over a pixel. Brightness fades with life and a little
+// across (no white core), its rim antialiased over a pixel and a half. Brightness fades with life and a little
 // toward the tail, and scales by the frame's exposure (the energy budget, tube_light.h).
 // No depth attachment: light adds in any order, the facade's depth is tested here by hand, and the
 // target's alpha keeps the nearest tube's depth and colour (max blending of reverse-Z).
@@ -15,13 +15,16 @@ layout(location = 0) in float across;
 layout(location = 1) flat in uint colour;
 layout(location = 2) in float along;
 layout(location = 3) in float life;
+layout(location = 4) in float rim;
 layout(location = 0) out vec4 glow;
 
 void main() {
   if (gl_FragCoord.z < texelFetch(facadeDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
   const float r = abs(across);
   const float chord = sqrt(max(1.0 - r * r, 0.0));
-  const float edge = 1.0 - smoothstep(1.0 - 1.5 * fwidth(across), 1.0, r);  // a pixel-wide antialiased rim
+  // A pixel-and-a-half antialiased rim, its width from the vertex shader: screen-space derivatives
+  // (fwidth) are coarse on one GPU and fine on another, and differ most where the ribbon bends.
+  const float edge = 1.0 - smoothstep(1.0 - rim, 1.0, r);
   const vec3 hue = colour == 0u ? F.colourA : colour == 1u ? F.colourB : F.colourC;
   const float strength = F.glow * F.exposure * (0.3 + 0.7 * chord) * edge * (1.0 - 0.4 * along) *
                          smoothstep(0.0, 0.25, life);

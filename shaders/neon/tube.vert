@@ -12,26 +12,36 @@ layout(location = 0) out float across;  // -1..1 over the ribbon
 layout(location = 1) flat out uint colour;  // which of the three neon colours
 layout(location = 2) out float along;   // 0 at the head, 1 at the tail
 layout(location = 3) out float life;
+layout(location = 4) out float rim;     // the antialiased rim's width, in units of across
 
 void main() {
   const uint chain = gl_InstanceIndex, perChain = F.particlesPerChain;
   const uint k = gl_VertexIndex / 2;
   const uint base = chain * perChain;
   const vec4 p = particles[base + k];
-  const vec3 ahead = particles[base + (k == 0 ? 0 : k - 1)].xyz;
-  const vec3 behind = particles[base + min(k + 1, perChain - 1)].xyz;
-  vec3 tangent = ahead - behind;
-  const vec3 toEye = normalize(F.eye - p.xyz);
-  vec3 side = cross(tangent, toEye);
-  const float sideLength = length(side);
-  side = sideLength > 1e-6 ? side / sideLength : vec3(0.0);  // a chain still gathered at its origin: no width
   along = float(k) / float(max(perChain - 1, 1u));
   life = clamp(p.w, 0.0, 1.0);
   float radius = F.tubeRadius * sqrt(life) * (1.0 - 0.5 * along);
   const float depth = max((F.viewProjection * vec4(p.xyz, 1.0)).w, 1e-3);  // distance along the view
   const float pixels = radius * F.focalPixels / depth;
-  radius = life > 0.0 ? radius * max(1.0, F.minTubeRadiusPixels / max(pixels, 1e-6)) : 0.0;
+  const float widen = max(1.0, F.minTubeRadiusPixels / max(pixels, 1e-6));
+  radius = life > 0.0 ? radius * widen : 0.0;
+  // The ribbon's direction, measured over at least the tube's width. Where a chain is gathered (a
+  // young tube's tail, still at its origin) neighbouring particles are a rounding error apart, and a
+  // side vector from their difference points anywhere: a twisted sliver, a different one on every
+  // GPU (the H200's neon goldens, docs/RELIABILITY.md). So look toward the head until the chain has
+  // left the tube's own width.
+  const vec3 behind = particles[base + min(k + 1, perChain - 1)].xyz;
+  vec3 ahead = particles[base + (k == 0 ? 0 : k - 1)].xyz;
+  for (uint j = k; j > 1 && distance(ahead, behind) < 2.0 * radius; --j) ahead = particles[base + j - 2].xyz;
+  const vec3 tangent = ahead - behind;
+  const vec3 side = cross(tangent, normalize(F.eye - p.xyz));
+  const float sideLength = length(side);  // 0 only for a tube pointing straight at the eye
+  // A chain gathered within its own width is a point, not yet a tube: it grows in as it leaves.
+  radius *= clamp(length(tangent) / max(2.0 * radius, 1e-6), 0.0, 1.0);
   across = (gl_VertexIndex & 1) == 0 ? -1.0 : 1.0;
+  rim = 1.5 / max(pixels * widen, 1e-3);  // a pixel and a half, in units of `across`
   colour = (chain * 2654435761u >> 16) % 3u;  // neighbouring chains rarely share a colour
-  gl_Position = F.viewProjection * vec4(p.xyz + side * across * radius, 1.0);
+  const vec3 offset = sideLength > 0.0 ? side / sideLength * across * radius : vec3(0.0);
+  gl_Position = F.viewProjection * vec4(p.xyz + offset, 1.0);
 }
