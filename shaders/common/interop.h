@@ -24,6 +24,7 @@ using vec4 = glm::vec4;
 using ivec2 = glm::ivec2;
 using ivec4 = glm::ivec4;
 using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 }  // namespace vitrine::shader

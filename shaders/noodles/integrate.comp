@@ -5,27 +5,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "noodles/integrate.glsl"
 #include "noodles/packing.glsl"
+#include "noodles/integrate_push.h"
 
 layout(local_size_x = 64) in;
 layout(binding = 0, std430) writeonly buffer Nodes { uvec4 nodes[]; };  // this chunk's nodes
 
-layout(push_constant) uniform Push {
-  vec3 offsetY;  // second potential, drift included
-  float spacing;
-  vec3 offsetZ;  // third potential, drift included
-  float step;
-  uvec3 grid;    // strands along x, y, z
-  uint segments;
-  float noiseScale;
-  float lift;
-  uint firstStrand;   // the chunk's first strand
-  uint chunkStrands;  // strands in this chunk
-  uint field;
-  uint integrator;
-  uint tangent;
-  uint frames;
-  uint invocationsPerRow;  // workgroups in x * 64, when the dispatch needs a second dimension
-} pc;
+layout(push_constant) uniform Push { NoodlesIntegratePush pc; };
 
 vec3 strandStart(uint strand) {
   uvec3 index = uvec3(strand % pc.grid.x, (strand / pc.grid.x) % pc.grid.y, strand / (pc.grid.x * pc.grid.y));
@@ -35,17 +20,17 @@ vec3 strandStart(uint strand) {
 void main() {
   uint local = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
   if (local >= pc.chunkStrands) return;
-  FieldSettings field = FieldSettings(pc.field, pc.noiseScale, pc.offsetY, pc.offsetZ, pc.lift);
+  FieldSettings field = FieldSettings(pc.fieldKind, pc.noiseScale, pc.offsetY, pc.offsetZ, pc.lift);
 
   vec3 p = strandStart(pc.firstStrand + local);
   vec3 v = flowVelocity(p, field);
   Frame frame = upVectorFrame(directionOf(v, WORLD_UP));
   nodes[nodeSlot(pc.chunkStrands, local, 0u)] = packNode(p, frame);
-  for (uint k = 1u; k <= pc.segments; ++k) {
-    vec3 next = advance(p, travel(v, pc.tangent), pc.step, pc.integrator, pc.tangent, field);
+  for (uint k = 1u; k <= pc.segmentsPerStrand; ++k) {
+    vec3 next = advance(p, travel(v, pc.tangentMode), pc.step, pc.integrator, pc.tangentMode, field);
     v = flowVelocity(next, field);
     vec3 tangent = directionOf(v, frame.tangent);
-    frame = pc.frames == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
+    frame = pc.frameMethod == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
     p = next;
     nodes[nodeSlot(pc.chunkStrands, local, k)] = packNode(p, frame);
   }

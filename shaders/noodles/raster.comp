@@ -18,7 +18,7 @@ void main() {
   uint index = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
   if (index >= chunkSegments()) return;
   Segment s = loadSegment(index);
-  ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.radius, pc.samplesPerAxis);
+  ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.tubeRadius, pc.samplesPerAxis);
   if (cells.x > cells.z || cells.y > cells.w) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
   if (size.x * size.y <= MOST_CELLS_INLINE) {
@@ -31,10 +31,10 @@ void main() {
       for (int x = cells.x; x <= cells.z; ++x) rasterSample(uvec2(x, y), s);
     return;
   }
-  uint slot = atomicAdd(bigCount, 1u);
-  if (slot < pc.bigCapacity) {
+  uint slot = atomicAdd(counters.listed, 1u);
+  if (slot < pc.bigListCapacity) {
     bigSegments[slot] = index;
-    if (slot < MAX_BIG_GROUPS) atomicAdd(bigGroups, 1u);  // a workgroup each, up to the limit
+    if (slot < MAX_BIG_GROUPS) atomicAdd(counters.groupsX, 1u);  // a workgroup each, up to the limit
     return;
   }
   // The list is full (a pathological view): this invocation casts the box's rays itself.

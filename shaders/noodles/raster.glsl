@@ -5,6 +5,7 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 #include "noodles/packing.glsl"
+#include "noodles/raster_blocks.h"
 #include "noodles/raster_push.glsl"
 
 const uint TILE_SIDE = 8u;  // a tile is 8 x 8 sample cells: one cell per invocation of a big-segment group
@@ -16,8 +17,8 @@ layout(binding = 0, std430) readonly buffer Nodes { uvec4 nodes[]; };  // this c
 layout(binding = 1, std430) buffer Visibility { uint64_t keys[]; };
 // Segments too big for one invocation (chunk-local indices), for raster_big.comp.
 layout(binding = 2, std430) buffer BigSegments { uint bigSegments[]; };
-// The big-segment pass's indirect dispatch (groups x, y, z), then how many segments were listed.
-layout(binding = 3, std430) buffer Counters { uint bigGroups; uint groupsY; uint groupsZ; uint bigCount; };
+// The big-segment pass's indirect dispatch, then how many segments were listed.
+layout(binding = 3, std430) buffer Counters { NoodlesBigSegmentCounters counters; };
 
 struct Segment {
   vec3 a, b;
@@ -39,13 +40,13 @@ Segment loadSegment(uint index) {
   // A neighbour's hit can be cut away only if it reaches in front of the near plane, which it can
   // only near this segment: within the radius twice and the neighbour's length, taken as at most
   // four times this one's (consecutive steps of a smooth flow differ far less).
-  float reach = pc.nearPlane + 2.0 * pc.radius + 4.0 * length(s.b - s.a);
+  float reach = pc.nearPlane + 2.0 * pc.tubeRadius + 4.0 * length(s.b - s.a);
   bool near = min(dot(s.a - pc.eye, pc.forward), dot(s.b - pc.eye, pc.forward)) < reach;
   s.checkBefore = near && segment > 0u;
-  s.checkAfter = near && segment + 1u < pc.segments;
+  s.checkAfter = near && segment + 1u < pc.segmentsPerStrand;
   s.before = s.checkBefore ? nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment - 1u)]) : s.a;
   s.after = s.checkAfter ? nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment + 2u)]) : s.b;
-  s.nearestBits = orderedBits(nearestPossibleHit(pc.eye, s.a, s.b, pc.radius));
+  s.nearestBits = orderedBits(nearestPossibleHit(pc.eye, s.a, s.b, pc.tubeRadius));
   return s;
 }
 
@@ -53,11 +54,11 @@ Segment loadSegment(uint index) {
 // hit, if nearer than what the key holds, goes in with an atomicMin.
 void castSample(uvec2 cell, uint sample_, uint held, Segment s) {
   vec3 direction = normalize(rayThrough(screenView(), cellSamplePosition(cell, pc.samplesPerAxis)));
-  float t = capsuleHit(pc.eye, direction, s.a, s.b, pc.radius);
+  float t = capsuleHit(pc.eye, direction, s.a, s.b, pc.tubeRadius);
   if (t == NO_HIT || t * dot(direction, pc.forward) < pc.nearPlane) return;
   vec3 hit = pc.eye + t * direction;
-  if (s.checkBefore && insideCapsule(hit, s.before, s.a, pc.radius)) return;
-  if (s.checkAfter && insideCapsule(hit, s.b, s.after, pc.radius)) return;
+  if (s.checkBefore && insideCapsule(hit, s.before, s.a, pc.tubeRadius)) return;
+  if (s.checkAfter && insideCapsule(hit, s.b, s.after, pc.tubeRadius)) return;
   uint depth = orderedBits(t);
   if (depth > held) return;
   atomicMin(keys[sample_], (uint64_t(depth) << 32) | uint64_t(s.id));

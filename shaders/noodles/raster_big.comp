@@ -10,19 +10,19 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 void main() {
-  uint listed = min(bigCount, pc.bigCapacity);
+  uint listed = min(counters.listed, pc.bigListCapacity);
   ScreenView view = screenView();
   // With four samples a pixel an invocation takes a pixel, so a tile is 16 x 16 cells, started on a
   // pixel's first cell.
   uint side = TILE_SIDE * pc.samplesPerAxis;
   for (uint entry = gl_WorkGroupID.x; entry < listed; entry += gl_NumWorkGroups.x) {
     Segment s = loadSegment(bigSegments[entry]);
-    ivec4 cells = capsuleCells(view, s.a, s.b, pc.radius, pc.samplesPerAxis);
+    ivec4 cells = capsuleCells(view, s.a, s.b, pc.tubeRadius, pc.samplesPerAxis);
     uvec2 start = uvec2(cells.xy) & ~uvec2(pc.samplesPerAxis - 1u);
     uvec2 tiles = (uvec2(cells.zw) - start) / side + 1u;
     for (uint t = 0u; t < tiles.x * tiles.y; ++t) {  // the same tiles, in step, for the whole group
       uvec2 first = start + uvec2(t % tiles.x, t / tiles.x) * side;
-      if (!tileMayHit(view, s.a, s.b, pc.radius, first, side, pc.samplesPerAxis)) continue;
+      if (!tileMayHit(view, s.a, s.b, pc.tubeRadius, first, side, pc.samplesPerAxis)) continue;
       uvec2 cell = first + gl_LocalInvocationID.xy * pc.samplesPerAxis;
       if (any(greaterThan(ivec2(cell), cells.zw))) continue;
       if (pc.samplesPerAxis == 2u) rasterPixel(cell / 2u, cells, s);

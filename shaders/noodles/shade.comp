@@ -30,7 +30,7 @@ vec3 shadeSample(uint index, vec2 position) {
   uvec4 endNode = nodes[nodeSlot(pc.chunkStrands, local, segment + 1u)];
   vec3 a = nodePosition(startNode), b = nodePosition(endNode);
   vec3 direction = normalize(rayThrough(screenView(), position));
-  float t = capsuleHit(pc.eye, direction, a, b, pc.radius);
+  float t = capsuleHit(pc.eye, direction, a, b, pc.tubeRadius);
   // The raster pass found a hit with the same code; should rounding differ here, take the point of
   // the ray nearest the segment's middle, which lies on the silhouette's edge.
   if (t == NO_HIT) t = dot(0.5 * (a + b) - pc.eye, direction);
@@ -42,7 +42,7 @@ vec3 shadeSample(uint index, vec2 position) {
   // straight capsules then shades smoothly instead of showing each segment as a facet.
   vec3 radial = hit - mix(a, b, along);
   bool strandEnd = (segment == 0u && dot(hit - a, b - a) <= 0.0) ||
-                   (segment + 1u == pc.segments && dot(hit - b, b - a) >= 0.0);
+                   (segment + 1u == pc.segmentsPerStrand && dot(hit - b, b - a) >= 0.0);
   if (!strandEnd) {
     vec3 tangent = normalize(mix(startFrame.tangent, endFrame.tangent, along));
     vec3 across = radial - dot(radial, tangent) * tangent;
@@ -60,7 +60,7 @@ vec3 shadeSample(uint index, vec2 position) {
     float angle = atan(dot(normal, frameBinormal), dot(normal, frameNormal));
     if (mod(angle / SIDE_ANGLE, 8.0) < 1.0) paint = 0.25;
   }
-  return strandColour(pc.firstStrand + local, pc.strands, pc.colouring) * paint * (lambert + AMBIENT);
+  return strandColour(pc.firstStrand + local, pc.totalStrands, pc.colouring) * paint * (lambert + AMBIENT);
 }
 
 vec2 samplePosition(uvec2 pixel, uint q) {

@@ -267,6 +267,20 @@ namespace {
 size_t samplerIndex(Device::Filter filter, Device::Address address, bool mipmaps) {
   return size_t(filter) * 4 + size_t(address) * 2 + (mipmaps ? 1 : 0);
 }
+
+Device::MemoryLimits memoryLimitsOf(VkPhysicalDevice physical, const VkPhysicalDeviceMemoryProperties& memory) {
+  VkPhysicalDeviceMaintenance4Properties maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_PROPERTIES};
+  VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES,
+                                                      &maintenance4};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &maintenance3};
+  vkGetPhysicalDeviceProperties2(physical, &properties);
+  Device::MemoryLimits limits;
+  limits.maxBufferSize = std::min(maintenance3.maxMemoryAllocationSize, maintenance4.maxBufferSize);
+  for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      limits.largestDeviceLocalHeap = std::max(limits.largestDeviceLocalHeap, memory.memoryHeaps[i].size);
+  return limits;
+}
 }  // namespace
 
 Device::Device(const Instance& instance, const DeviceOptions& options) : instance_(instance) {
@@ -280,6 +294,7 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   physical_ = adapter.handle;
   properties_ = adapter.properties;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  memoryLimits_ = memoryLimitsOf(physical_, memory_);
   queueFamily_ = static_cast<uint32_t>(universalFamily(physical_, options.surface));
 
   // Required: dynamic rendering and synchronization2. Everything else is enabled when present.
@@ -311,6 +326,7 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   features.features.shaderStorageImageExtendedFormats = has.features.shaderStorageImageExtendedFormats;  // r16f
   storageExtendedFormats_ = has.features.shaderStorageImageExtendedFormats;
   storageWriteWithoutFormat_ = has.features.shaderStorageImageWriteWithoutFormat;
+  bufferInt64Atomics_ = has.features.shaderInt64 && has12.shaderBufferInt64Atomics;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -76,6 +76,16 @@ class Device {
   bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }
   // Storage images in the extended formats (r16f: half the bytes of a float lattice).
   bool storageExtendedFormats() const { return storageExtendedFormats_; }
+  // 64-bit integers in shaders and atomics on them in storage buffers (noodles' visibility buffer).
+  bool bufferInt64Atomics() const { return bufferInt64Atomics_; }
+  // What bounds one large allocation (noodles' strands): the largest buffer the device makes (the
+  // smaller of maintenance4's maxBufferSize and maintenance3's maxMemoryAllocationSize) and the
+  // size of its largest device-local heap.
+  struct MemoryLimits {
+    VkDeviceSize maxBufferSize = 0;
+    VkDeviceSize largestDeviceLocalHeap = 0;
+  };
+  const MemoryLimits& memoryLimits() const { return memoryLimits_; }
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;
@@ -130,6 +140,8 @@ class Device {
   uint32_t queueFamily_ = 0;
   bool storageWriteWithoutFormat_ = false;
   bool storageExtendedFormats_ = false;
+  bool bufferInt64Atomics_ = false;
+  MemoryLimits memoryLimits_;
   Unique<VkCommandPool> oneShotPool_;
   Unique<VkSemaphore> timeline_;
   mutable uint64_t submitted_ = 0;

@@ -16,18 +16,23 @@ namespace {
 
 class NoodlesGpu : public test::GpuTest {
  protected:
+  gpu::ProgramLibrary programs_{device()};
+  const IntegratePass pass_{programs_};
+
+  // Only the integrate pass runs here: the raster pass's workgroups, which count nothing here, are
+  // taken as the integrate pass's.
+  StrandWorkgroups workgroups() const { return {pass_.workgroupSize(), pass_.workgroupSize()}; }
+
   // Every strand's nodes, strand-major (strand s at s * (segments + 1)), as the GPU wrote them.
   std::vector<PackedNode> integrateOnDevice(const StrandSettings& settings, const DeviceBudget& budget) {
-    gpu::ProgramLibrary programs(device());
-    const IntegratePass pass(programs);
-    const StrandLayout layout = planStrands(settings.grid, settings.segments, budget);
+    const StrandLayout layout = planStrands(settings.grid, settings.segments, budget, workgroups());
     gpu::Buffer nodes(device(), layout.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                             gpu::MemoryUse::Device, "test nodes");
     gpu::Buffer readback(device(), layout.bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
                                "test node readback");
     device().submitNow([&](VkCommandBuffer cmd) {
       nodes.use(cmd, gpu::use::ComputeWriteBuffer);
-      pass.record(cmd, layout, nodes.handle(), settings);
+      pass_.record(cmd, layout, nodes.handle(), settings);
       nodes.use(cmd, gpu::use::TransferSrcBuffer);
       readback.use(cmd, gpu::use::TransferDstBuffer);
       const VkBufferCopy copy{0, 0, layout.bytes};
@@ -119,7 +124,7 @@ TEST_F(NoodlesGpu, ChunkedBindingsMatchTheCpu) {
   DeviceBudget budget = deviceBudget(device());
   const StrandSettings s = smallGrid();
   budget.maxStorageBufferRange = 5ull * (s.segments + 1) * kNodeBytes;
-  const StrandLayout layout = planStrands(s.grid, s.segments, budget);
+  const StrandLayout layout = planStrands(s.grid, s.segments, budget, workgroups());
   ASSERT_GT(layout.chunks.size(), 2u);
   expectMatchesReference(s, budget);
 }

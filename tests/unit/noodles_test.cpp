@@ -347,6 +347,9 @@ TEST(NoodlesPacking, SegmentCostsAtMostThirtyTwoBytes) {
 
 // --------------------------------------------------------------------------------------- the plan
 
+// integrate.comp's and raster.comp's local sizes today; the plan takes whatever the shaders declare.
+constexpr StrandWorkgroups kWorkgroups{.integrate = 64, .raster = 64};
+
 DeviceBudget lavapipeLikeBudget() {
   DeviceBudget b;
   b.deviceName = "test device";
@@ -360,7 +363,7 @@ DeviceBudget lavapipeLikeBudget() {
 
 TEST(NoodlesLayout, TenMillionSegmentsSplitIntoAlignedChunks) {
   const DeviceBudget budget = lavapipeLikeBudget();
-  const StrandLayout layout = planStrands({50, 50, 50}, 80, budget);
+  const StrandLayout layout = planStrands({50, 50, 50}, 80, budget, kWorkgroups);
   EXPECT_EQ(layout.segmentCount, 10'000'000u);
   EXPECT_EQ(layout.bytes, 125000ull * 81 * 16);
   ASSERT_GT(layout.chunks.size(), 1u);
@@ -370,8 +373,8 @@ TEST(NoodlesLayout, TenMillionSegmentsSplitIntoAlignedChunks) {
     EXPECT_EQ(chunk.offset, strands * layout.strandBytes);
     EXPECT_EQ(chunk.offset % budget.storageOffsetAlignment, 0u);
     EXPECT_LE(chunk.bytes, budget.maxStorageBufferRange);
-    EXPECT_GE(uint64_t(chunk.integrateGroups.x) * chunk.integrateGroups.y * kIntegrateGroupSize, chunk.strandCount);
-    EXPECT_GE(uint64_t(chunk.rasterGroups.x) * chunk.rasterGroups.y * kRasterGroupSize,
+    EXPECT_GE(uint64_t(chunk.integrateGroups.x) * chunk.integrateGroups.y * kWorkgroups.integrate, chunk.strandCount);
+    EXPECT_GE(uint64_t(chunk.rasterGroups.x) * chunk.rasterGroups.y * kWorkgroups.raster,
               uint64_t(chunk.strandCount) * layout.segments);
     EXPECT_LE(chunk.rasterGroups.x, budget.maxGroupCountX);
     strands += chunk.strandCount;
@@ -382,14 +385,14 @@ TEST(NoodlesLayout, TenMillionSegmentsSplitIntoAlignedChunks) {
 TEST(NoodlesLayout, OneChunkWhenTheRangeAllows) {
   DeviceBudget budget = lavapipeLikeBudget();
   budget.maxStorageBufferRange = 0xffffffffull;
-  EXPECT_EQ(planStrands({16, 16, 16}, 64, budget).chunks.size(), 1u);
+  EXPECT_EQ(planStrands({16, 16, 16}, 64, budget, kWorkgroups).chunks.size(), 1u);
 }
 
 TEST(NoodlesLayout, RefusesWhatTheDeviceCannotHoldWithAReason) {
   const DeviceBudget budget = lavapipeLikeBudget();
   const auto message = [&](glm::uvec3 grid, uint32_t segments) {
     try {
-      planStrands(grid, segments, budget);
+      planStrands(grid, segments, budget, kWorkgroups);
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -400,7 +403,7 @@ TEST(NoodlesLayout, RefusesWhatTheDeviceCannotHoldWithAReason) {
   EXPECT_NE(message({200, 200, 44}, 64).find("device memory"), std::string::npos);       // > 3/4 of the heap
   DeviceBudget narrow = budget;
   narrow.maxStorageBufferRange = 1024;
-  EXPECT_THROW(planStrands({2, 2, 2}, 100, narrow), Error);  // one strand exceeds a binding
+  EXPECT_THROW(planStrands({2, 2, 2}, 100, narrow, kWorkgroups), Error);  // one strand exceeds a binding
   EXPECT_EQ(message({16, 16, 16}, 64), "accepted");
 }
 
@@ -445,7 +448,7 @@ TEST(NoodlesSettings, TheMemoryCheckJudgesFinalValuesWhateverTheOrder) {
   const params::Bound bound{&schema(), &s};
   const params::Check fits = [&] {
     try {
-      planStrands(s.grid, uint32_t(s.segments), budget);
+      planStrands(s.grid, uint32_t(s.segments), budget, kWorkgroups);
       return std::string();
     } catch (const Error& e) {
       return std::string(e.what());

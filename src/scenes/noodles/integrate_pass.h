@@ -11,6 +11,7 @@ class IntegratePass {
  public:
   explicit IntegratePass(gpu::ProgramLibrary& programs);
   void record(VkCommandBuffer cmd, const StrandLayout& layout, VkBuffer nodes, const StrandSettings& settings) const;
+  uint32_t workgroupSize() const { return program_.localSize()[0]; }  // strands a workgroup integrates
 
  private:
   gpu::ComputeProgram program_;

@@ -4,8 +4,8 @@
 #include "scenes/noodles/noodles_scene.h"
 #include "scenes/adaptive_quality.h"
 
-#include "gpu/check.h"
-#include "gpu/resources.h"
+#include "core/error.h"
+#include "gpu/frame_resources.h"
 #include "scenes/noodles/camera_rig.h"
 #include "scenes/noodles/integrate_pass.h"
 #include "scenes/noodles/raster_pass.h"
@@ -27,7 +27,7 @@ namespace {
 class NoodlesScene final : public Scene {
  public:
   explicit NoodlesScene(const SceneContext& context)
-      : device_(context.device),
+      : resources_(context.resources),
         events_(context.events),
         quality_(context),
         budget_(deviceBudget(context.device)),
@@ -61,20 +61,21 @@ class NoodlesScene final : public Scene {
   void record(const FrameContext& frame) override {
     ensureStrands();
     const StrandSettings strands = strandSettings();
+    gpu::Buffer& nodes = frame.resources.current(nodes_);
     if (integrated_ != strands) {  // nothing moves under reduced motion: integrate once
       const auto pass = frame.pass("noodles integrate");
-      frame.transition(nodes_, gpu::use::ComputeWriteBuffer);
-      integrate_.record(frame.cmd, layout_, nodes_.handle(), strands);
+      frame.transition(nodes, gpu::use::ComputeWriteBuffer);
+      integrate_.record(frame.cmd, layout_, nodes.handle(), strands);
       integrated_ = strands;
     }
-    frame.transition(nodes_, gpu::use::ComputeReadBuffer);
+    frame.transition(nodes, gpu::use::ComputeReadBuffer);
     const TubeView view = tubeView(frame.target.extent2d());
     {
       const auto pass = frame.pass("noodles raster");
-      raster_.record(frame, layout_, nodes_.handle(), view);
+      raster_.record(frame, layout_, nodes.handle(), view);
     }
     const auto pass = frame.pass("noodles shade");
-    shade_.record(frame, layout_, nodes_.handle(), raster_.visibility(), raster_.samplesPerAxis(), view);
+    shade_.record(frame, layout_, nodes.handle(), raster_.visibility(frame), raster_.samplesPerAxis(), view);
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
@@ -87,7 +88,7 @@ class NoodlesScene final : public Scene {
   // Refuses strands the device cannot hold, judged on the final grid and segment count together.
   std::string checkParameters() const override {
     try {
-      planStrands(settings_.grid, uint32_t(settings_.segments), budget_);
+      planStrands(settings_.grid, uint32_t(settings_.segments), budget_, workgroups());
       return {};
     } catch (const Error& e) {
       return e.what();
@@ -97,19 +98,24 @@ class NoodlesScene final : public Scene {
   void drawPanel() override;
 
  private:
-  // (Re)allocates the node buffer when grid or segments changed; the old one is retired, since
-  // frames in flight may still read it. Nothing is allocated in frames where they did not change.
+  // (Re)declares the node buffer when grid or segments changed (the host retires the old one, which
+  // frames in flight may still read). Nothing is allocated in frames where they did not change.
   void ensureStrands() {
     const glm::uvec3 grid = settings_.grid;
     const uint32_t segments = uint32_t(settings_.segments);
-    if (nodes_ && layout_.grid == grid && layout_.segments == segments) return;
-    StrandLayout layout = planStrands(grid, segments, budget_);
-    if (nodes_) device_.retire(std::move(nodes_));
-    nodes_ = gpu::Buffer(device_, layout.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                         gpu::MemoryUse::Device, "noodles nodes");
+    const bool declared = layout_.segments > 0;
+    if (declared && layout_.grid == grid && layout_.segments == segments) return;
+    StrandLayout layout = planStrands(grid, segments, budget_, workgroups());
+    const gpu::BufferDecl nodes{.name = "noodles nodes",
+                                .size = gpu::BufferSize::absolute(layout.bytes),
+                                .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT};
+    if (declared) resources_.redeclare(nodes_, nodes);
+    else nodes_ = resources_.declare(nodes);
     layout_ = std::move(layout);
     integrated_.reset();
   }
+
+  StrandWorkgroups workgroups() const { return {integrate_.workgroupSize(), raster_.workgroupSize()}; }
 
   StrandSettings strandSettings() const {
     StrandSettings s;
@@ -146,13 +152,13 @@ class NoodlesScene final : public Scene {
             settings_.colour, settings_.stripe, settings_.msaa};
   }
 
-  const gpu::Device& device_;
+  gpu::FrameResources& resources_;
   SceneEvents events_;
   AdaptiveQuality quality_;
   const DeviceBudget budget_;
   NoodleSettings settings_;
-  StrandLayout layout_;
-  gpu::Buffer nodes_;
+  StrandLayout layout_;  // segments 0 until the node buffer is declared
+  gpu::BufferHandle nodes_;
   std::optional<StrandSettings> integrated_;  // what the node buffer holds now
   IntegratePass integrate_;
   RasterPass raster_;

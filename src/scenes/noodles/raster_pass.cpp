@@ -2,31 +2,29 @@
 
 #include "core/error.h"
 #include "gpu/buffer_commands.h"
+#include "shaders/noodles/raster_blocks.h"
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
 #include <span>
 
 namespace vitrine::noodles {
 namespace {
 
-constexpr VkDeviceSize kKeyBytes = 8;        // one uint64_t key a sample
-constexpr VkDeviceSize kBigEntryBytes = 4;  // a chunk-local segment index
+constexpr VkDeviceSize kKeyBytes = 8;  // one uint64_t key a sample
+constexpr uint32_t kMultisampledAxis = 2;  // four samples a pixel, two an axis
 
-const gpu::ProgramLayout kRasterLayout{{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                        VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                       sizeof(RasterPush)};
+gpu::BufferDecl visibilityDecl(uint32_t samplesPerAxis) {
+  return {.name = "noodles visibility",
+          .size = gpu::BufferSize::relative(kKeyBytes * samplesPerAxis * samplesPerAxis),
+          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT};  // cleared each frame
+}
 
 // The keys are 64-bit atomicMin targets: shaderInt64 and shaderBufferInt64Atomics (Vulkan 1.2 core,
 // optional; lavapipe and NVIDIA have both), enabled by the device when present. Checked before the
 // raster programs are built, which without them would be invalid pipelines, not a clear message.
 gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
-  VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
-  vkGetPhysicalDeviceFeatures2(context.device.physical(), &features);
-  if (!features.features.shaderInt64 || !f12.shaderBufferInt64Atomics)
+  if (!context.device.bufferInt64Atomics())
     throw Error(fmt::format("noodles: {} has no 64-bit storage-buffer atomics (shaderInt64, "
                             "shaderBufferInt64Atomics), which its tube rasteriser needs",
                             context.device.properties().deviceName));
@@ -36,64 +34,66 @@ gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
 }  // namespace
 
 RasterPass::RasterPass(const SceneContext& context)
-    : device_(context.device),
-      segments_(programsWithInt64Atomics(context), "noodles/raster.comp", kRasterLayout),
-      bigSegments_(context.programs, "noodles/raster_big.comp", kRasterLayout),
-      bigList_(context.device, kBigCapacity * kBigEntryBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                gpu::MemoryUse::Device, "noodles big segments"),
-      counters_(
-          context.device, 4 * sizeof(uint32_t),
-          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-          gpu::MemoryUse::Device, "noodles big-segment counters") {}
+    : segments_(programsWithInt64Atomics(context), "noodles/raster.comp"),
+      bigSegments_(context.programs, "noodles/raster_big.comp"),
+      visibility_(context.resources.declare(visibilityDecl(kMultisampledAxis))),
+      bigList_(context.resources.declare({.name = "noodles big segments",
+                                          .size = gpu::BufferSize::absolute(kBigListCapacity * sizeof(uint32_t)),
+                                          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT})),
+      counters_(context.resources.declare(
+          {.name = "noodles big-segment counters",
+           .size = gpu::BufferSize::absolute(sizeof(shader::NoodlesBigSegmentCounters)),
+           .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT})),
+      samplesPerAxis_(kMultisampledAxis) {}
 
-void RasterPass::ensureVisibility(VkExtent2D extent, bool multisample) {
+void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
+  const VkExtent2D extent = frame.target.extent2d();
   const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
   // Four samples need four keys a pixel; where that is more than one binding may cover (4K on
   // lavapipe's 128 MiB), the picture falls back to one sample rather than failing.
-  const bool fits = pixels * 4 * kKeyBytes <= device_.limits().maxStorageBufferRange;
-  const uint32_t samplesPerAxis = multisample && fits ? 2 : 1;
-  if (visibility_ && extent.width == extent_.width && extent.height == extent_.height &&
-      samplesPerAxis == samplesPerAxis_)
-    return;
-  if (visibility_) device_.retire(std::move(visibility_));  // frames in flight may still read it
-  visibility_ = gpu::Buffer(device_, pixels * samplesPerAxis * samplesPerAxis * kKeyBytes,
-                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            gpu::MemoryUse::Device, "noodles visibility");
-  extent_ = extent;
+  const bool fits = pixels * kMultisampledAxis * kMultisampledAxis * kKeyBytes <=
+                    frame.device.limits().maxStorageBufferRange;
+  const uint32_t samplesPerAxis = multisample && fits ? kMultisampledAxis : 1;
+  if (samplesPerAxis == samplesPerAxis_) return;
+  frame.resources.redeclare(visibility_, visibilityDecl(samplesPerAxis));  // the old one is retired
   samplesPerAxis_ = samplesPerAxis;
 }
 
 void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
-  ensureVisibility(frame.target.extent2d(), view.multisample);
-  gpu::fillBuffer(frame.cmd, visibility_, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
+  followSamples(frame, view.multisample);
+  gpu::Buffer& visibility = frame.resources.current(visibility_);
+  gpu::Buffer& bigList = frame.resources.current(bigList_);
+  gpu::Buffer& counters = frame.resources.current(counters_);
+  gpu::fillBuffer(frame.cmd, visibility, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
-  RasterPush push = rasterPush(view, layout, samplesPerAxis_);
-  push.bigCapacity = kBigCapacity;
+  shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis_);
+  push.bigListCapacity = kBigListCapacity;
   for (const StrandChunk& chunk : layout.chunks) {
     // Nothing listed yet; the big-segment pass's y and z group counts are 1.
-    constexpr std::array<uint32_t, 4> kReset{0, 1, 1, 0};
-    frame.upload(counters_, 0, std::as_bytes(std::span(kReset)), gpu::use::ComputeReadWriteBuffer);
-    bigList_.use(frame.cmd, gpu::use::ComputeWriteBuffer);
-    visibility_.use(frame.cmd, gpu::use::ComputeReadWriteBuffer);
+    static constexpr shader::NoodlesBigSegmentCounters kReset{.groupsX = 0, .groupsY = 1, .groupsZ = 1, .listed = 0};
+    frame.upload(counters, 0, std::as_bytes(std::span(&kReset, 1)), gpu::use::ComputeReadWriteBuffer);
+    frame.transition(bigList, gpu::use::ComputeWriteBuffer);
+    frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
     const gpu::Bindings bindings = gpu::Bindings()
-                                       .storageBuffer(nodes, chunk.offset, chunk.bytes)
-                                       .storageBuffer(visibility_.handle())
-                                       .storageBuffer(bigList_.handle())
-                                       .storageBuffer(counters_.handle());
+                                       .storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes)
+                                       .storageBuffer("Visibility", visibility.handle())
+                                       .storageBuffer("BigSegments", bigList.handle())
+                                       .storageBuffer("Counters", counters.handle());
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    push.invocationsPerRow = chunk.rasterGroups.x * kRasterGroupSize;
+    push.invocationsPerRow = chunk.rasterGroups.x * workgroupSize();
     segments_.bind(frame.cmd);
     segments_.push(frame.cmd, bindings);
     segments_.constants(frame.cmd, push);
-    vkCmdDispatch(frame.cmd, chunk.rasterGroups.x, chunk.rasterGroups.y, 1);  // one invocation a segment
+    segments_.dispatchGroups(frame.cmd, {chunk.rasterGroups.x, chunk.rasterGroups.y, 1});  // one invocation a segment
 
-    bigList_.use(frame.cmd, gpu::use::ComputeReadBuffer);
-    visibility_.use(frame.cmd, gpu::use::ComputeReadWriteBuffer);
+    frame.transition(bigList, gpu::use::ComputeReadBuffer);
+    frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
     bigSegments_.bind(frame.cmd);
     bigSegments_.push(frame.cmd, bindings);
     bigSegments_.constants(frame.cmd, push);
-    gpu::dispatchIndirect(frame.cmd, counters_);
+    gpu::dispatchIndirect(frame.cmd, counters);
   }
 }
 

@@ -4,10 +4,10 @@
 // per segment culls and bounds its capsule and casts the rays of a small box itself, listing a big
 // segment for a second, indirect dispatch in which a workgroup takes each, tile by tile, skipping the
 // tiles its tube cannot reach.
-// The pass owns the visibility buffer (sized to the target and the sample count), the big-segment
-// list and its counters; shade_pass.h reads the visibility buffer after it.
+// The pass declares the visibility buffer (per pixel of the target, a key for each sample), the
+// big-segment list and its counters; shade_pass.h reads the visibility buffer after it.
+#include "gpu/frame_resources.h"
 #include "gpu/program.h"
-#include "gpu/resources.h"
 #include "scenes/noodles/strand_layout.h"
 #include "scenes/noodles/tube_view.h"
 #include "scenes/scene.h"
@@ -15,28 +15,28 @@
 namespace vitrine::noodles {
 
 // Listed big segments (16 MiB): past it raster.comp casts a big box itself.
-inline constexpr uint32_t kBigCapacity = 1u << 22;
+inline constexpr uint32_t kBigListCapacity = 1u << 22;
 
 class RasterPass {
  public:
   explicit RasterPass(const SceneContext& context);  // throws vitrine::Error without 64-bit buffer atomics
   void record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view);
 
-  gpu::Buffer& visibility() { return visibility_; }
+  gpu::Buffer& visibility(const FrameContext& frame) const { return frame.resources.current(visibility_); }
   uint32_t samplesPerAxis() const { return samplesPerAxis_; }
+  uint32_t workgroupSize() const { return segments_.localSize()[0]; }  // segments a workgroup takes
 
  private:
-  // (Re)allocates the visibility buffer for this size and sample count; the old one is retired.
-  void ensureVisibility(VkExtent2D extent, bool multisample);
+  // Redeclares the visibility buffer when the sample count changes (msaa, or a target too large for
+  // four keys a pixel in one binding); the host resizes it with the target.
+  void followSamples(const FrameContext& frame, bool multisample);
 
-  const gpu::Device& device_;
   gpu::ComputeProgram segments_;
   gpu::ComputeProgram bigSegments_;
-  gpu::Buffer visibility_;
-  gpu::Buffer bigList_;
-  gpu::Buffer counters_;  // VkDispatchIndirectCommand for the big-segment pass, then the listed count
-  VkExtent2D extent_{0, 0};
-  uint32_t samplesPerAxis_ = 0;
+  gpu::BufferHandle visibility_;
+  gpu::BufferHandle bigList_;
+  gpu::BufferHandle counters_;  // shader::NoodlesBigSegmentCounters
+  uint32_t samplesPerAxis_;     // what the visibility buffer is declared for
 };
 
 }  // namespace vitrine::noodles

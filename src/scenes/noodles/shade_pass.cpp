@@ -1,19 +1,15 @@
 #include "scenes/noodles/shade_pass.h"
 
-#include "gpu/buffer_commands.h"
+#include "shaders/noodles/raster_blocks.h"
 
 namespace vitrine::noodles {
 
-ShadePass::ShadePass(gpu::ProgramLibrary& programs)
-    : program_(
-          programs, "noodles/shade.comp",
-          {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-           sizeof(RasterPush)}) {}
+ShadePass::ShadePass(gpu::ProgramLibrary& programs) : program_(programs, "noodles/shade.comp") {}
 
 void ShadePass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, gpu::Buffer& visibility,
                        uint32_t samplesPerAxis, const TubeView& view) const {
-  visibility.use(frame.cmd, gpu::use::ComputeReadBuffer);
-  RasterPush push = rasterPush(view, layout, samplesPerAxis);
+  frame.transition(visibility, gpu::use::ComputeReadBuffer);
+  shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis);
   program_.bind(frame.cmd);
   for (size_t i = 0; i < layout.chunks.size(); ++i) {
     const StrandChunk& chunk = layout.chunks[i];
@@ -23,11 +19,11 @@ void ShadePass::record(const FrameContext& frame, const StrandLayout& layout, Vk
     push.chunkStrands = chunk.strandCount;
     push.accumulate = i == 0 ? 0u : 1u;
     program_.push(frame.cmd, gpu::Bindings()
-                                 .storageBuffer(nodes, chunk.offset, chunk.bytes)
-                                 .storageBuffer(visibility.handle())
-                                 .storageImage(frame.target.view()));
+                                 .storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes)
+                                 .storageBuffer("Visibility", visibility.handle())
+                                 .storageImage("target", frame.target.view()));
     program_.constants(frame.cmd, push);
-    program_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
+    program_.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 }
 

@@ -11,23 +11,13 @@
 namespace vitrine::noodles {
 
 DeviceBudget deviceBudget(const gpu::Device& device) {
-  VkPhysicalDeviceMaintenance4Properties maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_PROPERTIES};
-  VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES,
-                                                      &maintenance4};
-  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &maintenance3};
-  vkGetPhysicalDeviceProperties2(device.physical(), &properties);
-  VkPhysicalDeviceMemoryProperties memory;
-  vkGetPhysicalDeviceMemoryProperties(device.physical(), &memory);
-
+  const VkPhysicalDeviceLimits& limits = device.limits();
   DeviceBudget budget;
-  const VkPhysicalDeviceLimits& limits = properties.properties.limits;
-  budget.deviceName = properties.properties.deviceName;
+  budget.deviceName = device.properties().deviceName;
   budget.maxStorageBufferRange = limits.maxStorageBufferRange;
   budget.storageOffsetAlignment = std::max<VkDeviceSize>(limits.minStorageBufferOffsetAlignment, 1);
-  budget.maxBufferSize = std::min<uint64_t>(maintenance3.maxMemoryAllocationSize, maintenance4.maxBufferSize);
-  for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-    if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-      budget.deviceLocalHeap = std::max<uint64_t>(budget.deviceLocalHeap, memory.memoryHeaps[i].size);
+  budget.maxBufferSize = device.memoryLimits().maxBufferSize;
+  budget.deviceLocalHeap = device.memoryLimits().largestDeviceLocalHeap;
   budget.maxGroupCountX = limits.maxComputeWorkGroupCount[0];
   budget.maxGroupCountY = limits.maxComputeWorkGroupCount[1];
   return budget;
@@ -39,7 +29,8 @@ std::string describeBytes(uint64_t bytes) {
   return fmt::format("{:.1f} KiB", double(bytes) / 1024.0);
 }
 
-StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget& budget) {
+StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget& budget,
+                         const StrandWorkgroups& workgroups) {
   const uint64_t strands = uint64_t(grid.x) * grid.y * grid.z;
   const std::string what =
       fmt::format("noodles: {}x{}x{} strands of {} segments", grid.x, grid.y, grid.z, segments);
@@ -96,8 +87,8 @@ StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget&
       rows.y = uint32_t(y);
       return rows;
     };
-    chunk.integrateGroups = rowsOf(chunk.strandCount, kIntegrateGroupSize);
-    chunk.rasterGroups = rowsOf(uint64_t(chunk.strandCount) * segments, kRasterGroupSize);
+    chunk.integrateGroups = rowsOf(chunk.strandCount, workgroups.integrate);
+    chunk.rasterGroups = rowsOf(uint64_t(chunk.strandCount) * segments, workgroups.raster);
     layout.chunks.push_back(chunk);
   }
   return layout;

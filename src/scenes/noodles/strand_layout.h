@@ -16,9 +16,6 @@ class Device;
 
 namespace vitrine::noodles {
 
-inline constexpr uint32_t kIntegrateGroupSize = 64;  // invocations per workgroup, one strand each
-inline constexpr uint32_t kRasterGroupSize = 64;     // raster.comp's, one segment each
-
 // The device limits that bound the strand buffer.
 struct DeviceBudget {
   std::string deviceName;
@@ -30,6 +27,14 @@ struct DeviceBudget {
 };
 
 DeviceBudget deviceBudget(const gpu::Device& device);
+
+// The workgroup sizes the dispatches are counted in, as the shaders declare them (their programs'
+// localSize): integrate.comp runs one invocation a strand, raster.comp one a segment, both in
+// one-dimensional workgroups.
+struct StrandWorkgroups {
+  uint32_t integrate = 0;
+  uint32_t raster = 0;
+};
 
 // A 1D dispatch laid out in rows of workgroups, for counts past maxComputeWorkGroupCount[0]: x
 // workgroups a row, y rows; a shader finds its index as row * (x * group size) + column.
@@ -57,7 +62,8 @@ struct StrandLayout {
 };
 
 // Throws vitrine::Error naming the limit when the strands cannot fit.
-StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget& budget);
+StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget& budget,
+                         const StrandWorkgroups& workgroups);
 
 std::string describeBytes(uint64_t bytes);  // "162.5 MiB"
 

@@ -1,17 +1,18 @@
 #pragma once
 // What the tube rasteriser's passes are told about a frame: the camera as rays (capsule.h's
-// ScreenView), the tube radius and the look, and the push block of their shaders.
+// ScreenView), the tube radius and the look, and how that fills their shaders' push block
+// (shaders/noodles/raster_blocks.h).
 #include "scenes/noodles/camera.h"
 #include "scenes/noodles/capsule.h"
 #include "scenes/noodles/palette.h"
 #include "scenes/noodles/strand_layout.h"
+#include "shaders/noodles/raster_blocks.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
 
 namespace vitrine::noodles {
@@ -40,53 +41,23 @@ inline ScreenView screenViewOf(const CameraPose& pose, glm::vec2 pixels) {
   return view;
 }
 
-// Mirrors shaders/noodles/raster_push.glsl (std430: each vec3 shares its 16-byte slot with a float).
-struct RasterPush {
-  glm::vec3 eye;
-  float radius;
-  glm::vec3 right;
-  float tanHalfX;
-  glm::vec3 up;
-  float tanHalfY;
-  glm::vec3 forward;
-  float nearPlane;
-  glm::vec2 pixels;
-  uint32_t samplesPerAxis;
-  uint32_t segments;
-  uint32_t strands;
-  uint32_t colouring;
-  uint32_t stripe;
-  uint32_t bigCapacity;
-  uint32_t firstStrand;
-  uint32_t chunkStrands;
-  uint32_t invocationsPerRow;
-  uint32_t accumulate;
-};
-static_assert(offsetof(RasterPush, right) == 16 && offsetof(RasterPush, pixels) == 64 &&
-              offsetof(RasterPush, firstStrand) == 96 && sizeof(RasterPush) == 112);
-
-// The push block's per-frame part; the passes fill in the per-chunk fields.
-inline RasterPush rasterPush(const TubeView& view, const StrandLayout& layout, uint32_t samplesPerAxis) {
+// The push block's per-frame part; the passes fill in the rest (the big list, the chunk).
+inline shader::NoodlesRasterPush rasterPush(const TubeView& view, const StrandLayout& layout, uint32_t samplesPerAxis) {
   const ScreenView& s = view.screen;
-  return {s.eye,
-          view.radius,
-          s.right,
-          s.tanHalfX,
-          s.up,
-          s.tanHalfY,
-          s.forward,
-          s.nearPlane,
-          s.pixels,
-          samplesPerAxis,
-          layout.segments,
-          layout.strands,
-          uint32_t(view.colouring),
-          view.stripe ? 1u : 0u,
-          0,
-          0,
-          0,
-          0,
-          0};
+  return {.eye = s.eye,
+          .tubeRadius = view.radius,
+          .right = s.right,
+          .tanHalfX = s.tanHalfX,
+          .up = s.up,
+          .tanHalfY = s.tanHalfY,
+          .forward = s.forward,
+          .nearPlane = s.nearPlane,
+          .pixels = s.pixels,
+          .samplesPerAxis = samplesPerAxis,
+          .segmentsPerStrand = layout.segments,
+          .totalStrands = layout.strands,
+          .colouring = uint32_t(view.colouring),
+          .stripe = view.stripe ? 1u : 0u};
 }
 
 }  // namespace vitrine::noodles

@@ -1,0 +1,28 @@
+// The integrate pass's push block, one declaration for both sides: integrate_pass.cpp fills it,
+// integrate.comp reads it (shaders/common/interop.h says how one header serves GLSL and C++).
+// std430: each vec3 starts a 16-byte slot, which the 4-byte member after it shares.
+#ifndef NOODLES_INTEGRATE_PUSH_H
+#define NOODLES_INTEGRATE_PUSH_H
+#include "../common/interop.h"
+
+VITRINE_SHARED_BEGIN
+struct NoodlesIntegratePush {
+  vec3 offsetY;            // second noise potential's offset, drift included
+  float spacing;           // between neighbouring strand starts
+  vec3 offsetZ;            // third noise potential's offset, drift included
+  float step;              // the integration step
+  uvec3 grid;              // strands along x, y, z
+  uint segmentsPerStrand;
+  float noiseScale;
+  float lift;              // uniform upward flow added to the field
+  uint firstStrand;        // the chunk's first strand
+  uint chunkStrands;       // strands in this chunk
+  uint fieldKind;          // FIELD_CURL or FIELD_BITANGENT
+  uint integrator;         // INTEGRATOR_EULER or INTEGRATOR_RK4
+  uint tangentMode;        // TANGENT_NORMALIZED or TANGENT_RAW
+  uint frameMethod;        // FRAMES_UP or FRAMES_RMF
+  uint invocationsPerRow;  // workgroups in x times their size, when the dispatch needs a second dimension
+};
+VITRINE_SHARED_END
+
+#endif

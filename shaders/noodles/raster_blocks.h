@@ -1,0 +1,43 @@
+// The tube rasteriser's blocks, one declaration for both sides (shaders/common/interop.h says how):
+// the push block of raster.comp, raster_big.comp and shade.comp, which tube_view.h and the passes
+// fill, and the big-segment counters, which raster_pass.cpp resets before each chunk.
+#ifndef NOODLES_RASTER_BLOCKS_H
+#define NOODLES_RASTER_BLOCKS_H
+#include "../common/interop.h"
+
+VITRINE_SHARED_BEGIN
+// The camera as rays (capsule.glsl's ScreenView), the look and the chunk. std430: each vec3 starts a
+// 16-byte slot, which the float after it shares.
+struct NoodlesRasterPush {
+  vec3 eye;
+  float tubeRadius;
+  vec3 right;
+  float tanHalfX;
+  vec3 up;
+  float tanHalfY;
+  vec3 forward;
+  float nearPlane;
+  vec2 pixels;             // the target's size
+  uint samplesPerAxis;     // 2: four samples a pixel, one in each quarter; 1: one at the centre
+  uint segmentsPerStrand;
+  uint totalStrands;       // in the whole grid, for colour
+  uint colouring;          // COLOURING_GRADIENT or COLOURING_HSV
+  uint stripe;             // 1: paint the side between frame angles 0 and 45 degrees
+  uint bigListCapacity;    // entries the big-segment list holds
+  uint firstStrand;        // the chunk's first strand
+  uint chunkStrands;       // strands in this chunk
+  uint invocationsPerRow;  // raster.comp's 2D dispatch: invocations in one row of workgroups
+  uint accumulate;         // shade.comp: 0 for the first chunk (writes), 1 after (adds)
+};
+
+// The big-segment pass's indirect dispatch (a VkDispatchIndirectCommand: raster.comp adds a workgroup
+// per listed segment, up to MAX_BIG_GROUPS), then how many segments it listed.
+struct NoodlesBigSegmentCounters {
+  uint groupsX;
+  uint groupsY;
+  uint groupsZ;
+  uint listed;
+};
+VITRINE_SHARED_END
+
+#endif
