@@ -425,6 +425,12 @@ void Device::drainRetired() const {
   graveyard_.clear();
 }
 
+VkFormatFeatureFlags Device::optimalTilingFeatures(VkFormat format) const {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
+  return properties.optimalTilingFeatures;
+}
+
 std::string Device::describe() const {
   const auto& p = properties_;
   return fmt::format("{} (driver {:#x}, Vulkan {}.{}.{})", p.deviceName, p.driverVersion,

@@ -86,6 +86,9 @@ class Device {
     VkDeviceSize largestDeviceLocalHeap = 0;
   };
   const MemoryLimits& memoryLimits() const { return memoryLimits_; }
+  // What optimally tiled images of `format` support (storage, linear filtering, ...): a scene that
+  // needs more than the formats every device offers checks here.
+  VkFormatFeatureFlags optimalTilingFeatures(VkFormat format) const;
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
                                   VkMemoryPropertyFlags fallback = 0) const;
