@@ -5,13 +5,10 @@
 #extension GL_GOOGLE_include_directive : require
 #include "camera.glsl"
 #include "crystal.glsl"
+#include "chamber_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba16f) uniform writeonly image2D target;
-layout(push_constant) uniform Push {
-  float shadow;  // how dark the floor shadow is at its centre (deepens as the crystal fills)
-  float glow;    // warm light the crystal throws on the floor (0..1)
-  vec3 glowColour;
-} pc;
+layout(push_constant) uniform Push { BloomChamberPush pc; };
 
 const vec3 kBoneWhite = vec3(0.80, 0.76, 0.68);  // linear; about (231, 225, 213) in sRGB
 const float kFloor = -1.05;

@@ -6,11 +6,13 @@
 // octahedron, so a lower render scale is softer, never stair-stepped. Output is premultiplied: the
 // chamber shows through what the crystal lets pass.
 #extension GL_GOOGLE_include_directive : require
-#include "crystal_push.glsl"
+#include "crystal.glsl"
+#include "crystal_push.h"
 #include "../common/hash.glsl"
 layout(location = 0) in vec3 world;
 layout(location = 0) out vec4 colour;
 layout(binding = 0) uniform sampler3D vapour;
+layout(push_constant) uniform Push { BloomCrystalPush pc; };
 
 const vec3 kLight = normalize(vec3(-0.4, 0.8, 0.6));
 

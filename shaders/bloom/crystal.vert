@@ -2,8 +2,10 @@
 // The proxy of the crystal: its bounding box, back faces only, so every covered pixel runs the
 // raymarch once (also with the eye inside the box) and the chamber's other pixels cost nothing.
 #extension GL_GOOGLE_include_directive : require
-#include "crystal_push.glsl"
+#include "crystal.glsl"
+#include "crystal_push.h"
 layout(location = 0) out vec3 world;
+layout(push_constant) uniform Push { BloomCrystalPush pc; };
 
 void main() {
   // 36 vertices: 6 faces x 2 triangles, from bit patterns of the 8 corners.

@@ -3,17 +3,11 @@
 // Laplacian with zero-flux edges, Gaussian source, linear decay, the octahedral mask, clamp.
 #extension GL_GOOGLE_include_directive : require
 #include "crystal.glsl"
+#include "diffuse_push.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
 layout(binding = 0, r32f) uniform readonly image3D current;
 layout(binding = 1, r32f) uniform writeonly image3D next;
-layout(push_constant) uniform Push {
-  vec3 source;       // voxel coordinates
-  float diffusion;   // D, voxels^2 / s
-  float decay;       // per second
-  float dt;          // one sub-step
-  float sigma;       // voxels
-  float sourceRate;  // per second at the centre; 0: no source
-} pc;
+layout(push_constant) uniform Push { BloomDiffusePush pc; };
 
 float at(ivec3 p, int last) { return imageLoad(current, clamp(p, ivec3(0), ivec3(last))).r; }
 

@@ -4,14 +4,13 @@
 // shared memory, then one atomic per counter. Read back a frame or more later (gpu/readback_ring.h).
 #extension GL_GOOGLE_include_directive : require
 #include "crystal.glsl"
+#include "stats_blocks.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
 layout(binding = 0, r32f) uniform readonly image3D lattice;
-// [0] interior voxels, [1..4] above the four event thresholds (0.25 / 0.45 / 0.65 / 0.82), [5] peak (float bits: positive floats
-// order as their bits do)
-layout(binding = 1, std430) buffer Stats { uint counts[8]; } stats;
-layout(push_constant) uniform Push { vec4 thresholds; } pc;  // amber, rose, crimson, climax
+layout(binding = 1, std430) buffer Stats { BloomLatticeCounts stats; };
+layout(push_constant) uniform Push { BloomStatsThresholds thresholds; };  // 0.25 / 0.45 / 0.65 / 0.82 by default
 
-shared uint partial[6];
+shared uint partial[6];  // interior, above amber, rose, crimson and climax, peak bits
 const int kColumn = 8;  // voxels along z per invocation; mirrors kStatsColumn in bloom_scene.cpp
 
 void main() {
@@ -30,15 +29,17 @@ void main() {
     peak = max(peak, v);
     if (!insideCore(normalised)) continue;
     mine[0] += 1u;
-    mine[1] += v > pc.thresholds.x ? 1u : 0u;
-    mine[2] += v > pc.thresholds.y ? 1u : 0u;
-    mine[3] += v > pc.thresholds.z ? 1u : 0u;
-    mine[4] += v > pc.thresholds.w ? 1u : 0u;
+    mine[1] += v > thresholds.amber ? 1u : 0u;
+    mine[2] += v > thresholds.rose ? 1u : 0u;
+    mine[3] += v > thresholds.crimson ? 1u : 0u;
+    mine[4] += v > thresholds.climax ? 1u : 0u;
   }
   for (int i = 0; i < 5; ++i)
     if (mine[i] > 0u) atomicAdd(partial[i], mine[i]);
   if (peak > 0.0) atomicMax(partial[5], floatBitsToUint(peak));
   barrier();
-  if (gl_LocalInvocationIndex < 5) atomicAdd(stats.counts[gl_LocalInvocationIndex], partial[gl_LocalInvocationIndex]);
-  if (gl_LocalInvocationIndex == 5) atomicMax(stats.counts[5], partial[5]);
+  if (gl_LocalInvocationIndex == 0) atomicAdd(stats.interior, partial[0]);
+  if (gl_LocalInvocationIndex >= 1 && gl_LocalInvocationIndex < 5)
+    atomicAdd(stats.above[gl_LocalInvocationIndex - 1], partial[gl_LocalInvocationIndex]);
+  if (gl_LocalInvocationIndex == 5) atomicMax(stats.peakBits, partial[5]);
 }

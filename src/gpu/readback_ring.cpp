@@ -4,11 +4,16 @@
 
 namespace vitrine::gpu {
 
-ReadbackRing::ReadbackRing(const Device& device, VkDeviceSize bytes, uint32_t slots, const std::string& name)
-    : device_(device), bytes_(bytes) {
+ReadbackRing::ReadbackRing(const Device& device, FrameResources& resources, VkDeviceSize bytes, uint32_t slots,
+                           const std::string& name)
+    : device_(device), resources_(resources), bytes_(bytes) {
+  // A declaration a slot rather than one PerFrame buffer: a slot is taken again once its copy has
+  // finished, which follows the submissions, not the frames in flight (more slots than frames).
   for (uint32_t i = 0; i < slots; ++i)
-    slots_.push_back({Buffer(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
-                             fmt::format("{} {}", name, i)),
+    slots_.push_back({resources.declare(BufferDecl{.name = fmt::format("{} {}", name, i),
+                                                   .size = BufferSize::absolute(bytes),
+                                                   .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                   .memory = MemoryUse::Readback}),
                       0, 0.0, false});
 }
 
@@ -16,11 +21,12 @@ bool ReadbackRing::record(VkCommandBuffer cmd, Buffer& source, double tag) {
   Slot& slot = slots_[next_];
   if (slot.pending && slot.serial > device_.completed()) return false;  // all in flight: skip, never wait
   next_ = (next_ + 1) % slots_.size();
+  Buffer& destination = resources_.current(slot.buffer);
   source.use(cmd, use::TransferSrcBuffer);
-  slot.buffer.use(cmd, use::TransferDstBuffer);
+  destination.use(cmd, use::TransferDstBuffer);
   const VkBufferCopy region{0, 0, bytes_};
-  vkCmdCopyBuffer(cmd, source.handle(), slot.buffer.handle(), 1, &region);
-  slot.buffer.use(cmd, use::HostReadBuffer);
+  vkCmdCopyBuffer(cmd, source.handle(), destination.handle(), 1, &region);
+  destination.use(cmd, use::HostReadBuffer);
   slot.serial = device_.lastSubmitted() + 1;
   slot.tag = tag;
   slot.pending = true;
@@ -41,8 +47,9 @@ std::optional<ReadbackRing::Result> ReadbackRing::poll() {
   }
   if (!newest) return std::nullopt;
   newest->pending = false;
-  newest->buffer.invalidate();
-  return Result{{static_cast<const std::byte*>(newest->buffer.mapped()), size_t(bytes_)}, newest->tag};
+  const Buffer& buffer = resources_.current(newest->buffer);
+  buffer.invalidate();
+  return Result{{static_cast<const std::byte*>(buffer.mapped()), size_t(bytes_)}, newest->tag};
 }
 
 }  // namespace vitrine::gpu

@@ -2,19 +2,22 @@
 // Small results the GPU computes every frame and the CPU wants back (statistics, a phase level),
 // read a few frames later without ever stalling: each frame's copy goes into the next of a few
 // host-readable buffers, and poll() hands over the newest one whose submission has finished. When
-// every buffer is still in flight, that frame's copy is skipped rather than waited for.
-#include "gpu/resources.h"
+// every buffer is still in flight, that frame's copy is skipped rather than waited for. The buffers
+// are declared in the scene's FrameResources, so the host owns and retires them with its others.
+#include "gpu/frame_resources.h"
 
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace vitrine::gpu {
 
 class ReadbackRing {
  public:
-  ReadbackRing(const Device& device, VkDeviceSize bytes, uint32_t slots, const std::string& name);
+  ReadbackRing(const Device& device, FrameResources& resources, VkDeviceSize bytes, uint32_t slots,
+               const std::string& name);
 
   // Records a copy of `source` (its first `bytes`) into a free slot, tagged (a frame index or a
   // time); false when no slot is free this frame.
@@ -29,12 +32,13 @@ class ReadbackRing {
 
  private:
   struct Slot {
-    Buffer buffer;
+    BufferHandle buffer;
     uint64_t serial = 0;  // of the submission that fills it
     double tag = 0.0;
     bool pending = false;
   };
   const Device& device_;
+  FrameResources& resources_;
   VkDeviceSize bytes_;
   std::vector<Slot> slots_;
   size_t next_ = 0;

@@ -4,6 +4,7 @@
 #include "gpu/program.h"
 #include "gpu/stream.h"
 #include "scenes/bloom/bloom_math.h"
+#include "shaders/bloom/diffuse_push.h"
 #include "support/gpu_test.h"
 
 #include <cmath>
@@ -15,10 +16,6 @@ namespace {
 // One 3D r32f lattice pair on the GPU, run through diffuse.comp and read back.
 class BloomGpu : public test::GpuTest {
  protected:
-  struct Push {
-    glm::vec3 source;
-    float diffusion, decay, dt, sigma, sourceRate;
-  };
   std::vector<float> run(uint32_t n, const std::vector<float>& texels, const DiffusionParams& p, int steps) {
     gpu::ImageDesc desc;
     desc.extent = {n, n, n};
@@ -27,12 +24,16 @@ class BloomGpu : public test::GpuTest {
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gpu::Image images[2] = {gpu::Image(device(), desc, "lattice a"), gpu::Image(device(), desc, "lattice b")};
     gpu::ProgramLibrary programs(device());
-    gpu::ComputeProgram diffuse(programs, "bloom/diffuse.comp",
-                                {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 32});
+    gpu::ComputeProgram diffuse(programs, "bloom/diffuse.comp");
     gpu::StreamArena arena(device());
     gpu::Buffer readback(device(), texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          gpu::MemoryUse::Readback, "lattice readback");
-    const Push push{p.source, p.diffusion, p.decay, p.dt, p.sigma, p.sourceOn ? p.sourceRate : 0.0f};
+    const shader::BloomDiffusePush push{.source = p.source,
+                                        .diffusion = p.diffusion,
+                                        .decay = p.decay,
+                                        .dt = p.dt,
+                                        .sigma = p.sigma,
+                                        .sourceRate = p.sourceOn ? p.sourceRate : 0.0f};
     device().submitNow([&](VkCommandBuffer cmd) {
       gpu::uploadImage(cmd, arena, images[0], std::as_bytes(std::span(texels)), gpu::use::ComputeRead);
       diffuse.bind(cmd);
@@ -42,8 +43,8 @@ class BloomGpu : public test::GpuTest {
         gpu::Image& out = images[(step + 1) % 2];
         in.use(cmd, gpu::use::ComputeRead);
         out.use(cmd, gpu::use::ComputeWrite);
-        diffuse.push(cmd, gpu::Bindings().storageImage(in.view()).storageImage(out.view()));
-        diffuse.dispatchOver(cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
+        diffuse.push(cmd, gpu::Bindings().storageImage("current", in.view()).storageImage("next", out.view()));
+        diffuse.dispatchOver(cmd, VkExtent3D{n, n, n});
       }
       gpu::Image& result = images[steps % 2];
       result.use(cmd, gpu::use::TransferSrc);

@@ -7,16 +7,23 @@
 #include "scenes/adaptive_quality.h"
 
 #include "core/error.h"
+#include "gpu/buffer_commands.h"
 #include "gpu/readback_ring.h"
 #include "scenes/bloom/bloom_math.h"
 #include "scenes/bloom/settings.h"
+#include "shaders/bloom/chamber_push.h"
+#include "shaders/bloom/crystal_push.h"
+#include "shaders/bloom/diffuse_push.h"
+#include "shaders/bloom/stats_blocks.h"
 #include "text/text_pass.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -33,35 +40,11 @@ constexpr VkFormat kLatticeFormat = VK_FORMAT_R32_SFLOAT;
 // follows the clock on a slow device; below that the frame's own GPU time would grow with its
 // slowness, so the rest is given up and the gallery says the simulation is behind.
 constexpr float kMaxSecondsPerFrame = 0.5f;
-constexpr size_t kStatsWords = 8;
 constexpr uint32_t kStatsColumn = 8;  // voxels along z each statistics invocation counts (stats.comp)
+constexpr uint32_t kStatsReadbacks = 4;  // copies in flight before a frame's is skipped (gpu/readback_ring.h)
 
 constexpr std::array<std::string_view, 4> kLabelWords{"", "AMBER", "ROSE", "CRIMSON"};
 const text::Shaping kLabelShaping{0.18f};  // small caps, widely tracked
-
-struct DiffusePush {
-  glm::vec3 source;
-  float diffusion, decay, dt, sigma, sourceRate;
-};
-static_assert(sizeof(DiffusePush) == 32);
-
-struct ChamberPush {
-  float shadow, glow;
-  float pad0, pad1;
-  glm::vec3 glowColour;
-  float pad2;
-};
-
-struct CrystalPush {  // mirrors shaders/bloom/crystal_push.glsl
-  glm::mat4 viewProjection;
-  glm::vec3 eye;
-  float time;
-  glm::vec3 tint;
-  uint32_t seed;
-  uint32_t frame, traceSteps, samples;
-  float shimmer;
-};
-static_assert(sizeof(CrystalPush) == 112);
 
 gpu::GraphicsState crystalState() {
   gpu::GraphicsState state;
@@ -72,11 +55,18 @@ gpu::GraphicsState crystalState() {
   return state;
 }
 
-// The statistics buffer's words (shaders/bloom/stats.comp).
+// What a statistics pass counted (shaders/bloom/stats_blocks.h), as the scene reads it.
 struct LatticeStats {
   uint32_t interior = 0;            // the crystal's voxels inside its core (bloom_math.h: insideCore)
   std::array<uint32_t, 4> above{};  // of those, past the amber, rose, crimson and climax thresholds
   float peak = 0.0f;                // over the whole crystal
+  static LatticeStats from(const shader::BloomLatticeCounts& counts) {
+    LatticeStats stats;
+    stats.interior = counts.interior;
+    std::copy(std::begin(counts.above), std::end(counts.above), stats.above.begin());
+    stats.peak = std::bit_cast<float>(counts.peakBits);
+    return stats;
+  }
   std::array<float, 4> fractions() const {
     std::array<float, 4> f{};
     for (size_t i = 0; i < 4; ++i) f[i] = interior ? float(above[i]) / float(interior) : 0.0f;
@@ -92,29 +82,27 @@ class BloomScene final : public Scene {
         events_(context.events),
         quality_(context),
         audio_(context.audio),
-        diffuse_(context.programs, "bloom/diffuse.comp",
-                 {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(DiffusePush)}),
-        statistics_(context.programs, "bloom/stats.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, sizeof(float) * 4}),
-        chamber_(context.programs, "bloom/chamber.comp", {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(ChamberPush)}),
-        crystal_(context.programs, crystalState(),
-                 {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, sizeof(CrystalPush)}),
-        statsBuffer_(context.device, kStatsWords * sizeof(uint32_t),
-                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                     gpu::MemoryUse::Device, "bloom statistics"),
-        statsReadback_(context.device, kStatsWords * sizeof(uint32_t), 4, "bloom statistics readback"),
+        diffuse_(context.programs, "bloom/diffuse.comp"),
+        statistics_(context.programs, "bloom/stats.comp"),
+        chamber_(context.programs, "bloom/chamber.comp"),
+        crystal_(context.programs, crystalState()),
+        // Zeroed each frame before the pass counts into it, then copied out for the CPU.
+        statsCounts_(context.resources.declare(
+            {.name = "bloom statistics",
+             .size = gpu::BufferSize::absolute(sizeof(shader::BloomLatticeCounts)),
+             .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                      VK_BUFFER_USAGE_TRANSFER_DST_BIT})),
+        statsReadback_(context.device, context.resources, sizeof(shader::BloomLatticeCounts), kStatsReadbacks,
+                       "bloom statistics readback"),
         labelFont_(text::Font::fromAssets(context.assets, "CormorantSC")),
         titleFont_(text::Font::fromAssets(context.assets, "FrauncesItalic")),
         text_(context, {{&labelFont_, {"AMBER", "ROSE", "CRIMSON"}, kLabelShaping}, {&titleFont_, {"CHROMA"}, {}}}) {
     for (size_t i = 1; i < 4; ++i)
       labels_[i] = text_.layout(labelFont_, std::string(kLabelWords[i]), kLabelShaping);
     chroma_ = text_.layout(titleFont_, "CHROMA");
-    VkFormatProperties format{};
-    vkGetPhysicalDeviceFormatProperties(context.device.physical(), kLatticeFormat, &format);
     const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT |
                                         VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-    if ((format.optimalTilingFeatures & needed) != needed)
+    if ((context.device.optimalTilingFeatures(kLatticeFormat) & needed) != needed)
       throw Error(fmt::format("bloom needs r32f 3D images it can store to and filter linearly, which {} lacks",
                               context.device.properties().deviceName));
     lattice_ = resources_.declare(latticeDecl(settings_.lattice, 0.0f));
@@ -155,12 +143,9 @@ class BloomScene final : public Scene {
     if (settings_.phaseSource == PhaseSource::Cpu)
       detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
     while (auto result = statsReadback_.poll()) {  // finished a frame or more ago: no waiting
-      LatticeStats stats;
-      std::array<uint32_t, kStatsWords> words{};
-      std::memcpy(words.data(), result->bytes.data(), sizeof(words));
-      stats.interior = words[0];
-      for (size_t i = 0; i < 4; ++i) stats.above[i] = words[1 + i];
-      std::memcpy(&stats.peak, &words[5], sizeof(float));
+      shader::BloomLatticeCounts counts;
+      std::memcpy(&counts, result->bytes.data(), sizeof(counts));
+      const LatticeStats stats = LatticeStats::from(counts);
       stats_ = stats;
       history_.push_back({float(stats.peak), stats.fractions()[1], proxy_});
       if (history_.size() > kHistory) history_.pop_front();
@@ -259,12 +244,12 @@ class BloomScene final : public Scene {
     const auto pass = frame.pass("bloom diffuse");
     const uint32_t n = uint32_t(settings_.lattice);
     const uint32_t perStep = substeps();
-    DiffusePush push{source_.voxel,
-                     scaledD(),
-                     source_.on ? settings_.decayRising : settings_.decayVenting,
-                     stepSeconds_ / float(perStep),
-                     scaledSigma(settings_.sigma, n),
-                     source_.on ? source_.rate : 0.0f};
+    const shader::BloomDiffusePush push{.source = source_.voxel,
+                                        .diffusion = scaledD(),
+                                        .decay = source_.on ? settings_.decayRising : settings_.decayVenting,
+                                        .dt = stepSeconds_ / float(perStep),
+                                        .sigma = scaledSigma(settings_.sigma, n),
+                                        .sourceRate = source_.on ? source_.rate : 0.0f};
     diffuse_.bind(frame.cmd);
     diffuse_.constants(frame.cmd, push);
     for (uint32_t i = 0; i < uint32_t(stepsPending_) * perStep; ++i) {
@@ -272,8 +257,8 @@ class BloomScene final : public Scene {
       gpu::Image& write = frame.resources.previous(lattice_);
       frame.transition(read, gpu::use::ComputeRead);
       frame.transition(write, gpu::use::ComputeWrite);
-      diffuse_.push(frame.cmd, gpu::Bindings().storageImage(read.view()).storageImage(write.view()));
-      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, n}, VkExtent3D{8, 8, 4});
+      diffuse_.push(frame.cmd, gpu::Bindings().storageImage("current", read.view()).storageImage("next", write.view()));
+      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
       frame.resources.flip(lattice_);
     }
     stepsPending_ = 0;
@@ -281,29 +266,29 @@ class BloomScene final : public Scene {
 
   void measure(const FrameContext& frame) {
     const auto pass = frame.pass("bloom statistics");
-    frame.transition(statsBuffer_, gpu::use::TransferDstBuffer);
-    vkCmdFillBuffer(frame.cmd, statsBuffer_.handle(), 0, VK_WHOLE_SIZE, 0);
+    gpu::Buffer& counts = frame.resources.current(statsCounts_);
+    gpu::fillBuffer(frame.cmd, counts, 0, gpu::use::ComputeReadWriteBuffer);  // the workgroups' atomics add to it
     gpu::Image& lattice = frame.image(lattice_);
     frame.transition(lattice, gpu::use::ComputeRead);
-    frame.transition(statsBuffer_, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     statistics_.bind(frame.cmd);
-    statistics_.push(frame.cmd, gpu::Bindings().storageImage(lattice.view()).storageBuffer(statsBuffer_.handle()));
-    statistics_.constants(frame.cmd, thresholds());
+    statistics_.push(frame.cmd,
+                     gpu::Bindings().storageImage("lattice", lattice.view()).storageBuffer("Stats", counts.handle()));
+    const auto [amber, rose, crimson, climax] = thresholds();
+    statistics_.constants(frame.cmd, shader::BloomStatsThresholds{amber, rose, crimson, climax});
     const uint32_t n = uint32_t(settings_.lattice);
-    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + kStatsColumn - 1) / kStatsColumn}, VkExtent3D{8, 8, 4});
-    statsReadback_.record(frame.cmd, statsBuffer_, time_);
+    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + kStatsColumn - 1) / kStatsColumn});
+    statsReadback_.record(frame.cmd, counts, time_);
   }
 
   void drawChamber(const FrameContext& frame) {
     const auto pass = frame.pass("bloom chamber");
     frame.transition(frame.target, gpu::use::ComputeWrite);
     const float fill = std::min(stats_.peak, 1.0f);
-    const ChamberPush push{0.22f + 0.12f * fill, fill * 0.6f, 0, 0, tint(), 0};
+    const shader::BloomChamberPush push{.glowColour = tint(), .shadow = 0.22f + 0.12f * fill, .glow = fill * 0.6f};
     chamber_.bind(frame.cmd);
-    chamber_.push(frame.cmd, gpu::Bindings().storageImage(frame.target.view()));
+    chamber_.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));
     chamber_.constants(frame.cmd, push);
-    chamber_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
+    chamber_.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 
   void drawCrystal(const FrameContext& frame) {
@@ -316,12 +301,19 @@ class BloomScene final : public Scene {
     projection[1][1] *= -1.0f;  // Vulkan's clip space has y down
     // Reduced motion: no shimmer, and the jitter holds still (a fixed pattern, no crawling grain).
     const float shimmer = detector_.climax() && !reducedMotion_ ? 1.0f : 0.0f;
-    const CrystalPush push{projection * view, kEye, float(time_), tint(), seed_,
-                           reducedMotion_ ? 0u : uint32_t(frame_), uint32_t(settings_.traceSteps),
-                           uint32_t(settings_.samples), shimmer};
+    const shader::BloomCrystalPush push{.viewProjection = projection * view,
+                                        .eye = kEye,
+                                        .time = float(time_),
+                                        .tint = tint(),
+                                        .seed = seed_,
+                                        .frame = reducedMotion_ ? 0u : uint32_t(frame_),
+                                        .traceSteps = uint32_t(settings_.traceSteps),
+                                        .samples = uint32_t(settings_.samples),
+                                        .shimmer = shimmer};
     crystal_.bind(frame.cmd);
     crystal_.push(frame.cmd, gpu::Bindings().sampledImage(
-                                 lattice.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+                                 "vapour", lattice.view(),
+                                 device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                                  gpu::use::FragmentSample.layout));
     crystal_.constants(frame.cmd, push);
     vkCmdDraw(frame.cmd, 36, 1, 0, 0);
@@ -430,7 +422,7 @@ class BloomScene final : public Scene {
   gpu::ComputeProgram statistics_;
   gpu::ComputeProgram chamber_;
   gpu::GraphicsProgram crystal_;
-  gpu::Buffer statsBuffer_;
+  gpu::BufferHandle statsCounts_;
   gpu::ReadbackRing statsReadback_;
   gpu::ImageHandle lattice_;
   Settings settings_;

@@ -1,0 +1,21 @@
+// The crystal pass's push block, one declaration for both sides: bloom_scene.cpp fills it,
+// crystal.vert and crystal.frag read it (shaders/common/interop.h says how).
+#ifndef BLOOM_CRYSTAL_PUSH_H
+#define BLOOM_CRYSTAL_PUSH_H
+#include "../common/interop.h"
+
+VITRINE_SHARED_BEGIN
+struct BloomCrystalPush {
+  mat4 viewProjection;
+  vec3 eye;
+  float time;        // seconds: the climax's spectral shimmer moves with it
+  vec3 tint;         // the crystal's state colour (bloom_math.h: flipColour), linear
+  uint seed;
+  uint frame;        // 0 under reduced motion: the jitter holds still
+  uint traceSteps;   // sphere-trace budget to the entry (48)
+  uint samples;      // volume samples to the exit (56)
+  float shimmer;     // climax: 0..1 (0 under reduced motion)
+};
+VITRINE_SHARED_END
+
+#endif

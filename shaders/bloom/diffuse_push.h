@@ -1,0 +1,18 @@
+// The diffusion step's push block, one declaration for both sides: bloom_scene.cpp (and the GPU test
+// against the CPU reference) fills it, diffuse.comp reads it (shaders/common/interop.h says how).
+#ifndef BLOOM_DIFFUSE_PUSH_H
+#define BLOOM_DIFFUSE_PUSH_H
+#include "../common/interop.h"
+
+VITRINE_SHARED_BEGIN
+struct BloomDiffusePush {
+  vec3 source;       // the vapour source's centre, voxel coordinates
+  float diffusion;   // D, voxels^2 / s
+  float decay;       // per second
+  float dt;          // one sub-step, seconds
+  float sigma;       // the source's radius, voxels
+  float sourceRate;  // per second at the source's centre; 0: no source
+};
+VITRINE_SHARED_END
+
+#endif
