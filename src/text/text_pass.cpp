@@ -1,6 +1,7 @@
 #include "text/text_pass.h"
 
 #include "core/error.h"
+#include "shaders/text/text_blocks.h"
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
@@ -15,27 +16,6 @@ namespace {
 
 constexpr float kEdgePx = 0.6f;   // half the anti-aliased edge, in target pixels, at every size
 constexpr size_t kBatch = 32;     // draws per dispatch: one bit each in a tile's mask
-
-// std430 mirrors of shaders/text/text.comp.
-struct GpuDraw {
-  glm::vec4 color;   // linear rgb, alpha * opacity (straight)
-  glm::vec4 glow;    // rgb * opacity, radius in pixels
-  glm::vec4 place;   // origin in pixels, pixels per em, glyphs revealed
-  glm::ivec4 box;    // x0, y0, x1, y1: the pixels this draw may change
-  glm::uvec4 glyphs; // first glyph, glyph count
-  glm::vec4 edge;    // half edge width in pixels
-};
-struct GpuGlyph {
-  glm::vec4 rect;  // em: min, max
-  glm::vec4 uv;    // atlas: min, max
-};
-static_assert(sizeof(GpuDraw) == 96 && sizeof(GpuGlyph) == 32, "std430 layouts of shaders/text/text.comp");
-struct Push {
-  uint32_t firstTile;
-  uint32_t tileCount;
-  float sdfEdge;    // the texel value on the outline
-  float emPerUnit;  // em of distance per unit of texel value
-};
 
 template <typename T> std::span<const std::byte> bytes(const std::vector<T>& values) {
   return std::as_bytes(std::span(values));
@@ -60,13 +40,11 @@ float edgePx(const TextDraw& draw) {
 }  // namespace
 
 TextPass::TextPass(const SceneContext& context, const std::vector<TextSource>& sources, const AtlasOptions& options)
-    : device_(context.device),
-      program_(context.programs, "text/text.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                sizeof(Push)}),
-      atlas_(options) {
+    : device_(context.device), program_(context.programs, "text/text.comp"), atlas_(options) {
+  // The CPU cuts the draws into tiles of one workgroup each: the shader's workgroup must be a tile.
+  if (program_.localSize() != std::array<uint32_t, 3>{kTile, kTile, 1})
+    throw Error(fmt::format("text/text.comp's workgroup is {}x{}x{}, not a {}x{} tile", program_.localSize()[0],
+                            program_.localSize()[1], program_.localSize()[2], kTile, kTile));
   for (const TextSource& source : sources)
     if (source.font)
       for (const std::string& string : source.strings) atlas_.layout(*source.font, string, source.shaping);
@@ -100,8 +78,8 @@ void TextPass::record(const FrameContext& frame, gpu::Image& target, const std::
   if (target.format() != VK_FORMAT_R16G16B16A16_SFLOAT || !(target.desc().usage & VK_IMAGE_USAGE_STORAGE_BIT))
     throw Error(fmt::format("Text is drawn into rgba16f storage images; {} is not one", target.name()));
   const VkExtent2D extent = target.extent2d();
-  std::vector<GpuDraw> gpuDraws;
-  std::vector<GpuGlyph> glyphs;
+  std::vector<shader::TextPassDraw> gpuDraws;
+  std::vector<shader::TextPassGlyph> glyphs;
   std::vector<PixelBox> boxes;
   for (const TextDraw& draw : draws) {
     const PixelBox box = bounds(draw, extent);
@@ -110,16 +88,20 @@ void TextPass::record(const FrameContext& frame, gpu::Image& target, const std::
     const bool glows = glowPx(draw) > 0.0f && draw.opacity > 0.0f && glm::any(glm::greaterThan(draw.glow.color,
                                                                                                 glm::vec3(0.0f)));
     if (box.empty() || reveal <= 0.0f || (alpha <= 0.0f && !glows)) continue;
-    GpuDraw gpu;
-    gpu.color = glm::vec4(glm::vec3(draw.color), alpha);
-    gpu.glow = glm::vec4(glows ? draw.glow.color * std::max(draw.opacity, 0.0f) : glm::vec3(0.0f),
-                         glows ? glowPx(draw) : 0.0f);
-    gpu.place = glm::vec4(originPx(draw, extent), draw.sizePx, reveal);
-    gpu.box = glm::ivec4(box.x0, box.y0, box.x1, box.y1);
-    gpu.glyphs = glm::uvec4(uint32_t(glyphs.size()), uint32_t(draw.layout->quads.size()), 0, 0);
-    gpu.edge = glm::vec4(edgePx(draw), 0.0f, 0.0f, 0.0f);
-    for (const GlyphQuad& quad : draw.layout->quads)
-      glyphs.push_back({glm::vec4(quad.min, quad.max), glm::vec4(quad.uvMin, quad.uvMax)});
+    const shader::TextPassDraw gpu{
+        .color = glm::vec4(glm::vec3(draw.color), alpha),
+        .glowColor = glows ? draw.glow.color * std::max(draw.opacity, 0.0f) : glm::vec3(0.0f),
+        .glowRadius = glows ? glowPx(draw) : 0.0f,
+        .origin = originPx(draw, extent),
+        .pixelsPerEm = draw.sizePx,
+        .revealed = reveal,
+        .boxMin = {box.x0, box.y0},
+        .boxMax = {box.x1, box.y1},
+        .firstGlyph = uint32_t(glyphs.size()),
+        .glyphCount = uint32_t(draw.layout->quads.size()),
+        .halfEdge = edgePx(draw),
+        .unused = 0.0f};
+    for (const GlyphQuad& quad : draw.layout->quads) glyphs.push_back({quad.min, quad.max, quad.uvMin, quad.uvMax});
     gpuDraws.push_back(gpu);
     boxes.push_back(box);
   }
@@ -137,11 +119,12 @@ void TextPass::record(const FrameContext& frame, gpu::Image& target, const std::
   const gpu::StreamSlice glyphSlice = frame.stream.write(bytes(glyphs));
   const gpu::Bindings bindings =
       gpu::Bindings()
-          .storageImage(target.desc().mips > 1 ? target.mipView(0) : target.view())  // a chain: draw on level 0
-          .sampledImage(atlas.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+          .storageImage("target", target.desc().mips > 1 ? target.mipView(0) : target.view())  // a chain: level 0
+          .sampledImage("atlas", atlas.view(),
+                        device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                         gpu::use::ComputeSample.layout)
-          .storageBuffer(drawSlice.buffer, drawSlice.offset, drawSlice.size)
-          .storageBuffer(glyphSlice.buffer, glyphSlice.offset, glyphSlice.size);
+          .storageBuffer("Draws", drawSlice.buffer, drawSlice.offset, drawSlice.size)
+          .storageBuffer("Glyphs", glyphSlice.buffer, glyphSlice.offset, glyphSlice.size);
   const float sdfEdge = 128.0f / 255.0f, emPerUnit = 255.0f / 128.0f * atlas_.reachEm();
   const uint32_t maxGroups = device_.limits().maxComputeWorkGroupCount[0];
 
@@ -156,23 +139,23 @@ void TextPass::record(const FrameContext& frame, gpu::Image& target, const std::
           marks.push_back({tx | (ty << 16), 1u << (i - first)});
     }
     std::sort(marks.begin(), marks.end(), [](const glm::uvec2& a, const glm::uvec2& b) { return a.x < b.x; });
-    std::vector<glm::uvec4> tiles;  // tile, mask, first draw of the batch
+    std::vector<shader::TextPassTile> tiles;
     for (const glm::uvec2& mark : marks) {
-      if (!tiles.empty() && tiles.back().x == mark.x)
-        tiles.back().y |= mark.y;
+      if (!tiles.empty() && tiles.back().position == mark.x)
+        tiles.back().drawMask |= mark.y;
       else
-        tiles.push_back({mark.x, mark.y, uint32_t(first), 0u});
+        tiles.push_back({.position = mark.x, .drawMask = mark.y, .firstDraw = uint32_t(first)});
     }
     const gpu::StreamSlice tileSlice = frame.stream.write(bytes(tiles));
     gpu::Bindings batch = bindings;
-    batch.storageBuffer(tileSlice.buffer, tileSlice.offset, tileSlice.size);
+    batch.storageBuffer("Tiles", tileSlice.buffer, tileSlice.offset, tileSlice.size);
     for (uint32_t start = 0; start < tiles.size(); start += maxGroups) {
       const uint32_t count = std::min<uint32_t>(maxGroups, uint32_t(tiles.size()) - start);
       frame.transition(target, gpu::use::ComputeReadWrite);  // after whatever wrote it, or the last batch
       program_.bind(frame.cmd);
       program_.push(frame.cmd, batch);
-      program_.constants(frame.cmd, Push{start, count, sdfEdge, emPerUnit});
-      program_.dispatchOver(frame.cmd, VkExtent2D{count * kTile, kTile}, VkExtent2D{kTile, kTile});
+      program_.constants(frame.cmd, shader::TextPassPush{start, count, sdfEdge, emPerUnit});
+      program_.dispatchGroups(frame.cmd, {count, 1, 1});  // one workgroup a tile
     }
   }
 }
