@@ -4,14 +4,12 @@
 // compute-first GPUs such as the H100 a 4K blit took 1.19 ms, this pass a small fraction of that.
 // In kiosk mode's cross-fade it also mixes in the incoming scene's target.
 #extension GL_GOOGLE_include_directive : require
+#include "present_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D source;                     // linear filter, clamped
 layout(binding = 1) uniform writeonly image2D destination;        // format from the view
 layout(binding = 2) uniform sampler2D incoming;                   // the scene fading in; `source` when none
-layout(push_constant) uniform Push {
-  uint encodeSrgb;
-  float fade;  // the incoming scene's weight, 0..1
-} pc;
+layout(push_constant) uniform Push { HostPresentPush pc; };
 
 vec3 linearToSrgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);

@@ -7,6 +7,7 @@
 
 #include "gpu/check.h"
 #include "gpu/fault_injection.h"
+#include "shaders/host/present_push.h"
 
 namespace vitrine::host {
 
@@ -18,10 +19,7 @@ SceneRenderer::SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& pro
       framesInFlight_(framesInFlight),
       timer_(device, framesInFlight),
       stream_(device),
-      present_(programs, "host/present.comp",
-               {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                2 * sizeof(uint32_t)}) {}
+      present_(programs, "host/present.comp") {}
 
 // Shutdown is the one place that waits: every retired scene and pipeline must be gone before the
 // program library they registered with.
@@ -122,15 +120,12 @@ void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, con
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   present_.bind(cmd);
   present_.push(cmd, gpu::Bindings()
-                         .sampledImage(target_.view(), linear, gpu::use::ComputeSample.layout)
-                         .storageImage(dst.storageView)
-                         .sampledImage(other.view(), linear, gpu::use::ComputeSample.layout));
-  struct {
-    uint32_t encodeSrgb;
-    float fade;
-  } constants{uint32_t(dst.encodeSrgb ? 1 : 0), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f};
-  present_.constants(cmd, constants);
-  present_.dispatchOver(cmd, dst.extent, {8, 8});
+                         .sampledImage("source", target_.view(), linear, gpu::use::ComputeSample.layout)
+                         .storageImage("destination", dst.storageView)
+                         .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout));
+  present_.constants(cmd, shader::HostPresentPush{.encodeSrgb = dst.encodeSrgb ? 1u : 0u,
+                                                  .fade = fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f});
+  present_.dispatchOver(cmd, dst.extent);
   gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);
 }
 
