@@ -3,6 +3,7 @@
 #include "gpu/sync_objects.h"
 #include "host/scene_renderer.h"
 #include "image/image.h"
+#include "shaders/test/accumulate_push.h"
 #include "support/gpu_test.h"
 #include "support/test_scene.h"
 
@@ -14,9 +15,7 @@ template <int kTenths>
 class FlatScene final : public TestScene {
  public:
   explicit FlatScene(const SceneContext& context)
-      : device_(context.device),
-        fill_(context.programs, "test/accumulate.comp",
-              {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 8}) {
+      : device_(context.device), fill_(context.programs, "test/accumulate.comp") {
     unused_ = context.resources.declare({"unused source", VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT,
                                          gpu::ImageSize::absolute(1, 1), 1});
   }
@@ -26,16 +25,12 @@ class FlatScene final : public TestScene {
     frame.transition(frame.target, gpu::use::ComputeWrite);
     fill_.bind(frame.cmd);
     fill_.push(frame.cmd, gpu::Bindings()
-                              .sampledImage(frame.image(unused_).view(),
+                              .sampledImage("source", frame.image(unused_).view(),
                                             device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                                             gpu::use::ComputeSample.layout)
-                              .storageImage(frame.target.view()));
-    const struct {
-      float add;
-      uint32_t useSource;
-    } push{float(kTenths) / 10.0f, 0u};
-    fill_.constants(frame.cmd, push);
-    fill_.dispatchOver(frame.cmd, frame.target.extent2d(), {8, 8});
+                              .storageImage("destination", frame.target.view()));
+    fill_.constants(frame.cmd, shader::TestAccumulatePush{.add = float(kTenths) / 10.0f, .useSource = 0u});
+    fill_.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 
  private:

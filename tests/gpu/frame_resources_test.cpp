@@ -1,17 +1,22 @@
 // The host's frame resources under the validation layer with synchronisation checks: declared images
 // through many resizes with two frames in flight, a history pair carrying last frame's contents (and
-// reported invalid after a resize), and deferred deletion leaving nothing behind at device exit.
+// reported invalid after a resize), and deferred deletion leaving nothing behind at device exit; then
+// declared buffers: initial bytes, clears, sizes that follow the target, pairs and one per frame in flight.
 #include "core/error.h"
+#include "gpu/buffer_commands.h"
 #include "gpu/sync_objects.h"
 #include "host/scene_renderer.h"
 #include "image/image.h"
+#include "shaders/test/accumulate_push.h"
 #include "support/gpu_test.h"
 #include "support/frames_in_flight.h"
 #include "support/test_scene.h"
 
 #include <array>
 #include <cstring>
+#include <numeric>
 #include <optional>
+#include <set>
 
 namespace vitrine::test {
 namespace {
@@ -22,9 +27,7 @@ namespace {
 class CountingScene final : public TestScene {
  public:
   explicit CountingScene(const SceneContext& context)
-      : device_(context.device),
-        accumulate_(context.programs, "test/accumulate.comp",
-                    {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 8}) {
+      : device_(context.device), accumulate_(context.programs, "test/accumulate.comp") {
     constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     history_ = context.resources.declare(
         {"count", VK_FORMAT_R16G16B16A16_SFLOAT, usage, gpu::ImageSize::relative(0.5f), 1, gpu::Pairing::History});
@@ -59,17 +62,13 @@ class CountingScene final : public TestScene {
     frame.transition(destination, gpu::use::ComputeWrite);
     accumulate_.bind(frame.cmd);
     accumulate_.push(frame.cmd, gpu::Bindings()
-                                    .sampledImage(source.view(),
+                                    .sampledImage("source", source.view(),
                                                   device_.sampler(gpu::Device::Filter::Linear,
                                                                   gpu::Device::Address::Clamp),
                                                   gpu::use::ComputeSample.layout)
-                                    .storageImage(destination.view()));
-    struct {
-      float add;
-      uint32_t useSource;
-    } push{add, useSource ? 1u : 0u};
-    accumulate_.constants(frame.cmd, push);
-    accumulate_.dispatchOver(frame.cmd, destination.extent2d(), {8, 8});
+                                    .storageImage("destination", destination.view()));
+    accumulate_.constants(frame.cmd, shader::TestAccumulatePush{.add = add, .useSource = useSource ? 1u : 0u});
+    accumulate_.dispatchOver(frame.cmd, destination.extent2d());
   }
 
   const gpu::Device& device_;
@@ -180,8 +179,7 @@ TEST_F(Submission, StreamArenaUploadsArriveAndChunksAreReused) {
 // Bindings hold values only: a copy outlives the original and pushes the same descriptors.
 TEST_F(Submission, CopiedBindingsStayValid) {
   gpu::ProgramLibrary programs(device());
-  gpu::ComputeProgram accumulate(programs, "test/accumulate.comp",
-                                 {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 8});
+  gpu::ComputeProgram accumulate(programs, "test/accumulate.comp");
   gpu::ImageDesc desc;
   desc.extent = {8, 8, 1};
   desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -189,9 +187,11 @@ TEST_F(Submission, CopiedBindingsStayValid) {
   std::optional<gpu::Bindings> copy;
   {
     auto original = std::make_unique<gpu::Bindings>();
-    original->sampledImage(source.view(), device().sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
-                           gpu::use::ComputeSample.layout)
-        .storageImage(destination.view());
+    original
+        ->sampledImage("source", source.view(),
+                       device().sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp),
+                       gpu::use::ComputeSample.layout)
+        .storageImage("destination", destination.view());
     copy = *original;
     std::memset(static_cast<void*>(original.get()), 0xAB, sizeof(gpu::Bindings));  // the original is gone
   }
@@ -201,12 +201,8 @@ TEST_F(Submission, CopiedBindingsStayValid) {
     destination.use(cmd, gpu::use::ComputeWrite);
     accumulate.bind(cmd);
     accumulate.push(cmd, *copy);
-    const struct {
-      float add;
-      uint32_t useSource;
-    } push{3.0f, 0u};
-    accumulate.constants(cmd, push);
-    accumulate.dispatchOver(cmd, VkExtent2D{8, 8}, {8, 8});
+    accumulate.constants(cmd, shader::TestAccumulatePush{.add = 3.0f, .useSource = 0u});
+    accumulate.dispatchOver(cmd, VkExtent2D{8, 8});
     gpu::recordReadback(cmd, destination, readback);
   });
   readback.invalidate();
@@ -233,6 +229,146 @@ TEST_F(Submission, AnImageIsNotUsableBeforeItsInitialContentsAreWritten) {
   resources.redeclare(handle, decl);
   EXPECT_THROW(resources.current(handle), Error) << "a redeclared image waits for the next frame's upload";
   device().waitIdle();
+}
+
+}  // namespace
+}  // namespace vitrine::test
+
+namespace vitrine::test {
+namespace {
+
+// Declared buffers on their own, with the host's part (creation, resizes, the start of a frame) done
+// by hand, and their contents copied back to the CPU.
+class DeclaredBuffers : public GpuTest {
+ protected:
+  static constexpr VkBufferUsageFlags kCopyable = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+  // A buffer the host clears to `value` when it creates it, readable by a copy.
+  static gpu::BufferDecl clearedTo(uint32_t value, gpu::BufferSize size) {
+    return {.name = "cleared",
+            .size = size,
+            .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+            .clear = true,
+            .clearValue = value};
+  }
+  // What the host does first in every frame: pending uploads and clears.
+  void beginFrame(uint32_t slot = 0) {
+    device().submitNow([&](VkCommandBuffer cmd) { resources_.beginFrame(cmd, arena_, slot); });
+  }
+  void fill(gpu::Buffer& buffer, uint32_t value) {
+    device().submitNow([&](VkCommandBuffer cmd) { gpu::fillBuffer(cmd, buffer, value, gpu::use::TransferSrcBuffer); });
+  }
+  // The buffer's 32-bit words as the GPU left them.
+  std::vector<uint32_t> words(gpu::Buffer& buffer) {
+    gpu::Buffer staging(device(), buffer.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                        "buffer readback");
+    device().submitNow([&](VkCommandBuffer cmd) {
+      buffer.use(cmd, gpu::use::TransferSrcBuffer);
+      staging.use(cmd, gpu::use::TransferDstBuffer);
+      const VkBufferCopy region{0, 0, buffer.size()};
+      vkCmdCopyBuffer(cmd, buffer.handle(), staging.handle(), 1, &region);
+      staging.use(cmd, gpu::use::HostReadBuffer);
+    });
+    staging.invalidate();
+    const auto view = staging.view<const uint32_t>();
+    return {view.begin(), view.end()};
+  }
+
+  gpu::FrameResources resources_{device()};
+  gpu::StreamArena arena_{device()};
+};
+
+TEST_F(DeclaredBuffers, AnAbsoluteBufferStartsWithItsInitialBytes) {
+  std::vector<uint32_t> values(64);
+  std::iota(values.begin(), values.end(), 1000u);
+  gpu::BufferDecl decl{.name = "seeded", .size = gpu::BufferSize::absolute(values.size() * 4), .usage = kCopyable};
+  decl.initial.resize(values.size() * 4);
+  std::memcpy(decl.initial.data(), values.data(), decl.initial.size());
+  const gpu::BufferHandle handle = resources_.declare(std::move(decl));
+  EXPECT_THROW(resources_.current(handle), Error) << "its bytes arrive as the next frame begins";
+  beginFrame();
+  EXPECT_EQ(words(resources_.current(handle)), values);
+}
+
+TEST_F(DeclaredBuffers, AClearedBufferStartsWithItsClearValue) {
+  const gpu::BufferHandle handle = resources_.declare(clearedTo(0xC0FFEEu, gpu::BufferSize::absolute(1024)));
+  EXPECT_THROW(resources_.current(handle), Error) << "its clear is recorded as the next frame begins";
+  beginFrame();
+  EXPECT_EQ(words(resources_.current(handle)), std::vector<uint32_t>(256, 0xC0FFEEu));
+}
+
+// 4 bytes a pixel of the target: none before the target's size is known, then a new buffer at each
+// new size, cleared again.
+TEST_F(DeclaredBuffers, ARelativeBufferIsRecreatedAtTheTargetsNewSizeOnResize) {
+  const gpu::BufferHandle handle = resources_.declare(clearedTo(7u, gpu::BufferSize::relative(4)));
+  EXPECT_THROW(resources_.current(handle), Error) << "no size before the first resize";
+  resources_.resize({16, 8});
+  beginFrame();
+  const VkBuffer first = resources_.current(handle).handle();
+  EXPECT_EQ(resources_.current(handle).size(), 16u * 8u * 4u);
+  EXPECT_EQ(words(resources_.current(handle)), std::vector<uint32_t>(16 * 8, 7u));
+  resources_.resize({16, 8});
+  EXPECT_EQ(resources_.current(handle).handle(), first) << "the same size keeps the buffer";
+  resources_.resize({20, 10});
+  EXPECT_THROW(resources_.current(handle), Error) << "the new buffer's clear is pending";
+  beginFrame();
+  gpu::Buffer& resized = resources_.current(handle);
+  EXPECT_EQ(resized.size(), 20u * 10u * 4u);
+  EXPECT_EQ(words(resized), std::vector<uint32_t>(20 * 10, 7u));
+}
+
+// A ping-pong pair: current() is read, previous() written, flip() swaps them.
+TEST_F(DeclaredBuffers, APingPongPairFlips) {
+  const gpu::BufferHandle handle = resources_.declare({.name = "pair",
+                                                       .size = gpu::BufferSize::absolute(64),
+                                                       .usage = kCopyable,
+                                                       .pairing = gpu::Pairing::PingPong});
+  gpu::Buffer& first = resources_.current(handle);
+  gpu::Buffer& second = resources_.previous(handle);
+  ASSERT_NE(first.handle(), second.handle());
+  fill(first, 1u);
+  fill(second, 2u);  // a step writes the other one...
+  resources_.flip(handle);  // ...and the next reads it
+  EXPECT_EQ(resources_.current(handle).handle(), second.handle());
+  EXPECT_EQ(resources_.previous(handle).handle(), first.handle());
+  EXPECT_EQ(words(resources_.current(handle)), std::vector<uint32_t>(16, 2u));
+  resources_.flip(handle);
+  EXPECT_EQ(words(resources_.current(handle)), std::vector<uint32_t>(16, 1u));
+}
+
+// Through the host, two frames in flight: each frame's slot has its own buffer, the same one every
+// time that slot comes round, so the CPU can write (or read back) one while the other is in flight.
+class PerFrameScene final : public TestScene {
+ public:
+  explicit PerFrameScene(const SceneContext& context)
+      : perFrame_(context.resources.declare({.name = "per frame",
+                                             .size = gpu::BufferSize::absolute(256),
+                                             .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                             .pairing = gpu::Pairing::PerFrame})) {}
+  void record(const FrameContext& frame) override {
+    seen.push_back({frame.slot, frame.resources.current(perFrame_).handle()});
+  }
+  std::vector<std::pair<uint32_t, VkBuffer>> seen;  // each frame's slot and buffer
+
+ private:
+  gpu::BufferHandle perFrame_;
+};
+
+PerFrameScene* perFrameScene = nullptr;
+
+TEST_F(DeclaredBuffers, APerFrameBufferIsADifferentBufferInEachSlot) {
+  FramesInFlight run(device(), Assets("/nonexistent"));
+  run.renderer().setScene(testSceneInfo(perFrameScene));
+  for (int i = 0; i < 6; ++i) run.frame({32, 16});
+  const auto& seen = perFrameScene->seen;
+  ASSERT_EQ(seen.size(), 6u);
+  std::set<VkBuffer> buffers;
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].first, uint32_t(i % 2)) << "frame " << i;
+    EXPECT_EQ(seen[i].second, seen[i % 2].second) << "frame " << i << " has its slot's buffer";
+    buffers.insert(seen[i].second);
+  }
+  EXPECT_EQ(buffers.size(), 2u) << "one buffer per frame in flight";
 }
 
 }  // namespace
