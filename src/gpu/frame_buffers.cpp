@@ -29,7 +29,7 @@ void FrameResources::create(BufferEntry& entry, VkExtent2D target) {
   if (decl.initial.size() > bytes)
     throw Error(fmt::format("Buffer {}: {} initial bytes for {}", decl.name, decl.initial.size(), bytes));
   VkBufferUsageFlags usage = decl.usage;
-  if ((!decl.initial.empty() || decl.clear) && decl.memory == MemoryUse::Device) usage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  if (!decl.initial.empty() || decl.clear) usage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;  // written by copies
   const size_t count = decl.pairing == Pairing::PingPong ? 2 : decl.pairing == Pairing::PerFrame ? framesInFlight_ : 1;
   for (Buffer& old : entry.buffers) device_.retire(std::move(old));
   entry.buffers.clear();
