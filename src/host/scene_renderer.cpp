@@ -40,7 +40,7 @@ void SceneRenderer::setScene(const SceneInfo& info) {
   resources_ = std::make_unique<gpu::FrameResources>(device_);
   resources_->setFramesInFlight(framesInFlight_);  // before the scene declares per-frame buffers
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
-  scene_ = info.create(SceneContext{device_, programs_, *resources_, assets_, SceneEvents(events_, info.name),
+  scene_ = info.create(SceneContext{{device_, programs_, *resources_}, assets_, SceneEvents(events_, info.name),
                                              *audio_, framesInFlight_, realtime_});
   info_ = &info;
 }

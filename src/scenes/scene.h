@@ -1,20 +1,14 @@
 #pragma once
 // What a scene is to the host: a name, a title, a number key, its parameter schema and a lifecycle.
 // Scenes see the device, the program library, their declared images, the assets and the frame they
-// are asked to draw; nothing else of the host.
+// are asked to draw (FrameInput and FrameContext, from frame/, which passes shared by scenes use
+// without knowing of scenes); nothing else of the host.
 #include "core/assets.h"
-#include "gpu/frame_resources.h"
-#include "gpu/pass_timer.h"
-#include "gpu/program.h"
-#include "gpu/rendering.h"
-#include "gpu/stream.h"
+#include "frame/frame_context.h"
 #include "params/schema.h"
 #include "audio/audio_sink.h"
 #include "scenes/scene_events.h"
 
-#include <glm/vec2.hpp>
-
-#include <algorithm>
 #include <memory>
 #include <span>
 #include <string>
@@ -22,15 +16,6 @@
 #include <vector>
 
 namespace vitrine {
-
-struct CursorInput {
-  glm::vec2 pixels{0.0f};      // framebuffer pixels, origin top-left (HiDPI-correct)
-  glm::vec2 normalized{0.5f};  // 0..1 across the output, origin top-left
-  bool dragging = false;       // left button held after a press inside the view
-  glm::vec2 dragDelta{0.0f};   // normalised movement this frame while dragging
-  float wheel = 0.0f;          // scroll steps this frame
-  bool present = false;        // over the view and not over the menu: the cursor is "there" (bloom's vapour)
-};
 
 // A scene's own verb that remote control (OSC, the web page) and input scripts can trigger, declared
 // once with the scene: neon's "release x y z", glass's "shuffle". Arguments are numbers.
@@ -40,62 +25,9 @@ struct SceneAction {
   std::string_view help;
 };
 
-// One triggered action, checked against its declaration (name known, arity right, finite numbers).
-struct ActionCall {
-  std::string name;
-  std::vector<float> args;
-  bool operator==(const ActionCall&) const = default;
-};
-
-struct FrameInput {
-  double time = 0.0;           // simulation seconds, advanced in fixed steps
-  float dt = 1.0f / 60.0f;     // the fixed step
-  uint64_t frame = 0;          // frames since the scene was created
-  uint32_t seed = 0;           // --seed: makes every stochastic choice reproducible
-  bool reducedMotion = false;  // --reduced-motion: freeze what moves on its own, and grain
-  double lastGpuMs = 0.0;      // the previous frame's GPU time, for adaptive quality
-  CursorInput cursor;
-  std::vector<int> keysPressed;  // GLFW key codes pressed this frame (gallery and --input)
-  std::vector<int> keysHeld;     // GLFW key codes down now (glass: Z held)
-  std::vector<std::string> droppedFiles;  // paths dropped onto the window this frame (gallery only)
-  std::vector<ActionCall> actions;        // the scene's own actions triggered this step, in order
-
-  bool pressed(int key) const { return std::find(keysPressed.begin(), keysPressed.end(), key) != keysPressed.end(); }
-  bool held(int key) const { return std::find(keysHeld.begin(), keysHeld.end(), key) != keysHeld.end(); }
-};
-
-struct FrameContext {
-  const gpu::Device& device;
-  VkCommandBuffer cmd;
-  gpu::PassTimer* timer;
-  // The HDR image the scene draws into: rgba16f, linear, contents undefined at the start of the
-  // frame. Usable as storage image, colour attachment (or resolve target) and sampled image.
-  gpu::Image& target;
-  gpu::FrameResources& resources;  // the images the scene declared
-  gpu::StreamArena& stream;        // per-frame CPU-written memory (uniform blocks, uploads)
-  const FrameInput& input;
-  uint32_t slot;  // frame-in-flight index, for per-frame resources
-
-  // A labelled, timestamped GPU pass for the scope of the returned object.
-  gpu::Pass pass(const char* name) const { return gpu::Pass(device, timer, cmd, name); }
-  // The barrier from the resource's last use to `use` is derived; nothing else to write.
-  void transition(gpu::Image& image, const gpu::ImageUse& use) const { image.use(cmd, use); }
-  void transition(gpu::Buffer& buffer, const gpu::BufferUse& use) const { buffer.use(cmd, use); }
-  gpu::Image& image(gpu::ImageHandle handle) const { return resources.current(handle); }
-  // Colour/depth attachments transitioned, rendering begun, viewport and scissor set; ends with scope.
-  gpu::Rendering rendering(const gpu::RenderingDesc& desc) const { return gpu::Rendering(cmd, desc); }
-  // A uniform or parameter block for this frame.
-  template <typename T> gpu::StreamSlice uniform(const T& value) const { return stream.writeValue(value); }
-  void upload(gpu::Buffer& buffer, VkDeviceSize offset, std::span<const std::byte> data,
-              const gpu::BufferUse& after) const {
-    gpu::uploadBuffer(cmd, stream, buffer, offset, data, after);
-  }
-};
-
-struct SceneContext {
-  const gpu::Device& device;
-  gpu::ProgramLibrary& programs;
-  gpu::FrameResources& resources;  // declare images here; the host owns and resizes them
+// The device, the program library and the scene's declared images (declare images there; the host owns
+// and resizes them) come from GpuContext (frame/frame_context.h), which the scene's passes take.
+struct SceneContext : GpuContext {
   const Assets& assets;            // fonts, panoramas, files named on the command line
   SceneEvents events;              // what happened, for tests and recordings (--events)
   audio::AudioSink& audio;         // the sound device, a WAV being rendered (--audio-out), or silence

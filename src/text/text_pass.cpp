@@ -39,7 +39,7 @@ float edgePx(const TextDraw& draw) {
 
 }  // namespace
 
-TextPass::TextPass(const SceneContext& context, const std::vector<TextSource>& sources, const AtlasOptions& options)
+TextPass::TextPass(const GpuContext& context, const std::vector<TextSource>& sources, const AtlasOptions& options)
     : device_(context.device), program_(context.programs, "text/text.comp"), atlas_(options) {
   // The CPU cuts the draws into tiles of one workgroup each: the shader's workgroup must be a tile.
   if (program_.localSize() != std::array<uint32_t, 3>{kTile, kTile, 1})

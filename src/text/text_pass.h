@@ -15,7 +15,7 @@
 // from the distance field over a width fixed in target pixels, from the known pixels per em, so text
 // is equally crisp at every size. The target is read and written as a storage image (rgba16f); pixels
 // no draw reaches are not written at all.
-#include "scenes/scene.h"
+#include "frame/frame_context.h"
 #include "text/font.h"
 
 #include <glm/vec2.hpp>
@@ -75,7 +75,7 @@ class TextPass {
   static constexpr uint32_t kTile = 16;  // pixels on a side of a tile, the work of one workgroup
 
   // Rasterises every source string's glyphs and declares the atlas image with them as initial data.
-  TextPass(const SceneContext& context, const std::vector<TextSource>& sources, const AtlasOptions& options = {});
+  TextPass(const GpuContext& context, const std::vector<TextSource>& sources, const AtlasOptions& options = {});
 
   // A layout drawn from this pass's atlas. Glyphs not yet in it are added and uploaded at the next
   // record(); better to name every string at construction.
