@@ -10,7 +10,7 @@
 #define NOISE_EXACT
 #include "neon/chain_push.h"
 #include "neon/head_state.h"
-#include "noodles/field.glsl"
+#include "common/flow_field.glsl"
 
 layout(local_size_x = 64) in;
 layout(binding = 0, std430) readonly buffer Heads { NeonHeadState heads[]; };

@@ -7,7 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/color.glsl"
 #include "common/hash.glsl"
-#include "noodles/noise.glsl"
+#include "common/noise.glsl"
 #include "neon/bloom.glsl"
 #include "neon/composite_push.h"
 #include "neon/look.glsl"

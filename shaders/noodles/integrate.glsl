@@ -1,7 +1,7 @@
 // Euler and RK4 steps along the flow; mirrors src/scenes/noodles/integrate.h.
 #ifndef NOODLES_INTEGRATE_GLSL
 #define NOODLES_INTEGRATE_GLSL
-#include "noodles/field.glsl"
+#include "common/flow_field.glsl"
 
 const uint INTEGRATOR_EULER = 0u;
 const uint INTEGRATOR_RK4 = 1u;

@@ -14,6 +14,8 @@
 namespace vitrine::noodles {
 namespace {
 
+using maths::FieldKind;  // the flows are shared with neon (src/maths/flow_field.h)
+
 class NoodlesGpu : public test::GpuTest {
  protected:
   gpu::ProgramLibrary programs_{device()};

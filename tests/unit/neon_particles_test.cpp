@@ -534,7 +534,7 @@ TEST(NeonChains, FollowersChaseLastFramesPositions) {
   for (uint32_t k = 0; k < P; ++k) previous[k] = glm::vec4(scatter(k, 3u), 0.0f);
   const ChainParams p{0.1f, 1.0f, 2.0f, 0.5f, 1.5};
   stepChains(heads, P, previous, next, p);
-  const glm::vec3 velocity = noodles::flowVelocity(glm::vec3(previous[0]), chainField(p));
+  const glm::vec3 velocity = maths::flowVelocity(glm::vec3(previous[0]), chainField(p));
   const glm::vec3 moved =
       glm::vec3(previous[0]) + (velocity * p.fieldStrength + heads[0].launch) * p.dt;
   EXPECT_EQ(glm::vec3(next[0]), moved);
@@ -564,10 +564,10 @@ TEST(NeonChains, RejectsShortBuffers) {
 TEST(NeonChains, PushBlockCarriesTheDriftComputedInDouble) {
   const ChainParams p{0.02f, 0.3f, 1.5f, 0.4f, 1234.5};
   const shader::NeonChainPush push = chainPush(16, 32, p);
-  const noodles::FieldSettings field = noodles::fieldAtTime(noodles::FieldKind::Curl, 0.4f, 0.0f, 1234.5);
+  const maths::FieldSettings field = maths::fieldAtTime(maths::FieldKind::Curl, 0.4f, 0.0f, 1234.5);
   EXPECT_EQ(push.offsetY, field.offsetY);
   EXPECT_EQ(push.offsetZ, field.offsetZ);
-  EXPECT_NE(push.offsetY, noodles::kPotentialOffsetY);  // the drift is in
+  EXPECT_NE(push.offsetY, maths::kPotentialOffsetY);  // the drift is in
   EXPECT_EQ(push.chainCount, 16u);
   EXPECT_EQ(push.particlesPerChain, 32u);
   EXPECT_EQ(push.dt, 0.02f);

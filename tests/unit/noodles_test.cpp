@@ -1,8 +1,9 @@
 // The noodles maths the shaders mirror: noise and its analytic gradient, the divergence-free
-// fields, the integrators, the frames, the node packing, the buffer plan, the camera.
+// fields (shared with neon, in src/maths/), the integrators, the frames, the node packing, the buffer
+// plan, the camera.
 #include "gpu/check.h"
+#include "maths/flow_field.h"
 #include "scenes/noodles/camera.h"
-#include "scenes/noodles/field.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
 #include "scenes/noodles/packing.h"
@@ -23,6 +24,9 @@
 
 namespace vitrine::noodles {
 namespace {
+
+using maths::driftOffset, maths::FieldKind, maths::FieldSettings, maths::fieldAtTime, maths::flowVelocity,
+    maths::gradientNoise, maths::kDriftRadius, maths::latticeGradient;
 
 constexpr float kPi = std::numbers::pi_v<float>;
 

@@ -4,9 +4,9 @@
 // (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
 // tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
 // particle depends only on the previous frame and the order of the invocations cannot matter.
+#include "maths/flow_field.h"
 #include "shaders/neon/chain_push.h"
 #include "scenes/neon/head_state.h"
-#include "scenes/noodles/field.h"
 
 #include <algorithm>
 
@@ -33,18 +33,18 @@ struct ChainParams {
   float lerp;           // the share of the gap to the particle ahead that a follower closes this step (followerLerp)
   float fieldStrength;  // world units per second per unit of curl
   float fieldScale;     // world -> noise coordinates
-  double noiseTime;     // how far the potentials have drifted, in noise units (see noodles::driftOffset)
+  double noiseTime;     // how far the potentials have drifted, in noise units (see maths::driftOffset)
 };
 
 // The heads swim in the noodles scene's curl noise (no lift): divergence free, so the tubes neither
 // bunch into sinks nor spray out of sources. The drift is computed in double here, on the CPU.
-inline noodles::FieldSettings chainField(const ChainParams& p) {
-  return noodles::fieldAtTime(noodles::FieldKind::Curl, p.fieldScale, 0.0f, p.noiseTime);
+inline maths::FieldSettings chainField(const ChainParams& p) {
+  return maths::fieldAtTime(maths::FieldKind::Curl, p.fieldScale, 0.0f, p.noiseTime);
 }
 
 // Particle `index`'s position next frame. `field` is chainField(p), hoisted out of the loop.
 inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t particlesPerChain,
-                               std::span<const glm::vec4> previous, uint32_t index, const noodles::FieldSettings& field,
+                               std::span<const glm::vec4> previous, uint32_t index, const maths::FieldSettings& field,
                                const ChainParams& p) {
   const HeadState& head = heads[index / particlesPerChain];
   const uint32_t k = index % particlesPerChain;
@@ -56,7 +56,7 @@ inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t partic
     if (k == 0 && steered(head))  // a pen: where the cursor is
       position = head.origin;
     else if (k == 0)
-      position += (noodles::flowVelocity(position, field) * p.fieldStrength + head.launch) * p.dt;
+      position += (maths::flowVelocity(position, field) * p.fieldStrength + head.launch) * p.dt;
     else  // chase where the particle ahead was last step
       position += (glm::vec3(previous[index - 1]) - position) * p.lerp;
   }
@@ -69,13 +69,13 @@ inline void stepChains(std::span<const HeadState> heads, uint32_t particlesPerCh
   const size_t count = heads.size() * particlesPerChain;
   if (particlesPerChain == 0 || previous.size() < count || next.size() < count)
     throw std::invalid_argument("stepChains: the position buffers hold fewer than chains x particlesPerChain");
-  const noodles::FieldSettings field = chainField(p);
+  const maths::FieldSettings field = chainField(p);
   for (size_t i = 0; i < count; ++i) next[i] = chainParticle(heads, particlesPerChain, previous, uint32_t(i), field, p);
 }
 
 // The chain pass's push constants for one step (the block is shaders/neon/chain_push.h).
 inline shader::NeonChainPush chainPush(uint32_t chainCount, uint32_t particlesPerChain, const ChainParams& p) {
-  const noodles::FieldSettings field = chainField(p);
+  const maths::FieldSettings field = chainField(p);
   return {field.offsetY, p.dt, field.offsetZ, p.lerp, chainCount, particlesPerChain, p.fieldStrength, field.noiseScale};
 }
 

@@ -2,8 +2,8 @@
 // Everything the noodles panel, "--set key=value" and the settings file can change, with the
 // write-up's numbers as defaults where it has them. Parsing checks syntax and range only; whether the
 // strands fit on the device is the scene's cross-parameter check (strand_layout.h).
+#include "maths/flow_field.h"
 #include "scenes/quality.h"
-#include "scenes/noodles/field.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
 #include "scenes/noodles/palette.h"
@@ -39,7 +39,7 @@ struct NoodleSettings {
   float radius = 0.02f;
   float speed = 1.0f;  // noise units per second that the potentials drift (the write-up's rate)
   float lift = 0.0f;   // uniform upward flow: 2 or so makes strands near-vertical, where frames differ
-  FieldKind field = FieldKind::Curl;
+  maths::FieldKind field = maths::FieldKind::Curl;
   Integrator integrator = Integrator::Euler;
   TangentMode tangent = TangentMode::Raw;  // the write-up leaves the field unnormalised
   FrameMethod frames = FrameMethod::RotationMinimizing;

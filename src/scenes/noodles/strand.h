@@ -2,7 +2,7 @@
 // The CPU reference for one strand, exactly what shaders/noodles/integrate.comp does for it: start on
 // the seed grid, follow the flow for `segments` steps, and write a packed node (position + frame)
 // at the start and after every step. The GPU test compares the two.
-#include "scenes/noodles/field.h"
+#include "maths/flow_field.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
 #include "scenes/noodles/packing.h"
@@ -19,7 +19,7 @@ struct StrandSettings {
   uint32_t segments = 64;
   float spacing = 0.3f;         // between neighbouring strand starts
   float step = 0.05f;
-  FieldSettings field;
+  maths::FieldSettings field;
   Integrator integrator = Integrator::Euler;
   TangentMode tangent = TangentMode::Raw;
   FrameMethod frames = FrameMethod::RotationMinimizing;

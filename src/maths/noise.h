@@ -1,8 +1,9 @@
 #pragma once
 // Gradient noise with its analytic gradient: a lattice of pseudo-random gradients hashed with pcg3d,
-// blended with the quintic interpolant so value and gradient are both continuous across cells.
-// Mirrored line for line by shaders/noodles/noise.glsl; tests/unit/noodles_test.cpp checks the
-// gradient against finite differences.
+// blended with the quintic interpolant so value and gradient are both continuous across cells. The
+// noodles scene's flows are made of it (maths/flow_field.h), neon's tubes swim in them and its ground
+// ripples with it. Mirrored line for line by shaders/common/noise.glsl; tests/unit/noodles_test.cpp
+// checks the gradient against finite differences.
 #include "maths/hash.h"
 
 #include <glm/common.hpp>
@@ -11,7 +12,7 @@
 
 #include <cstdint>
 
-namespace vitrine::noodles {
+namespace vitrine::maths {
 
 struct NoiseSample {
   float value;
@@ -31,7 +32,7 @@ inline glm::uvec3 latticeCell(glm::vec3 cellCorner) {
 // exact in float, so the CPU reference and every GPU agree on it bit for bit. (The write-up's
 // gradients lie in [0, 1]^3; centring them removes a lattice-aligned bias from the field.)
 inline glm::vec3 latticeGradient(glm::uvec3 cell) {
-  const glm::uvec3 bits = maths::pcg3d(cell) >> 8u;
+  const glm::uvec3 bits = pcg3d(cell) >> 8u;
   return glm::vec3(bits) * (2.0f / 16777216.0f) - 1.0f;
 }
 
@@ -67,4 +68,4 @@ inline NoiseSample gradientNoise(glm::vec3 x) {
   return blend(y0, y1, w.z, dw.z, 2);
 }
 
-}  // namespace vitrine::noodles
+}  // namespace vitrine::maths

@@ -1,6 +1,6 @@
-// Gradient noise with its analytic gradient; mirrors src/scenes/noodles/noise.h.
-#ifndef NOODLES_NOISE_GLSL
-#define NOODLES_NOISE_GLSL
+// Gradient noise with its analytic gradient; mirrors src/maths/noise.h.
+#ifndef VITRINE_NOISE_GLSL
+#define VITRINE_NOISE_GLSL
 #include "common/hash.glsl"
 
 // A shader that must match its CPU reference bit for bit (neon's chains, integrated frame after frame)

@@ -1,9 +1,9 @@
 #pragma once
-// The divergence-free flows the strands follow, in plain C++: curl noise (the curl of three noise
-// potentials) and bitangent noise (the cross product of two noise gradients). Both are divergence
-// free by construction: div curl = 0, and div(grad a x grad b) = 0. Mirrored by
-// shaders/noodles/field.glsl.
-#include "scenes/noodles/noise.h"
+// Two divergence-free flows, in plain C++: curl noise (the curl of three noise potentials) and
+// bitangent noise (the cross product of two noise gradients). Both are divergence free by
+// construction: div curl = 0, and div(grad a x grad b) = 0. The noodles scene's strands follow either;
+// neon's tube heads swim in the curl flow, without lift. Mirrored by shaders/common/flow_field.glsl.
+#include "maths/noise.h"
 
 #include <glm/vec3.hpp>
 
@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <numbers>
 
-namespace vitrine::noodles {
+namespace vitrine::maths {
 
 enum class FieldKind : uint32_t { Curl, Bitangent };
 
@@ -70,4 +70,4 @@ inline glm::vec3 flowVelocity(glm::vec3 p, const FieldSettings& s) {
   return v;
 }
 
-}  // namespace vitrine::noodles
+}  // namespace vitrine::maths

@@ -1,7 +1,7 @@
-// Curl and bitangent noise flows; mirrors src/scenes/noodles/field.h.
-#ifndef NOODLES_FIELD_GLSL
-#define NOODLES_FIELD_GLSL
-#include "noodles/noise.glsl"
+// Curl and bitangent noise flows; mirrors src/maths/flow_field.h.
+#ifndef VITRINE_FLOW_FIELD_GLSL
+#define VITRINE_FLOW_FIELD_GLSL
+#include "common/noise.glsl"
 
 const uint FIELD_CURL = 0u;
 const uint FIELD_BITANGENT = 1u;
