@@ -1,8 +1,5 @@
-#include "scenes/bloom/bloom_scene.h"
-#include "scenes/glass/glass_scene.h"
-#include "scenes/kifs/kifs_scene.h"
-#include "scenes/neon/neon_scene.h"
-#include "scenes/noodles/noodles_scene.h"
+// Looking scenes and their actions up. The table itself, sceneRegistry(), is generated from the list
+// of scenes in cmake/Scenes.cmake (cmake/SceneTables.cmake writes build/generated/scene_registry.cpp).
 #include "scenes/scene.h"
 
 #include "core/printable.h"
@@ -13,17 +10,6 @@
 #include <cmath>
 
 namespace vitrine {
-
-std::span<const SceneInfo> sceneRegistry() {
-  static const SceneInfo scenes[] = {
-      bloom::kSceneInfo,
-      glass::kSceneInfo,
-      neon::kSceneInfo,
-      kifs::kSceneInfo,
-      noodles::kSceneInfo,
-  };
-  return scenes;
-}
 
 std::string checkAction(const SceneInfo& info, const ActionCall& call) {
   const SceneAction* action = info.findAction(call.name);

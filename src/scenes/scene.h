@@ -92,6 +92,7 @@ constexpr SceneInfo sceneInfo(std::string_view name, std::string_view title, int
 // "" when `call` names one of the scene's actions with its arity and finite arguments; else why not.
 std::string checkAction(const SceneInfo& info, const ActionCall& call);
 
+// Every scene, in menu order: generated from the list in cmake/Scenes.cmake.
 std::span<const SceneInfo> sceneRegistry();
 const SceneInfo* findScene(std::string_view name);
 
