@@ -1,6 +1,7 @@
 // The round brilliant's ray queries, interior walk and debug colours; mirrors src/scenes/glass/diamond.h.
-// The facet planes are not constants here: the host fills the DiamondPlanes block with diamondBufferWords
-// (makeDiamond's planes for the stone's diameter), so the CPU reference and the GPU cannot drift apart.
+// The facet planes are not constants here: the host fills the DiamondPlanes block (glass/diamond_blocks.h)
+// with diamondBlock (makeDiamond's planes for the stone's diameter), so the CPU reference and the GPU
+// cannot drift apart.
 // Define DIAMOND_BINDING, the block's binding in set 0, before including this file.
 #ifndef GLASS_DIAMOND_GLSL
 #define GLASS_DIAMOND_GLSL
@@ -9,10 +10,11 @@
 #error "define DIAMOND_BINDING (the binding of the diamond's planes in set 0) before including glass/diamond.glsl"
 #endif
 
+#include "glass/diamond_blocks.h"
 #include "glass/optics.glsl"
 
 // Facets: 0 table, 1-8 bezels, 9-16 stars, 17-32 upper halves, 33-40 pavilion mains, 41-56 lower halves.
-const int DIAMOND_PLANES = 57;
+const int DIAMOND_PLANES = GLASS_DIAMOND_PLANES;
 const int GIRDLE_FACET = 57;
 
 const int WALK_WALKING = 0;
@@ -22,48 +24,45 @@ const int WALK_MISSED = 3;
 
 const float DIAMOND_FAR = 1e30;
 
-layout(std430, set = 0, binding = DIAMOND_BINDING) readonly buffer DiamondPlanes {
-  vec4 diamondPlanes[57];  // xyz: unit outward normal n, w: offset d (n·p = d on the facet)
-  vec4 diamondGirdle;      // girdle radius, girdle half height, table height, culet depth
-};
+layout(std430, set = 0, binding = DIAMOND_BINDING) readonly buffer DiamondPlanes { GlassDiamond diamond; };
 
 // The polytope ∩ girdle cylinder: exact inside, a lower bound outside.
 float diamondSdf(vec3 p) {
-  float d = length(p.xy) - diamondGirdle.x;
-  for (int i = 0; i < DIAMOND_PLANES; ++i) d = max(d, dot(diamondPlanes[i].xyz, p) - diamondPlanes[i].w);
+  float d = length(p.xy) - diamond.girdleRadius;
+  for (int i = 0; i < DIAMOND_PLANES; ++i) d = max(d, dot(diamond.planes[i].xyz, p) - diamond.planes[i].w);
   return d;
 }
 
 // The outward normal of the facet whose term is largest at p: exact, no finite differences.
 vec3 diamondNormal(vec3 p, out int facet) {
-  float best = length(p.xy) - diamondGirdle.x;
+  float best = length(p.xy) - diamond.girdleRadius;
   facet = GIRDLE_FACET;
   for (int i = 0; i < DIAMOND_PLANES; ++i) {
-    float d = dot(diamondPlanes[i].xyz, p) - diamondPlanes[i].w;
+    float d = dot(diamond.planes[i].xyz, p) - diamond.planes[i].w;
     if (d > best) {
       best = d;
       facet = i;
     }
   }
-  return facet == GIRDLE_FACET ? normalize(vec3(p.xy, 0.0)) : diamondPlanes[facet].xyz;
+  return facet == GIRDLE_FACET ? normalize(vec3(p.xy, 0.0)) : diamond.planes[facet].xyz;
 }
 
 // For a point on the stone's surface, the distance along its facet to the nearest edge (the wireframe
 // view): the gap between the largest and second-largest facet terms, over the sine of the angle
 // between those two facets, since the second term grows at that rate along the first facet.
 float diamondEdgeDistance(vec3 p) {
-  float first = length(p.xy) - diamondGirdle.x, second = -DIAMOND_FAR;
+  float first = length(p.xy) - diamond.girdleRadius, second = -DIAMOND_FAR;
   vec3 n1 = vec3(normalize(p.xy + vec2(1e-20)), 0.0), n2 = n1;
   for (int i = 0; i < DIAMOND_PLANES; ++i) {
-    float d = dot(diamondPlanes[i].xyz, p) - diamondPlanes[i].w;
+    float d = dot(diamond.planes[i].xyz, p) - diamond.planes[i].w;
     if (d > first) {
       second = first;
       n2 = n1;
       first = d;
-      n1 = diamondPlanes[i].xyz;
+      n1 = diamond.planes[i].xyz;
     } else if (d > second) {
       second = d;
-      n2 = diamondPlanes[i].xyz;
+      n2 = diamond.planes[i].xyz;
     }
   }
   return (first - second) / max(length(cross(n1, n2)), 1e-3);
@@ -76,7 +75,7 @@ bool diamondEnter(vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
   n = vec3(0.0, 0.0, 1.0);
   facet = -1;
   for (int i = 0; i < DIAMOND_PLANES; ++i) {
-    float along = dot(diamondPlanes[i].xyz, rd), inside = diamondPlanes[i].w - dot(diamondPlanes[i].xyz, ro);
+    float along = dot(diamond.planes[i].xyz, rd), inside = diamond.planes[i].w - dot(diamond.planes[i].xyz, ro);
     if (abs(along) < 1e-8) {
       if (inside < 0.0) return false;  // parallel and outside this plane
       continue;
@@ -92,7 +91,8 @@ bool diamondEnter(vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
     }
   }
   // The girdle cylinder: enter at the near root, leave at the far one.
-  float a = dot(rd.xy, rd.xy), b = dot(ro.xy, rd.xy), c = dot(ro.xy, ro.xy) - diamondGirdle.x * diamondGirdle.x;
+  float a = dot(rd.xy, rd.xy), b = dot(ro.xy, rd.xy);
+  float c = dot(ro.xy, ro.xy) - diamond.girdleRadius * diamond.girdleRadius;
   if (a < 1e-12) {
     if (c > 0.0) return false;
   } else {
@@ -109,7 +109,7 @@ bool diamondEnter(vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
   if (facet < 0 || tIn > tOut || tIn < 0.0) return false;  // missed, or the ray starts inside
   t = tIn;
   vec3 hit = ro + t * rd;
-  n = facet == GIRDLE_FACET ? normalize(vec3(hit.xy, 0.0)) : diamondPlanes[facet].xyz;
+  n = facet == GIRDLE_FACET ? normalize(vec3(hit.xy, 0.0)) : diamond.planes[facet].xyz;
   return true;
 }
 
@@ -119,10 +119,10 @@ bool diamondExit(vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
   n = vec3(0.0, 0.0, 1.0);
   facet = -1;
   for (int i = 0; i < DIAMOND_PLANES; ++i) {
-    float along = dot(diamondPlanes[i].xyz, d);
+    float along = dot(diamond.planes[i].xyz, d);
     if (along <= 1e-8) continue;  // the ray does not leave through this plane
     // A point a rounding error outside the plane leaves at once (an edge hit), not behind itself.
-    float s = max((diamondPlanes[i].w - dot(diamondPlanes[i].xyz, p)) / along, 0.0);
+    float s = max((diamond.planes[i].w - dot(diamond.planes[i].xyz, p)) / along, 0.0);
     if (s < t) {
       t = s;
       facet = i;
@@ -131,7 +131,7 @@ bool diamondExit(vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
   // Leaving the cylinder is always at the far root, also from a point on it after a reflection there.
   float a = dot(d.xy, d.xy);
   if (a > 1e-12) {
-    float b = dot(p.xy, d.xy), c = dot(p.xy, p.xy) - diamondGirdle.x * diamondGirdle.x;
+    float b = dot(p.xy, d.xy), c = dot(p.xy, p.xy) - diamond.girdleRadius * diamond.girdleRadius;
     float s = max((-b + sqrt(max(b * b - a * c, 0.0))) / a, 0.0);
     if (s < t) {
       t = s;
@@ -140,7 +140,7 @@ bool diamondExit(vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
   }
   if (facet < 0 || !(t < DIAMOND_FAR)) return false;
   vec3 hit = p + t * d;
-  n = facet == GIRDLE_FACET ? normalize(vec3(hit.xy, 0.0)) : diamondPlanes[facet].xyz;
+  n = facet == GIRDLE_FACET ? normalize(vec3(hit.xy, 0.0)) : diamond.planes[facet].xyz;
   return true;
 }
 

@@ -12,7 +12,7 @@ const vec3 PROXY_TINT = vec3(1.0, 0.2, 0.6);
 
 void main() {
   Shaded shaded;
-  const bool showProxy = F.environment.w > 0.5;
+  const bool showProxy = F.showProxy != 0u;
   if (!shadeGlass(gl_FragCoord.xy, instance, shaded)) {
     if (!showProxy) discard;
     shaded = Shaded(PROXY_TINT, vec2(0.0), 1e9);  // the rasterised silhouette around the glass

@@ -3,23 +3,27 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/hash.glsl"
 #include "glass/optics.glsl"
+#include "glass/probe_blocks.h"
 
 layout(local_size_x = 64) in;
-layout(binding = 0, std430) readonly buffer Inputs { vec4 inputs[]; };  // lambda, n_d, V_d, phase in [0, 1)
-layout(binding = 1, std430) writeonly buffer Outputs { vec4 outputs[]; };  // four per input, see main
-layout(push_constant) uniform Push {
-  vec4 sellmeierB;  // xyz: one material's Sellmeier law
-  vec4 sellmeierC;
-  uint seed;
-} pc;
+layout(binding = 0, std430) readonly buffer Inputs { GlassOpticsProbeInput inputs[]; };
+layout(binding = 1, std430) writeonly buffer Results { GlassOpticsProbeResult results[]; };  // one per input
+layout(push_constant) uniform Push { GlassOpticsProbePush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= inputs.length()) return;
-  float lambda = inputs[i].x, nd = inputs[i].y, vd = inputs[i].z, phase = inputs[i].w;
-  outputs[4 * i + 0] = vec4(cauchyIor(lambda, nd, vd), sellmeierIor(lambda, pc.sellmeierB.xyz, pc.sellmeierC.xyz),
-                            fresnelDielectric(phase, nd), fresnelSchlick(phase, nd));
-  outputs[4 * i + 1] = vec4(cieXyz(lambda), stratifiedLambda(int(i % 16u), 16, phase));
-  outputs[4 * i + 2] = vec4(spectralWeight(lambda), spectralPhase(uvec2(i, i / 7u), i, pc.seed, true));
-  outputs[4 * i + 3] = vec4(filmic(vec3(phase, 4.0 * phase, 16.0 * phase)), heroLambda(i, pc.seed, true));
+  const GlassOpticsProbeInput at = inputs[i];
+  GlassOpticsProbeResult r;
+  r.cauchy = cauchyIor(at.lambda, at.nd, at.vd);
+  r.sellmeier = sellmeierIor(at.lambda, pc.sellmeierB, pc.sellmeierC);
+  r.dielectric = fresnelDielectric(at.phase, at.nd);
+  r.schlick = fresnelSchlick(at.phase, at.nd);
+  r.cie = cieXyz(at.lambda);
+  r.stratified = stratifiedLambda(int(i % 16u), 16, at.phase);
+  r.weight = spectralWeight(at.lambda);
+  r.spectral = spectralPhase(uvec2(i, i / 7u), i, pc.seed, true);
+  r.toneMapped = filmic(vec3(at.phase, 4.0 * at.phase, 16.0 * at.phase));
+  r.hero = heroLambda(i, pc.seed, true);
+  results[i] = r;
 }

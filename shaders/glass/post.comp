@@ -5,14 +5,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/color.glsl"
 #include "glass/optics.glsl"
+#include "glass/pass_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D accumulated;
 layout(set = 0, binding = 1, rgba16f) uniform writeonly image2D target;
-layout(push_constant) uniform Push {
-  uint fxaa;
-  uint filmicCurve;
-} pc;
+layout(push_constant) uniform Push { GlassPostPush pc; };
 
 vec3 tone(vec3 c) { return pc.filmicCurve != 0u ? filmic(max(c, 0.0)) : clamp(c, 0.0, 1.0); }
 vec3 at(vec2 uv) { return tone(textureLod(accumulated, uv, 0.0).rgb); }

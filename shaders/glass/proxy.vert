@@ -5,7 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "glass/instance.glsl"
 
-layout(std430, set = 0, binding = 4) readonly buffer Hull { vec4 hull[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Hull { GlassHullVertex hull[]; };
 layout(location = 0) flat out int instance;
 
 void main() {
@@ -14,12 +14,12 @@ void main() {
   instance = gl_InstanceIndex;
   vec3 local;
   if (GLASS_SHAPE == SHAPE_DIAMOND) {
-    local = hull[gl_VertexIndex].xyz;
+    local = hull[gl_VertexIndex].position;
   } else {
     const int corner = faces[gl_VertexIndex];
     // A hair of slack: the sphere trace stops just outside the surface.
     local = (vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1) * 2.0 - 1.0) * (shapeHalfExtent(glassDims()) + 1.0);
   }
-  vec3 world = vec3(F.centres[instance].xy, 0.0) + transpose(mat3(F.rotation)) * local;
+  vec3 world = vec3(F.instances[instance].centre, 0.0) + transpose(mat3(F.rotation)) * local;
   gl_Position = F.viewProjection * vec4(world, 1.0);
 }

@@ -7,6 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/color.glsl"
 #include "glass/frame.glsl"
+#include "glass/pass_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 1) uniform sampler2D backdrop;
@@ -15,24 +16,20 @@ layout(set = 0, binding = 3, rgba16f) uniform readonly image2D colour;
 layout(set = 0, binding = 4, rg16f) uniform readonly image2D motion;
 layout(set = 0, binding = 5) uniform sampler2D previous;
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D history;
-layout(push_constant) uniform Push {
-  float alpha;
-  uint valid;
-  uint reproject;
-} pc;
+layout(push_constant) uniform Push { GlassResolvePush pc; };
 
 
 vec3 background(vec2 pixel) {
-  if (F.frameInfo.w == 0) return textureLod(backdrop, pixel / F.view.zw, 0.0).rgb;
+  if (F.environment == 0u) return textureLod(backdrop, pixel / F.viewPixels, 0.0).rgb;
   // A skybox: the view direction of a perspective camera, also under the orthographic one.
   vec3 p = pixelToWorld(pixel);
-  float camZ = F.camera.w > 0.5 ? 0.5 * F.view.y / tan(radians(45.0) * 0.5) : F.camera.z;
-  return textureLod(panorama, equirectUv(normalize(p - vec3(0.0, 0.0, camZ))), 0.0).rgb * F.environment.x;
+  float camZ = F.orthographic != 0u ? 0.5 * F.viewWorld.y / tan(radians(45.0) * 0.5) : F.eye.z;
+  return textureLod(panorama, equirectUv(normalize(p - vec3(0.0, 0.0, camZ))), 0.0).rgb * F.exposure;
 }
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(F.view.zw)))) return;
+  if (any(greaterThanEqual(p, ivec2(F.viewPixels)))) return;
   const vec2 centre = vec2(p) + 0.5;
   vec4 sample_ = imageLoad(colour, p);
   vec2 moved = vec2(0.0);
@@ -42,10 +39,10 @@ void main() {
   const float y = luminance(current);
 
   vec4 result = vec4(current, y * y);
-  if (pc.valid != 0u) {
+  if (pc.historyValid != 0u) {
     const vec2 from = centre + (pc.reproject != 0u ? moved : vec2(0.0));
-    if (all(greaterThanEqual(from, vec2(0.0))) && all(lessThan(from, F.view.zw))) {
-      vec4 past = textureLod(previous, from / F.view.zw, 0.0);
+    if (all(greaterThanEqual(from, vec2(0.0))) && all(lessThan(from, F.viewPixels))) {
+      vec4 past = textureLod(previous, from / F.viewPixels, 0.0);
       const float mean = luminance(past.rgb);
       const float sigma = sqrt(max(past.a - mean * mean, 0.0));
       const float reach = 3.0 * sigma + 0.05 * max(mean, y) + 0.01;

@@ -14,28 +14,32 @@ layout(set = 0, binding = 1) uniform sampler2D backdrop;
 layout(set = 0, binding = 2) uniform sampler2D panorama;
 
 
-const int OPTICS_PHYSICAL = 1;
+const int OPTICS_PHYSICAL = 1;  // GlassFrame::optics
+// GlassFrame::diamondDebug
+const int DIAMOND_DEBUG_WIREFRAME = 1;
+const int DIAMOND_DEBUG_FACETS = 2;
+const int DIAMOND_DEBUG_TIR = 3;
 
-bool physical() { return F.spectral.w == OPTICS_PHYSICAL; }
+bool physical() { return F.optics == OPTICS_PHYSICAL; }
 
 float iorAt(float lambda) {
-  if (F.spectralExtra.z > 0.5) return sellmeierIor(lambda, F.sellmeierB.xyz, F.sellmeierC.xyz);
-  return cauchyIor(lambda, F.glass.x, F.glass.y);
+  if (F.sellmeier != 0u) return sellmeierIor(lambda, F.sellmeierB, F.sellmeierC);
+  return cauchyIor(lambda, F.ior, F.abbe);
 }
 
 // What a ray leaving the glass at world point o along world direction d sees.
 vec3 sceneAlong(vec3 o, vec3 d, float lod) {
-  if (F.frameInfo.w != 0) return textureLod(panorama, equirectUv(d), 0.0).rgb * F.environment.x;
+  if (F.environment != 0u) return textureLod(panorama, equirectUv(d), 0.0).rgb * F.exposure;
   // The photo hangs `depth` behind the glass, screen-aligned: a ray that does not bend lands on the
   // texel of its own pixel. Rays heading back toward the camera see its mirror image.
   d.z = -max(abs(d.z), 1e-3);
-  float t = (-F.glass.w - o.z) / d.z;
+  float t = (-F.photoDepth - o.z) / d.z;
   vec2 pixel = worldToPixel(o + d * t);
-  return textureLod(backdrop, pixel / F.view.zw, lod).rgb;
+  return textureLod(backdrop, pixel / F.viewPixels, lod).rgb;
 }
 
 // The seed's exit: the refracted direction leaned back toward the view ray by `strength`.
-vec3 seen(vec3 view, vec3 exitDir) { return physical() ? exitDir : normalize(mix(view, exitDir, F.glass.z)); }
+vec3 seen(vec3 view, vec3 exitDir) { return physical() ? exitDir : normalize(mix(view, exitDir, F.strength)); }
 
 // The original's LOD: grazing-angle minification plus the turn of a rounded rim's normal.
 float exitLod(float cosT, vec3 normal) {
@@ -52,15 +56,15 @@ struct Shaded {
 
 // One pixel through one instance; false when its ray misses the glass.
 bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
-  const ShapeDims dims = glassDims();
+  const GlassShapeDims dims = glassDims();
   const mat3 toObject = mat3(F.rotation);
   const mat3 toWorld = transpose(toObject);
-  const vec3 centre = vec3(F.centres[instance].xy, 0.0);
+  const vec3 centre = vec3(F.instances[instance].centre, 0.0);
   const uvec2 pixel = uvec2(fragCoord);
 
   vec2 sub = fragCoord;
-  if (F.frameInfo.z == 2)  // TAA: a per-pixel, per-frame sub-pixel offset, undone by the resolve's reprojection
-    sub += vec2(hash01(uvec3(pixel, uint(F.frameInfo.x) * 2u)), hash01(uvec3(pixel, uint(F.frameInfo.x) * 2u + 1u))) - 0.5;
+  if (F.taa != 0u)  // a per-pixel, per-frame sub-pixel offset, undone by the resolve's reprojection
+    sub += vec2(hash01(uvec3(pixel, F.frame * 2u)), hash01(uvec3(pixel, F.frame * 2u + 1u))) - 0.5;
   vec3 rayOrigin, rayDir;
   primaryRay(sub, rayOrigin, rayDir);
   const vec3 ro = toObject * (rayOrigin - centre);
@@ -75,17 +79,17 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
   shaded.eyeDistance = distance(rayOrigin, hitWorld);
 
   // Where this surface point was a frame ago: last frame's rotation and centre.
-  const vec3 previousWorld = vec3(F.centres[instance].zw, 0.0) + transpose(mat3(F.previousRotation)) * p1;
+  const vec3 previousWorld = vec3(F.instances[instance].previousCentre, 0.0) + transpose(mat3(F.previousRotation)) * p1;
   shaded.motion = worldToPixel(previousWorld) - worldToPixel(hitWorld);
 
-  if (GLASS_SHAPE == SHAPE_DIAMOND && F.shape.w == 2) {
+  if (GLASS_SHAPE == SHAPE_DIAMOND && F.diamondDebug == DIAMOND_DEBUG_FACETS) {
     shaded.colour = facetColour(facet);
     return true;
   }
 
-  const int n = F.spectral.x;
-  const bool approx = F.spectral.y == 1;
-  const float phase = spectralPhase(pixel, uint(F.frameInfo.x), uint(F.frameInfo.y), F.spectral.z != 0);
+  const int n = F.wavelengths;
+  const bool approx = F.approxExits != 0u;
+  const float phase = spectralPhase(pixel, F.frame, F.seed, F.jitter != 0u);
   const float cosI = -dot(rd, n1);
   const vec3 reflected = toWorld * reflectDir(rd, n1);
 
@@ -96,7 +100,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
     bool ok;
     float t;
     int exitFacet;
-    const vec3 heroDir = refractDir(rd, n1, iorAt(F.spectralExtra.x), ok);
+    const vec3 heroDir = refractDir(rd, n1, iorAt(F.heroLambda), ok);
     heroExit = ok && shapeExit(dims, p1, heroDir, t, heroNormal, exitFacet);
     heroPoint = p1 + heroDir * t;
   }
@@ -122,7 +126,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
     vec3 transmitted = reflection;  // a ray that cannot enter (never for eta > 1) shows the reflection
 
     if (ok && GLASS_SHAPE == SHAPE_DIAMOND && !approx) {
-      DiamondWalk walk = diamondWalkStart(p1, inside, 1.0, F.shape.z);
+      DiamondWalk walk = diamondWalkStart(p1, inside, 1.0, F.bounces);
       vec3 exitDir;
       float exitWeight;
       vec3 light = vec3(0.0);
@@ -138,7 +142,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
       float trapped = max(1.0 - emitted, 0.0);
       if (trapped > 0.0) {
         vec3 fallback = physical() ? sceneAlong(centre + toWorld * walk.p, toWorld * walk.d, 0.0)
-                                   : (F.frameInfo.w != 0 ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
+                                   : (F.environment != 0u ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
         light += trapped * fallback;
       }
       transmitted = light;
@@ -192,11 +196,12 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
   }
   vec3 result = sum / max(weights, vec3(1e-6));
 
-  if (GLASS_SHAPE == SHAPE_DIAMOND && F.shape.w == 1) {  // facet edges about a pixel and a half wide
-    const float worldPerPixel = F.view.x / F.view.z;
+  // Facet edges about a pixel and a half wide.
+  if (GLASS_SHAPE == SHAPE_DIAMOND && F.diamondDebug == DIAMOND_DEBUG_WIREFRAME) {
+    const float worldPerPixel = F.viewWorld.x / F.viewPixels.x;
     result = mix(result, vec3(1.0), 1.0 - smoothstep(0.5, 1.5, diamondEdgeDistance(p1) / worldPerPixel));
   }
-  if (GLASS_SHAPE == SHAPE_DIAMOND && F.shape.w == 3) {
+  if (GLASS_SHAPE == SHAPE_DIAMOND && F.diamondDebug == DIAMOND_DEBUG_TIR) {
     if (missed) result = vec3(1.0, 0.55, 0.0);
     else if (exhausted) result = vec3(1.0, 0.3, 0.75);
   }

@@ -5,6 +5,7 @@
 #define GLASS_SHAPES_GLSL
 
 #include "glass/diamond.glsl"
+#include "glass/shape_dims.h"
 
 const int SHAPE_PILL = 0;
 const int SHAPE_PRISM = 1;
@@ -18,17 +19,7 @@ const float NORMAL_STEP = 1e-4;    // central-difference step × scale (normals,
 const float SHAPE_FAR = 1e30;
 const float TWO_PI = 6.28318530718;
 
-// 48 bytes in std140 and std430 alike, as the C++ ShapeDims.
-struct ShapeDims {
-  vec4 sizeEdge;  // xyz: size along x, y, z; w: edge rounding radius (pill, cube, plate)
-  vec4 wave;      // plate: amplitude, wavelength, phase; w: 1 for smooth curvature (pill, cube, plate)
-  int kind;       // SHAPE_*
-  int pad0;
-  int pad1;
-  int pad2;
-};
-
-float shapeScale(ShapeDims s) { return max(s.sizeEdge.x, max(s.sizeEdge.y, s.sizeEdge.z)); }
+float shapeScale(GlassShapeDims s) { return max(s.sizeEdge.x, max(s.sizeEdge.y, s.sizeEdge.z)); }
 
 // Smooth curvature: L4 squircle rims, their radius compensated so that they cut as much off the corner's
 // diagonal as a circle of the edge radius (shapes.h derives k).
@@ -110,7 +101,7 @@ float sdPlate(vec3 p, vec4 sizeEdge, vec4 wave) {
   return sdRoundedBox(q, halfSize, r, squircle) / plateLipschitz(wave);
 }
 
-float shapeSdf(ShapeDims s, vec3 p) {
+float shapeSdf(GlassShapeDims s, vec3 p) {
   if (s.kind == SHAPE_PILL) return sdPill(p, s.sizeEdge.xyz, s.sizeEdge.w, s.wave.w > 0.5);
   if (s.kind == SHAPE_PRISM) return sdPrism(p, s.sizeEdge.xyz);
   if (s.kind == SHAPE_CUBE) return sdCube(p, s.sizeEdge, s.wave.w > 0.5);
@@ -119,7 +110,7 @@ float shapeSdf(ShapeDims s, vec3 p) {
 }
 
 // Outward unit normal: central differences; the diamond's exact facet normal.
-vec3 shapeNormal(ShapeDims s, vec3 p) {
+vec3 shapeNormal(GlassShapeDims s, vec3 p) {
   if (s.kind == SHAPE_DIAMOND) {
     int facet;
     return diamondNormal(p, facet);
@@ -133,11 +124,12 @@ vec3 shapeNormal(ShapeDims s, vec3 p) {
 }
 
 // Half size of the object-space box around the shape: the proxy box.
-vec3 shapeHalfExtent(ShapeDims s) {
+vec3 shapeHalfExtent(GlassShapeDims s) {
   vec3 halfSize = 0.5 * s.sizeEdge.xyz;
   if (s.kind == SHAPE_PILL) return vec3(max(halfSize.x, halfSize.y), halfSize.y, halfSize.z);
   if (s.kind == SHAPE_PLATE) return vec3(halfSize.xy, halfSize.z + abs(s.wave.x));
-  if (s.kind == SHAPE_DIAMOND) return vec3(diamondGirdle.xx, max(diamondGirdle.z, diamondGirdle.w));
+  if (s.kind == SHAPE_DIAMOND)
+    return vec3(diamond.girdleRadius, diamond.girdleRadius, max(diamond.tableHeight, diamond.culetDepth));
   return halfSize;
 }
 
@@ -173,7 +165,7 @@ float slabExit(float p, float d, float halfSize) {
 }
 
 // Newton on f(t) = sdf(p + t·d) from a t at or past the surface: monotone onto the exit for a convex f.
-float refineExit(ShapeDims s, vec3 p, vec3 d, float t, int steps) {
+float refineExit(GlassShapeDims s, vec3 p, vec3 d, float t, int steps) {
   float h = NORMAL_STEP * shapeScale(s);
   for (int i = 0; i < steps; ++i) {
     float f = shapeSdf(s, p + t * d);
@@ -210,7 +202,7 @@ vec4 prismPlane(vec3 size, int i) {
 
 // Front hit from outside: sphere tracing from the bounding box (analytic for the diamond). facet: the
 // diamond's entry facet, -1 for the other shapes.
-bool shapeEnter(ShapeDims s, vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
+bool shapeEnter(GlassShapeDims s, vec3 ro, vec3 rd, out float t, out vec3 n, out int facet) {
   if (s.kind == SHAPE_DIAMOND) return diamondEnter(ro, rd, t, n, facet);
   facet = -1;
   t = 0.0;
@@ -231,7 +223,7 @@ bool shapeEnter(ShapeDims s, vec3 ro, vec3 rd, out float t, out vec3 n, out int 
 }
 
 // Back exit from inside along unit d, analytic for every shape; n is the outward unit normal at the exit.
-bool shapeExit(ShapeDims s, vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
+bool shapeExit(GlassShapeDims s, vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
   facet = -1;
   n = vec3(0.0, 0.0, 1.0);
   vec3 size = s.sizeEdge.xyz;

@@ -12,14 +12,14 @@ layout(set = 0, binding = 5, rg16f) uniform writeonly image2D motionOut;
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(F.view.zw)))) return;
+  if (any(greaterThanEqual(p, ivec2(F.viewPixels)))) return;
   const vec2 fragCoord = vec2(p) + 0.5;
-  const bool showProxy = F.environment.w > 0.5;
+  const bool showProxy = F.showProxy != 0u;
   Shaded best = Shaded(vec3(0.0), vec2(0.0), 1e30);
   bool covered = false, inRect = false;
-  for (int i = 0; i < F.shape.y; ++i) {
-    const vec4 rect = F.rects[i];
-    if (any(lessThan(fragCoord, rect.xy)) || any(greaterThan(fragCoord, rect.zw))) continue;
+  for (int i = 0; i < F.instanceCount; ++i) {
+    const vec2 rectMin = F.instances[i].rectMin, rectMax = F.instances[i].rectMax;
+    if (any(lessThan(fragCoord, rectMin)) || any(greaterThan(fragCoord, rectMax))) continue;
     inRect = true;
     Shaded shaded;
     if (shadeGlass(fragCoord, i, shaded) && shaded.eyeDistance < best.eyeDistance) {

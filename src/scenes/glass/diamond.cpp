@@ -7,6 +7,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -152,10 +153,10 @@ std::vector<glm::vec3> diamondFacetCorners(const DiamondGeometry& g, int facet) 
   return {};
 }
 
-std::vector<glm::vec4> diamondBufferWords(const DiamondGeometry& g) {
-  std::vector<glm::vec4> words(g.planes.begin(), g.planes.end());
-  words.emplace_back(g.girdleRadius, g.girdleHalfHeight, g.tableHeight, g.culetDepth);
-  return words;
+shader::GlassDiamond diamondBlock(const DiamondGeometry& g) {
+  shader::GlassDiamond block{{}, g.girdleRadius, g.girdleHalfHeight, g.tableHeight, g.culetDepth};
+  std::copy(g.planes.begin(), g.planes.end(), block.planes);
+  return block;
 }
 
 std::vector<glm::vec3> diamondHullTriangles(const DiamondGeometry& g) {

@@ -2,11 +2,13 @@
 // The round brilliant diamond: its 57 facet planes derived from Tolkowsky-ideal proportions, a tight convex
 // hull for the rasterised proxy, the ray-polytope intersections and the interior bounce walk (the sparkle).
 // shaders/glass/diamond.glsl mirrors the functions below; the shader reads the planes from a storage buffer
-// filled with diamondBufferWords, so the host and the GPU use the same numbers.
+// filled with diamondBlock, so the host and the GPU use the same numbers.
 //
 // Object space: the stone's axis is z, the table on top (+z), the girdle band centred on z = 0.
 // Facet indices: 0 table, 1-8 bezels, 9-16 stars, 17-32 upper girdle halves, 33-40 pavilion mains,
 // 41-56 lower girdle halves; kGirdleFacet (57) is the girdle cylinder, which is no plane.
+#include "shaders/glass/diamond_blocks.h"
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -16,7 +18,7 @@
 
 namespace vitrine::glass {
 
-inline constexpr int kDiamondPlanes = 57;
+inline constexpr int kDiamondPlanes = GLASS_DIAMOND_PLANES;
 inline constexpr int kGirdleFacet = 57;
 
 // The proportions (angles are facet inclinations to the girdle plane, in degrees).
@@ -61,9 +63,8 @@ const DiamondGeometry& cachedDiamond(float diameter);
 // The points each facet is constructed through (its corners; the upper halves' girdle corner lies on the cylinder).
 std::vector<glm::vec3> diamondFacetCorners(const DiamondGeometry& g, int facet);
 
-// The layout of the shader's DiamondPlanes block (std430): 57 planes, then (radius, halfHeight, tableHeight,
-// culetDepth) of the girdle. 58 vec4 = 928 bytes.
-std::vector<glm::vec4> diamondBufferWords(const DiamondGeometry& g);
+// The shader's DiamondPlanes block (shaders/glass/diamond_blocks.h): the 57 planes and the girdle.
+shader::GlassDiamond diamondBlock(const DiamondGeometry& g);
 
 // A convex hull around the stone for the proxy draw (78 triangles, 3.4 % more volume than the stone): the table
 // octagon, the star points, one 16-gon ring around the girdle band, the lower-half tips and the culet.

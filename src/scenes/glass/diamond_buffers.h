@@ -1,25 +1,30 @@
 #pragma once
-// The diamond on the GPU: its facet planes, which every spectral program reads (diamond.glsl), and its
-// hull's triangles, the raster path's proxy. Made on the first frame and again when its size changes.
-#include "gpu/resources.h"
-#include "scenes/scene.h"
+// The diamond on the GPU (shaders/glass/diamond_blocks.h): its facet planes, which every spectral
+// program reads (diamond.glsl), and its hull's triangles, the raster path's proxy. Declared with the
+// scene's resources and redeclared when the stone's size changes, so the host uploads them as the
+// next frame begins and retires the old ones.
+#include "gpu/frame_resources.h"
 
-#include <optional>
+#include <cstdint>
 
 namespace vitrine::glass {
 
 class DiamondBuffers {
  public:
-  void update(const FrameContext& frame, float size);
+  DiamondBuffers(gpu::FrameResources& resources, float size);
+  // A stone of girdle diameter `size`: both buffers again when it differs from the last (from the
+  // scene's update(), not while recording).
+  void resize(float size);
 
-  gpu::Buffer& planes() { return *planes_; }
-  gpu::Buffer& hull() { return *hull_; }
+  gpu::BufferHandle planes() const { return planes_; }  // a shader::GlassDiamond
+  gpu::BufferHandle hull() const { return hull_; }      // shader::GlassHullVertex, hullVertices() of them
   uint32_t hullVertices() const { return hullVertices_; }
 
  private:
-  std::optional<gpu::Buffer> planes_, hull_;
+  gpu::FrameResources& resources_;
+  gpu::BufferHandle planes_, hull_;
   uint32_t hullVertices_ = 0;
-  float builtSize_ = 0.0f;
+  float size_ = 0.0f;
 };
 
 }  // namespace vitrine::glass

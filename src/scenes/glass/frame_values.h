@@ -1,10 +1,10 @@
 #pragma once
-// The frame block's values (frame_block.h), worked out on the CPU once a frame: the camera, the glass
-// and its dispersion, the shape, its rotation now and last frame (for the motion vectors), and each
-// instance's place with the pixels its turned box covers, which the compute path tests.
-#include "scenes/glass/frame_block.h"
+// The frame block's values (shaders/glass/frame_block.h), worked out on the CPU once a frame: the
+// camera, the glass and its dispersion, the shape, its rotation now and last frame (for the motion
+// vectors), and each instance's place with the pixels its turned box covers, which the compute path tests.
 #include "scenes/glass/instances.h"
 #include "scenes/glass/settings.h"
+#include "shaders/glass/frame_block.h"
 
 #include <vulkan/vulkan.h>
 
@@ -21,6 +21,6 @@ struct FrameMoment {
   bool zHeld = false;  // three wavelengths without jitter
 };
 
-FrameBlock frameBlock(const Settings& settings, const FrameMoment& moment, const Instances& instances);
+shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& moment, const Instances& instances);
 
 }  // namespace vitrine::glass

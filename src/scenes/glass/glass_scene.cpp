@@ -43,7 +43,8 @@ class GlassScene final : public Scene {
         resolve_(context.programs),
         post_(context.programs),
         screen_(context.resources),
-        pictures_(context) {
+        pictures_(context),
+        diamond_(context.resources, Settings{}.diamondSize) {
     // Laid out before the first resize, in a square view: the opening places the golden frames hold.
     instances_.layOut(settings_.shape, viewSize(moment_.extent));
   }
@@ -123,6 +124,7 @@ void GlassScene::update(const FrameInput& input) {
   instances_.drag(input.cursor, settings_.shape, shapeDims(settings_, moment_.time), viewSize(moment_.extent));
   takeDroppedFiles(input, settings_);
 
+  diamond_.resize(settings_.diamondSize);
   const PictureTextures::Loaded loaded = pictures_.update(settings_);
   if (loaded.photo) backdropDirty_ = true;
   if (loaded.panorama) resetHistory_ = true;
@@ -137,7 +139,6 @@ void GlassScene::update(const FrameInput& input) {
 }
 
 void GlassScene::record(const FrameContext& frame) {
-  diamond_.update(frame, settings_.diamondSize);
   gpu::Image& backdrop = frame.image(screen_.backdrop);
   if (backdropDirty_) {
     const auto pass = frame.pass("glass backdrop");

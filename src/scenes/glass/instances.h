@@ -2,7 +2,7 @@
 // Where the glass instances stand, in world units (world_view.h: the view's centre at 0, y up): their
 // opening places, a seeded shuffle, and the drag that carries the one under the cursor. Each keeps
 // last frame's centre as well, from which the resolve pass reprojects the history.
-#include "scenes/glass/frame_block.h"
+#include "scenes/glass/scene_shape.h"
 #include "scenes/glass/shapes.h"
 #include "scenes/scene.h"
 

@@ -1,26 +1,12 @@
 #include "scenes/glass/resolve_pass.h"
 
+#include "shaders/glass/pass_push.h"
+
 #include <algorithm>
 
 namespace vitrine::glass {
-namespace {
 
-struct ResolvePush {
-  float alpha;     // weight of this frame
-  uint32_t valid;  // the history holds last frame
-  uint32_t reproject;
-  uint32_t pad;
-};
-
-}  // namespace
-
-ResolvePass::ResolvePass(gpu::ProgramLibrary& programs)
-    : program_(programs, "glass/resolve.comp",
-               {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                sizeof(ResolvePush)}) {}
+ResolvePass::ResolvePass(gpu::ProgramLibrary& programs) : program_(programs, "glass/resolve.comp") {}
 
 void ResolvePass::record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
                          const Accumulation& accumulation, VkExtent2D extent) const {
@@ -40,17 +26,19 @@ void ResolvePass::record(const FrameContext& frame, const FrameSources& sources,
                       : accumulation.stopWorld ? std::max(1.0f / float(std::max(accumulation.pausedFrames, 1u)),
                                                           1.0f / 256.0f)
                                                : accumulation.historyAlpha;
-  const ResolvePush push{alpha, valid ? 1u : 0u, accumulation.stopWorld ? 0u : 1u, 0u};
+  const shader::GlassResolvePush push{
+      .alpha = alpha, .historyValid = valid ? 1u : 0u, .reproject = accumulation.stopWorld ? 0u : 1u};
   program_.bind(frame.cmd);
   program_.constants(frame.cmd, push);
-  program_.push(frame.cmd, sources.bindings(frame.device)
-                               .storageImage(colour.view())
-                               .storageImage(motion.view())
-                               .sampledImage(previous.view(), frame.device.sampler(gpu::Device::Filter::Linear,
-                                                                                   gpu::Device::Address::Clamp),
-                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                               .storageImage(current.view()));
-  program_.dispatchOver(frame.cmd, extent, {8, 8});
+  program_.push(frame.cmd,
+                sources.bindings(frame.device)
+                    .storageImage("colour", colour.view())
+                    .storageImage("motion", motion.view())
+                    .sampledImage("previous", previous.view(),
+                                  frame.device.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                    .storageImage("history", current.view()));
+  program_.dispatchOver(frame.cmd, extent);
 }
 
 }  // namespace vitrine::glass

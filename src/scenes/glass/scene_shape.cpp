@@ -1,7 +1,5 @@
 #include "scenes/glass/scene_shape.h"
 
-#include "scenes/glass/frame_block.h"
-
 namespace vitrine::glass {
 
 ShapeDims shapeDims(const Settings& settings, double time) {

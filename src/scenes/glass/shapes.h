@@ -5,6 +5,8 @@
 // Everything works in object space: the shape centred at the origin, in world units (the view is 1073 units
 // tall). A shape's rotation R maps world to object, p_obj = R·(p_world - centre); the shader moves rays into
 // object space once, so nothing here sees the rotation.
+#include "shaders/glass/shape_dims.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -20,14 +22,9 @@ namespace vitrine::glass {
 
 enum class ShapeKind : int { Pill = 0, Prism = 1, Cube = 2, Plate = 3, Diamond = 4 };
 
-// One shape's dimensions, laid out for std140 and std430 alike (48 bytes; GLSL struct ShapeDims).
-struct ShapeDims {
-  glm::vec4 sizeEdge{};  // xyz: the size along x, y, z; w: the edge rounding radius (pill, cube, plate)
-  glm::vec4 wave{};      // plate: amplitude, wavelength, phase (radians); w: 1 for smooth curvature (pill, cube, plate)
-  int kind = 0;          // a ShapeKind
-  int pad[3] = {};
-};
-static_assert(sizeof(ShapeDims) == 48 && offsetof(ShapeDims, wave) == 16 && offsetof(ShapeDims, kind) == 32);
+// One shape's dimensions, as the shaders take them (shaders/glass/shape_dims.h); make them with the
+// functions below, which leave the padding zero.
+using ShapeDims = shader::GlassShapeDims;
 
 // Pill: a rounded rectangle in XY (length along x, height along y, corners of radius min(edge, H/2): a stadium
 // once edge reaches half the height), thickness along z. smooth: the rim is an L4 squircle (below).

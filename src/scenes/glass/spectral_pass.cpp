@@ -2,20 +2,12 @@
 
 #include "scenes/glass/scene_shape.h"
 
-#include <vector>
-
 namespace vitrine::glass {
 namespace {
 
-// The spectral programs' bindings: the frame block, the backdrop and the panorama, the diamond's planes,
-// then the colour and motion outputs (compute) or the hull (raster). The shape is specialised.
-gpu::ProgramLayout spectralLayout(ShapeKind shape, bool compute) {
-  std::vector<VkDescriptorType> bindings{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-  if (compute) bindings.insert(bindings.end(), {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
-  else bindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  return {bindings, 0, {int32_t(shape)}};
-}
+// Each shape's programs are the same shaders specialised (instance.glsl's GLASS_SHAPE), so that a
+// cube's pipeline carries no diamond code.
+gpu::ProgramOptions specialisedFor(ShapeKind shape) { return {.specialization = {int32_t(shape)}}; }
 
 gpu::GraphicsState proxyState() {
   gpu::GraphicsState state;
@@ -32,25 +24,26 @@ gpu::GraphicsState proxyState() {
 const gpu::ComputeProgram& SpectralShadePass::computeProgram(ShapeKind shape) {
   auto& program = compute_[size_t(shape)];
   if (!program)
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp", spectralLayout(shape, true));
+    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp", specialisedFor(shape));
   return *program;
 }
 
 const gpu::GraphicsProgram& SpectralShadePass::rasterProgram(ShapeKind shape) {
   auto& program = raster_[size_t(shape)];
-  if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, proxyState(), spectralLayout(shape, false));
+  if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, proxyState(), specialisedFor(shape));
   return *program;
 }
 
 void SpectralShadePass::record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
-                               DiamondBuffers& diamond, SpectralPass path, ShapeKind shape, VkExtent2D extent) {
+                               const DiamondBuffers& diamond, SpectralPass path, ShapeKind shape, VkExtent2D extent) {
   const bool compute = path == SpectralPass::Compute;
   const gpu::ImageUse sampled = compute ? gpu::use::ComputeSample : gpu::use::FragmentSample;
   frame.transition(sources.backdrop, sampled);
   frame.transition(sources.panorama, sampled);
-  frame.transition(diamond.planes(), compute ? gpu::use::ComputeReadBuffer : gpu::use::FragmentReadBuffer);
+  gpu::Buffer& planes = frame.resources.current(diamond.planes());
+  frame.transition(planes, compute ? gpu::use::ComputeReadBuffer : gpu::use::FragmentReadBuffer);
   gpu::Bindings bindings = sources.bindings(frame.device);
-  bindings.storageBuffer(diamond.planes().handle());
+  bindings.storageBuffer("DiamondPlanes", planes.handle());
   gpu::Image& colour = frame.image(images.colour);
   gpu::Image& motion = frame.image(images.motion);
   if (compute) {
@@ -58,18 +51,19 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
     frame.transition(motion, gpu::use::ComputeWrite);
     const gpu::ComputeProgram& program = computeProgram(shape);
     program.bind(frame.cmd);
-    program.push(frame.cmd, bindings.storageImage(colour.view()).storageImage(motion.view()));
-    program.dispatchOver(frame.cmd, extent, {8, 8});
+    program.push(frame.cmd, bindings.storageImage("colourOut", colour.view()).storageImage("motionOut", motion.view()));
+    program.dispatchOver(frame.cmd, extent);
     return;
   }
-  frame.transition(diamond.hull(), gpu::use::VertexReadBuffer);
+  gpu::Buffer& hull = frame.resources.current(diamond.hull());
+  frame.transition(hull, gpu::use::VertexReadBuffer);
   gpu::RenderingDesc desc;
   desc.colors = {{&colour, VkClearColorValue{}}, {&motion, VkClearColorValue{}}};
   desc.depth = gpu::DepthAttachment{&frame.image(images.depth)};
   const auto rendering = frame.rendering(desc);
   const gpu::GraphicsProgram& program = rasterProgram(shape);
   program.bind(frame.cmd);
-  program.push(frame.cmd, bindings.storageBuffer(diamond.hull().handle()));
+  program.push(frame.cmd, bindings.storageBuffer("Hull", hull.handle()));
   const uint32_t vertices = shape == ShapeKind::Diamond ? diamond.hullVertices() : 36u;  // the hull, or a box
   vkCmdDraw(frame.cmd, vertices, uint32_t(instanceCount(shape)), 0, 0);
 }

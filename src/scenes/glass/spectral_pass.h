@@ -23,7 +23,7 @@ class SpectralShadePass {
  public:
   explicit SpectralShadePass(gpu::ProgramLibrary& programs) : programs_(programs) {}
   void record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
-              DiamondBuffers& diamond, SpectralPass path, ShapeKind shape, VkExtent2D extent);
+              const DiamondBuffers& diamond, SpectralPass path, ShapeKind shape, VkExtent2D extent);
 
  private:
   const gpu::ComputeProgram& computeProgram(ShapeKind shape);
