@@ -18,8 +18,8 @@ void main() {
   Shaded best = Shaded(vec3(0.0), vec2(0.0), 1e30);
   bool covered = false, inRect = false;
   for (int i = 0; i < F.instanceCount; ++i) {
-    const vec2 rectMin = F.instances[i].rectMin, rectMax = F.instances[i].rectMax;
-    if (any(lessThan(fragCoord, rectMin)) || any(greaterThan(fragCoord, rectMax))) continue;
+    const vec4 rect = F.instances[i].screenRect;
+    if (any(lessThan(fragCoord, rect.xy)) || any(greaterThan(fragCoord, rect.zw))) continue;
     inRect = true;
     Shaded shaded;
     if (shadeGlass(fragCoord, i, shaded) && shaded.eyeDistance < best.eyeDistance) {

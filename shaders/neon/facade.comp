@@ -25,8 +25,8 @@ void main() {
   vec3 normal = vec3(0.0);
   for (uint i = 0u; i < F.boxes; ++i) {
     // The slab test: where the ray is inside all three slabs of the box.
-    const vec3 t0 = (boxes[i].centre - boxes[i].halfSize - F.eye) * inverse;
-    const vec3 t1 = (boxes[i].centre + boxes[i].halfSize - F.eye) * inverse;
+    const vec3 t0 = (boxes[i].centre.xyz - boxes[i].halfSize.xyz - F.eye) * inverse;
+    const vec3 t1 = (boxes[i].centre.xyz + boxes[i].halfSize.xyz - F.eye) * inverse;
     const vec3 lo = min(t0, t1), hi = max(t0, t1);
     const float enter = max(max(lo.x, lo.y), lo.z), leave = min(min(hi.x, hi.y), hi.z);
     if (enter <= leave && enter > 0.0 && enter < nearest) {

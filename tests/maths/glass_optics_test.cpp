@@ -101,9 +101,10 @@ TEST_P(MaterialTest, ValuesAreInTheirGroupsRange) {
   EXPECT_GE(m.vd, 2.0f);
   if (m.fantasy) {
     for (const Material& real : kMaterials)
-      if (!real.fantasy)
+      if (!real.fantasy) {
         EXPECT_GT(principalDispersion(m), principalDispersion(real)) << "a fantasy material should disperse more "
                                                                         "than any real one, here " << real.key;
+      }
     EXPECT_FALSE(m.sellmeier) << "invented materials have no measured law";
   } else {
     EXPECT_GE(m.vd, 20.0f);

@@ -91,7 +91,9 @@ TEST(Studio, EachLightIsSmallBrightAndWhereItSays) {
     for (const StudioLight& other : studioLights())
       lit = lit || (&other != &l && std::fabs(std::remainder(other.longitude - l.longitude, 2.0f * kPi)) <
                                         other.halfWidth + l.halfWidth + 0.1f);
-    if (!lit) EXPECT_NEAR(luminance(studioRadiance(beside)), luminance(studioRoom(beside)), 1e-4f) << l.longitude;
+    if (!lit) {
+      EXPECT_NEAR(luminance(studioRadiance(beside)), luminance(studioRoom(beside)), 1e-4f) << l.longitude;
+    }
   }
 }
 

@@ -81,7 +81,7 @@ shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& momen
       lo = glm::min(lo, pixel);
       hi = glm::max(hi, pixel);
     }
-    b.instances[i] = {at[i].centre, at[i].previous, lo, hi};
+    b.instances[i] = {glm::vec4(lo, hi), at[i].centre, at[i].previous};
   }
   return b;
 }

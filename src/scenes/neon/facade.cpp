@@ -11,7 +11,7 @@ namespace {
 
 // Boxes are easier to lay out by their corners than by centre and half size.
 Box corners(glm::vec3 lo, glm::vec3 hi) {
-  return {.centre = (lo + hi) * 0.5f, .halfSize = (hi - lo) * 0.5f};
+  return {.centre = glm::vec4((lo + hi) * 0.5f, 0.0f), .halfSize = glm::vec4((hi - lo) * 0.5f, 0.0f)};
 }
 
 // Window openings, the heights between a storey's ledge and the next storey's band.
