@@ -10,6 +10,8 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -128,6 +130,38 @@ bool startsLikeExr(const std::filesystem::path& path) {
   const ssize_t got = ::read(fd, head.data(), head.size());
   ::close(fd);
   return got == ssize_t(head.size()) && sniffImageFormat(std::span(head.data(), head.size())) == "EXR";
+}
+
+void checkPngChunks(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<unsigned char, 8> signature{};
+  if (!in.read(reinterpret_cast<char*>(signature.data()), signature.size()) ||
+      sniffImageFormat(std::span(signature.data(), signature.size())) != "PNG")
+    return;
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) return;
+  uint64_t at = signature.size();
+  std::array<unsigned char, 8> header{};
+  // Up to the image data: what follows it is the decoder's to judge (a truncated image is an error it
+  // reports, not a hostile header).
+  while (at + header.size() <= size && in.seekg(std::streamoff(at)) &&
+         in.read(reinterpret_cast<char*>(header.data()), header.size())) {
+    const uint64_t length = uint64_t(header[0]) << 24 | uint64_t(header[1]) << 16 | uint64_t(header[2]) << 8 | header[3];
+    const std::string type(reinterpret_cast<const char*>(header.data()) + 4, 4);
+    if (type == "IDAT" || type == "IEND") return;
+    const uint64_t left = size - at - header.size();
+    if (length + 4 > left)  // its data and CRC
+      throw Error(fmt::format("Cannot read {}: its PNG chunk '{}' claims {} bytes where the file has {} left, "
+                              "refused before decoding.",
+                              path.string(), printable(type), length, left));
+    at += header.size() + length + 4;
+  }
+}
+
+void checkImageHeader(const std::filesystem::path& path) {
+  if (startsLikeExr(path)) return checkExrHeader(path);
+  checkPngChunks(path);
 }
 
 }  // namespace vitrine

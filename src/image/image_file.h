@@ -30,4 +30,14 @@ void checkExrHeader(const std::filesystem::path& path);
 // True when `path` is a regular file whose first bytes are the EXR magic number (whatever its name).
 bool startsLikeExr(const std::filesystem::path& path);
 
+// Throws vitrine::Error naming the path unless every chunk of the PNG at `path` before its image data
+// fits in the file: OpenImageIO's PNG reader trusted a 498-byte file's text chunk claiming 1.3 GB and
+// spent 18 s on it (fuzz/image_png; tests/fuzz-regressions/image_png/huge-text-chunk-*). Reads the
+// chunk headers only. A file that is not a PNG passes.
+void checkPngChunks(const std::filesystem::path& path);
+
+// What every reader runs before a decoder sees a file, whatever its name: checkExrHeader for an EXR,
+// checkPngChunks for a PNG.
+void checkImageHeader(const std::filesystem::path& path);
+
 }  // namespace vitrine

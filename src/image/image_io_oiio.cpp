@@ -66,7 +66,7 @@ void writeImage(const std::filesystem::path& path, const ImageRgba& image, const
 
 bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t height) {
   try {
-    if (startsLikeExr(path)) checkExrHeader(path);
+    checkImageHeader(path);
     OIIO::ImageBuf buffer = openFresh(path);
     // A truncated file fails the read (its last rows are missing), a corrupt one the decode.
     const bool read = buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT);
@@ -101,7 +101,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
-  if (startsLikeExr(path)) checkExrHeader(path);  // whatever its name: OpenImageIO picks by content too
+  checkImageHeader(path);  // whatever its name: OpenImageIO picks by content too
   OIIO::ImageBuf source = openFresh(path);
   if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
     throw Error(fmt::format("Cannot read {}: {}", path.string(), readError(source)));
