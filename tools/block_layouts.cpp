@@ -5,13 +5,13 @@
 // checks cannot drift: edit either side alone and the build stops, naming the shader and the member.
 //
 // Usage: vitrine_block_layouts OUT.cpp HEADER... [--spirv NAME=FILE.spv ...], run from the repository
-// root with headers named from it ("shaders/kifs/push.h"), as the generated file includes them.
+// root with headers named from it ("shaders/kifs/march_push.h"), as the generated file includes them.
 // Without --spirv it checks every shader built into the binary (gpu::embeddedShaders()).
+#include "gpu/embedded_shaders.h"
 #include "gpu/shader_reflection.h"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -22,9 +22,6 @@
 #include <string>
 #include <vector>
 
-namespace vitrine::gpu {
-std::span<const std::pair<std::string_view, std::span<const uint32_t>>> embeddedShaders();
-}
 
 namespace {
 

@@ -43,6 +43,7 @@ struct FrameContext {
   void transition(gpu::Image& image, const gpu::ImageUse& use) const { image.use(cmd, use); }
   void transition(gpu::Buffer& buffer, const gpu::BufferUse& use) const { buffer.use(cmd, use); }
   gpu::Image& image(gpu::ImageHandle handle) const { return resources.current(handle); }
+  gpu::Buffer& buffer(gpu::BufferHandle handle) const { return resources.current(handle); }
   // Colour/depth attachments transitioned, rendering begun, viewport and scissor set; ends with scope.
   gpu::Rendering rendering(const gpu::RenderingDesc& desc) const { return gpu::Rendering(cmd, desc); }
   // A uniform or parameter block for this frame.

@@ -11,14 +11,14 @@ namespace vitrine::gpu {
 BufferHandle FrameResources::declare(BufferDecl decl) {
   buffers_.push_back({std::move(decl), {}, 0, true});
   BufferEntry& entry = buffers_.back();
-  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  createWhenSized(entry);
   return {uint32_t(buffers_.size() - 1)};
 }
 
 void FrameResources::redeclare(BufferHandle handle, BufferDecl decl) {
   BufferEntry& entry = buffers_.at(handle.index);
   entry.decl = std::move(decl);
-  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  createWhenSized(entry);
 }
 
 void FrameResources::create(BufferEntry& entry, VkExtent2D target) {

@@ -35,14 +35,14 @@ VkExtent3D sizeFor(const ImageSize& size, VkExtent2D target) {
 ImageHandle FrameResources::declare(ImageDecl decl) {
   entries_.push_back({std::move(decl), {}, 0, true, false});
   Entry& entry = entries_.back();
-  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  createWhenSized(entry);
   return {uint32_t(entries_.size() - 1)};
 }
 
 void FrameResources::redeclare(ImageHandle handle, ImageDecl decl) {
   Entry& entry = entries_.at(handle.index);
   entry.decl = std::move(decl);
-  if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  createWhenSized(entry);
 }
 
 void FrameResources::create(Entry& entry, VkExtent2D target) {

@@ -124,6 +124,10 @@ class FrameResources {
   };
   void create(Entry& entry, VkExtent2D target);
   void create(BufferEntry& entry, VkExtent2D target);
+  // Images and buffers alike: an absolute size is known at once, a relative one once the target's is.
+  template <typename E> void createWhenSized(E& entry) {
+    if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  }
   void beginBuffers(VkCommandBuffer cmd, StreamArena& stream);
   Entry& ready(ImageHandle handle);
   BufferEntry& ready(BufferHandle handle);

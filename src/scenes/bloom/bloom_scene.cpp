@@ -266,7 +266,7 @@ class BloomScene final : public Scene {
 
   void measure(const FrameContext& frame) {
     const auto pass = frame.pass("bloom statistics");
-    gpu::Buffer& counts = frame.resources.current(statsCounts_);
+    gpu::Buffer& counts = frame.buffer(statsCounts_);
     gpu::fillBuffer(frame.cmd, counts, 0, gpu::use::ComputeReadWriteBuffer);  // the workgroups' atomics add to it
     gpu::Image& lattice = frame.image(lattice_);
     frame.transition(lattice, gpu::use::ComputeRead);

@@ -40,7 +40,7 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
   const gpu::ImageUse sampled = compute ? gpu::use::ComputeSample : gpu::use::FragmentSample;
   frame.transition(sources.backdrop, sampled);
   frame.transition(sources.panorama, sampled);
-  gpu::Buffer& planes = frame.resources.current(diamond.planes());
+  gpu::Buffer& planes = frame.buffer(diamond.planes());
   frame.transition(planes, compute ? gpu::use::ComputeReadBuffer : gpu::use::FragmentReadBuffer);
   gpu::Bindings bindings = sources.bindings(frame.device);
   bindings.storageBuffer("DiamondPlanes", planes.handle());
@@ -55,7 +55,7 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
     program.dispatchOver(frame.cmd, extent);
     return;
   }
-  gpu::Buffer& hull = frame.resources.current(diamond.hull());
+  gpu::Buffer& hull = frame.buffer(diamond.hull());
   frame.transition(hull, gpu::use::VertexReadBuffer);
   gpu::RenderingDesc desc;
   desc.colors = {{&colour, VkClearColorValue{}}, {&motion, VkClearColorValue{}}};

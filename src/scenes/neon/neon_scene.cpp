@@ -303,13 +303,13 @@ void NeonScene::recordChains(const FrameContext& frame) {
   const Snapshot& snapshot = engine_->latest();
   uploadHeads_.resize(snapshot.heads.size());
   placement_->copy(snapshot.heads, uploadHeads_);
-  gpu::Buffer& heads = frame.resources.current(heads_);
+  gpu::Buffer& heads = frame.buffer(heads_);
   frame.upload(heads, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
   const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_), chains_.localSize()[0]);
   chains_.bind(frame.cmd);
   for (const ChainParams& params : std::exchange(stepsPending_, {})) {
     chains_.constants(frame.cmd, chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params));
-    gpu::Buffer& previous = frame.resources.current(particles_);
+    gpu::Buffer& previous = frame.buffer(particles_);
     gpu::Buffer& next = frame.resources.previous(particles_);
     frame.transition(previous, gpu::use::ComputeReadBuffer);
     frame.transition(next, gpu::use::ComputeWriteBuffer);
@@ -331,7 +331,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   {
     const auto pass = frame.pass("neon facade");
-    gpu::Buffer& boxes = frame.resources.current(boxes_);
+    gpu::Buffer& boxes = frame.buffer(boxes_);
     frame.transition(boxes, gpu::use::ComputeReadBuffer);
     frame.transition(lighting, gpu::use::ComputeSample);
     frame.transition(colour, gpu::use::ComputeWrite);
@@ -351,7 +351,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   }
   {
     const auto pass = frame.pass("neon tubes");
-    gpu::Buffer& positions = frame.resources.current(particles_);
+    gpu::Buffer& positions = frame.buffer(particles_);
     frame.transition(positions, gpu::use::VertexReadBuffer);
     frame.transition(depth, gpu::use::FragmentSample);
     gpu::RenderingDesc desc;

@@ -61,7 +61,7 @@ class NoodlesScene final : public Scene {
   void record(const FrameContext& frame) override {
     ensureStrands();
     const StrandSettings strands = strandSettings();
-    gpu::Buffer& nodes = frame.resources.current(nodes_);
+    gpu::Buffer& nodes = frame.buffer(nodes_);
     if (integrated_ != strands) {  // nothing moves under reduced motion: integrate once
       const auto pass = frame.pass("noodles integrate");
       frame.transition(nodes, gpu::use::ComputeWriteBuffer);

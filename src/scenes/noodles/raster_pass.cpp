@@ -62,9 +62,9 @@ void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
 
 void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
   followSamples(frame, view.multisample);
-  gpu::Buffer& visibility = frame.resources.current(visibility_);
-  gpu::Buffer& bigList = frame.resources.current(bigList_);
-  gpu::Buffer& counters = frame.resources.current(counters_);
+  gpu::Buffer& visibility = frame.buffer(visibility_);
+  gpu::Buffer& bigList = frame.buffer(bigList_);
+  gpu::Buffer& counters = frame.buffer(counters_);
   gpu::fillBuffer(frame.cmd, visibility, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
   shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis_);

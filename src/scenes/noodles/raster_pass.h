@@ -22,7 +22,7 @@ class RasterPass {
   explicit RasterPass(const SceneContext& context);  // throws vitrine::Error without 64-bit buffer atomics
   void record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view);
 
-  gpu::Buffer& visibility(const FrameContext& frame) const { return frame.resources.current(visibility_); }
+  gpu::Buffer& visibility(const FrameContext& frame) const { return frame.buffer(visibility_); }
   uint32_t samplesPerAxis() const { return samplesPerAxis_; }
   uint32_t workgroupSize() const { return segments_.localSize()[0]; }  // segments a workgroup takes
 
