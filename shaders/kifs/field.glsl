@@ -31,7 +31,8 @@ vec3 tumble(vec3 p, int step, vec2 angles) {
 }
 
 // The field at a point already in the tumbled frame.
-float field(vec3 p, int step, out vec3 trap) {
+// `fold` scales the asymmetric fold's offsets (1: the write-up's; live input breathes it with the bass).
+float field(vec3 p, int step, float fold, out vec3 trap) {
   if (step <= 2) {
     trap = abs(p);
     return length(p) - 0.5;
@@ -47,7 +48,7 @@ float field(vec3 p, int step, out vec3 trap) {
   }
 
   vec3 q = p + sin(p.zxy * WARP_FREQ) * WARP_AMP;
-  q = abs(q) - FOLD;
+  q = abs(q) - FOLD * fold;
   q.xy = rotate(q.xy, PLANE_ROTATIONS.x);
   q.xz = rotate(q.xz, PLANE_ROTATIONS.y);
   q.yz = rotate(q.yz, PLANE_ROTATIONS.z);

@@ -11,6 +11,6 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= points.length()) return;
   vec3 trap;
-  float d = field(points[i].xyz, int(points[i].w), trap);
+  float d = field(points[i].xyz, int(points[i].w), 1.0, trap);
   samples[i] = vec4(d, trap);
 }

@@ -32,7 +32,7 @@ void main() {
   vec3 glow = vec3(0.0);
   for (int i = 0; i < pc.maxSteps; ++i) {
     vec3 trap;
-    float d = field(ro + rd * t, pc.step, trap);
+    float d = field(ro + rd * t, pc.step, pc.fold, trap);
     glow += sampleColour(trap, pc.step) * emission(d);
     t += marchStep(d, pc.step);
     if (t > 10.0 || max(glow.r, max(glow.g, glow.b)) > 4.0) break;  // past the scene, or saturated

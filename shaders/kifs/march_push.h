@@ -13,6 +13,7 @@ struct KifsMarchPush {
   int maxSteps;      // march budget (quality tier)
   float grain;       // film grain amplitude (0 under reduced motion)
   uint jitterFrame;  // frame index for the ray-start jitter (frozen under reduced motion)
+  float fold;        // the fold offsets' scale, 1: the write-up's
 };
 VITRINE_SHARED_END
 

@@ -139,6 +139,10 @@ constexpr FlagRule kFlagRules[] = {
     {"--input", kHeadless | kRecord},
     {"--events", kHeadless | kRecord},
     {"--audio-out", kHeadless},
+    {"--map", kGallery | kHeadless | kRecord, true},
+    {"--audio-in", kGallery | kHeadless | kRecord},
+    {"--audio-in-device", kGallery},
+    {"--midi-in", kHeadless | kRecord},
     {"--fps", kRecord},
     {"--seconds", kRecord},
     {"--spp", kRecord},
@@ -200,13 +204,14 @@ const char* usage() {
           [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
           [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
           [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]... [--remote-saves]]
+          [--map FILE|SOURCE=[SCENE.]KEY[:LO:HI]]... [--audio-in FILE | --audio-in-device NAME|INDEX|default]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
           [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
-          --out FILE.exr|FILE.png
+          [--map ...]... [--audio-in FILE] [--midi-in FILE.mid] --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
-          [--events FILE]
+          [--events FILE] [--map ...]... [--audio-in FILE] [--midi-in FILE.mid]
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
           [--preset [SCENE.]NAME]... --json FILE
   vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
@@ -223,10 +228,14 @@ A..B-1 only, the same pixels whichever machine renders them. Scenes with sound a
 after 30 s alone (the dwell when shorter, 10 s at least). --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
 changes it); it prints the page's address with its access token. Bound beyond loopback, OSC is taken only from
 --remote-allow networks (192.168.1.0/24) or senders that sent the token. Remote changes are not saved unless --remote-saves.
+Live input (docs/LIVE.md): --map plays a parameter or action from a source (audio.bass, midi.cc.1.21,
+pad.0.axis.1, osc.NAME, lfo.sine.8); --audio-in FILE feeds a sound file (looped in the gallery, frame-exact
+in headless and record runs, whose audio.wav then carries it) and turns on the scenes' audio mappings, as
+--audio-in-device does with a capture device; --midi-in plays a MIDI file's events against simulation time.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
 A flag outside its mode (--fps in --headless, --json for --out) is refused, as is one given twice, except
---set and --preset. record keeps the film's parameters in FOLDER/record.json and resumes only the same film.
+--set, --preset and --map. record keeps the film's parameters in FOLDER/record.json and resumes only the same film.
 )";
 }
 
@@ -289,7 +298,7 @@ Options parseOptions(int argc, const char* const* argv) {
     const std::string_view arg = argv[i];
     if (const FlagRule* rule = findFlagRule(arg)) {
       if (!rule->repeatable && std::find(given.begin(), given.end(), rule) != given.end())
-        throw Error(fmt::format("{} is given twice; only --set and --preset may be given more than once.", arg));
+        throw Error(fmt::format("{} is given twice; only --set, --preset, --map and --remote-allow may be given more than once.", arg));
       given.push_back(rule);
     }
     if (arg == "--headless") options.mode = Mode::Headless;
@@ -310,6 +319,10 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--input") options.input = value(arg);
     else if (arg == "--events") options.events = value(arg);
     else if (arg == "--audio-out") options.audioOut = value(arg);
+    else if (arg == "--map") options.maps.push_back(value(arg));
+    else if (arg == "--audio-in") options.audioIn = value(arg);
+    else if (arg == "--audio-in-device") options.audioInDevice = value(arg);
+    else if (arg == "--midi-in") options.midiIn = value(arg);
     else if (arg == "--reset-settings") options.resetSettings = true;
     else if (arg == "--kiosk") options.kiosk = options.fullscreen = true;
     else if (arg == "--dwell") options.dwell = parsePositive(arg, value(arg), 86400.0);
@@ -366,6 +379,8 @@ Options parseOptions(int argc, const char* const* argv) {
     if (ext != ".wav") throw Error(fmt::format("--audio-out writes WAV: name it FILE.wav, not '{}'.", options.audioOut));
     checkWritable(options.audioOut);
   }
+  if (!options.audioIn.empty() && !options.audioInDevice.empty())
+    throw Error("--audio-in FILE and --audio-in-device both feed the audio sources: give one of them.");
   if (options.kiosk && options.mode != Mode::Gallery) throw Error("--kiosk is for the gallery, not --headless, bench or record.");
   if (options.remote && options.mode != Mode::Gallery && options.mode != Mode::Headless)
     throw Error("--remote is for the gallery and --headless runs.");

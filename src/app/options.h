@@ -59,6 +59,11 @@ struct Options {
   std::string remoteBind = "127.0.0.1:8730";  // --remote-bind ADDR:PORT
   std::vector<std::string> remoteAllow;  // --remote-allow CIDR (repeatable): OSC senders needing no token
   bool remoteSaves = false;          // --remote-saves: remote changes are written to the settings file too
+  // Live input (docs/LIVE.md).
+  std::vector<std::string> maps;     // --map FILE or --map SOURCE=[SCENE.]KEY[:LO:HI] ..., in order
+  std::string audioIn;               // --audio-in FILE: a sound file drives the audio sources
+  std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
+  std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time
 };
 
 Options parseOptions(int argc, const char* const* argv);

@@ -1,5 +1,8 @@
 #include "audio/engine.h"
 
+#include "core/hidden_stderr.h"
+#include "core/printable.h"
+
 #include <RtAudio.h>
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -50,9 +53,17 @@ void Synth::renderSpan(float* out, size_t frames) {
     const float reverberated = reverb_.process(dry);
     const float wet = wet_.next();
     const float mixed = (1.0f - wet) * dry + wet * reverberated;
-    const float sample = limiter_.process(mixed * volume_.next() * unmuted_.next());
+    const float unmuted = unmuted_.next();
+    const float sample = limiter_.process(mixed * volume_.next() * unmuted);
     out[2 * i] = sample;
     out[2 * i + 1] = sample;
+    if (const std::vector<float>* music = music_.load(std::memory_order_acquire); music && music->size() >= 2) {
+      if (2 * musicAt_ + 1 >= music->size()) musicAt_ = 0;
+      out[2 * i] = std::clamp(sample + (*music)[2 * musicAt_] * unmuted, -1.0f, 1.0f);
+      out[2 * i + 1] = std::clamp(sample + (*music)[2 * musicAt_ + 1] * unmuted, -1.0f, 1.0f);
+      ++musicAt_;
+      musicPlayed_.fetch_add(1, std::memory_order_relaxed);
+    }
   }
 }
 
@@ -115,42 +126,21 @@ void streamError(RtAudioError::Type type, const std::string& message) {
   if (!told.test_and_set()) std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
 }
 
-// ALSA, PulseAudio and RtAudio print each probing failure straight to stderr: over thirty lines
-// on a machine without sound. The one warning AudioOutput prints says what a user needs, so the
-// probe runs with stderr pointed at /dev/null.
-class HiddenStderr {
- public:
-  HiddenStderr() {
-    std::fflush(stderr);
-    saved_ = ::dup(STDERR_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-    if (null >= 0) ::close(null);
-  }
-  ~HiddenStderr() {
-    std::cerr.flush();
-    std::fflush(stderr);
-    if (saved_ < 0) return;
-    ::dup2(saved_, STDERR_FILENO);
-    ::close(saved_);
-  }
-  HiddenStderr(const HiddenStderr&) = delete;
-  HiddenStderr& operator=(const HiddenStderr&) = delete;
-
- private:
-  int saved_ = -1;
-};
-
-std::string trimmed(std::string text) {
-  const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
-  text.erase(text.begin(), std::find_if_not(text.begin(), text.end(), blank));
-  text.erase(std::find_if_not(text.rbegin(), text.rend(), blank).base(), text.end());
-  return text;
-}
-
 }  // namespace
 
 AudioOutput::AudioOutput() : AudioOutput(Options{}) {}
+
+void AudioOutput::playMusic(std::vector<float> stereo) {
+  if (!music_.empty()) return;  // once: the audio thread may be reading it
+  music_ = std::move(stereo);
+  musicStart_ = std::chrono::steady_clock::now();
+  if (synth_) synth_->setMusic(&music_);
+}
+
+double AudioOutput::musicSeconds() const {
+  if (synth_ && device_) return double(synth_->musicFrames()) / double(kSampleRate);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - musicStart_).count();
+}
 
 AudioOutput::AudioOutput(Options options) {
   const std::string reason = options.useDevice ? open(options) : "not asked to open one";

@@ -2,6 +2,8 @@
 // The sound engine. A Synth renders stereo blocks on the audio thread from commands that the frame
 // loop posts through a lock-free queue; AudioOutput plays one on the default device (or stays
 // silent when there is none), OfflineAudio renders a run sample-exactly for --audio-out.
+#include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -58,6 +60,11 @@ class Synth {
   float wet() const { return wet_.value(); }
   size_t ringing() const;  // active bell voices
 
+  // Music played under the mix, looped (the gallery's --audio-in): interleaved stereo at 48 kHz,
+  // owned by the caller and unchanged while set. Set from any thread; null stops it.
+  void setMusic(const std::vector<float>* stereo) { music_.store(stereo, std::memory_order_release); }
+  uint64_t musicFrames() const { return musicPlayed_.load(std::memory_order_relaxed); }  // frames played so far
+
  private:
   void apply(const Command& command);
   void startBell(float hz, float level, std::span<const Partial> partials);
@@ -71,6 +78,9 @@ class Synth {
   Ramp volume_{1.0f}, unmuted_{1.0f};
   Limiter limiter_;
   int64_t now_;
+  std::atomic<const std::vector<float>*> music_{nullptr};
+  size_t musicAt_ = 0;  // the next music frame (audio thread)
+  std::atomic<uint64_t> musicPlayed_{0};
 };
 
 // Plays a Synth on the default output device through RtAudio, 48 kHz stereo float. Without a
@@ -105,6 +115,13 @@ class AudioOutput final : public AudioSink {
   void drone(double time, bool on) override;
   void reverb(double time, std::optional<float> wet) override;
 
+  // Loops `stereo` (48 kHz, interleaved) under the scenes' sound, muted with them: the sound file that
+  // drives live input (--audio-in), heard as it plays. Once per output.
+  void playMusic(std::vector<float> stereo);
+  // Seconds of the music heard so far (the device's clock; the wall clock without a device): where
+  // the analysis of the file is, so the picture follows what is heard.
+  double musicSeconds() const;
+
  private:
   std::string open(const Options& options);  // the reason it failed, or empty
   void post(Command::Kind kind, float value);
@@ -113,6 +130,8 @@ class AudioOutput final : public AudioSink {
   std::unique_ptr<Synth> synth_;
   std::unique_ptr<RtAudio> device_;
   bool paused_ = false, muted_ = false;
+  std::vector<float> music_;
+  std::chrono::steady_clock::time_point musicStart_{};
 };
 
 // Collects a run's commands with their simulation times and renders it afterwards, each command

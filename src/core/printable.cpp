@@ -1,5 +1,8 @@
 #include "core/printable.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include <fmt/format.h>
 
 namespace vitrine {
@@ -13,6 +16,13 @@ std::string printable(std::string_view text) {
     else out += fmt::format("\\x{:02x}", byte);
   }
   return out;
+}
+
+std::string trimmed(std::string text) {
+  const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
+  text.erase(text.begin(), std::find_if_not(text.begin(), text.end(), blank));
+  text.erase(std::find_if_not(text.rbegin(), text.rend(), blank).base(), text.end());
+  return text;
 }
 
 }  // namespace vitrine

@@ -7,4 +7,6 @@
 
 namespace vitrine {
 std::string printable(std::string_view text);
+// A library's message without the blanks and newlines around it, to quote inside a sentence.
+std::string trimmed(std::string text);
 }  // namespace vitrine

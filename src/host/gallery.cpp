@@ -24,6 +24,7 @@
 #include "host/cost_guard.h"
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
+#include "host/gallery_live.h"
 #include "host/gallery_settings.h"
 #include "host/kiosk.h"
 #include "host/live_capture.h"
@@ -113,6 +114,7 @@ class Gallery {
   void kioskStep(double elapsed, bool touched);
   void finishFade();
   void applyRemote();
+  void nowShowing();
   bool touchedThisFrame(const Pointer& pointer);
 
   Assets assets_ = Assets::locate();
@@ -179,6 +181,7 @@ class Gallery {
   std::map<std::string, std::set<std::string>, std::less<>> remoteKeys_;
   bool remoteSaves_ = false;
   std::vector<ActionCall> actions_;  // from clients, for the next step
+  std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
 };
 
 Gallery::Gallery(const Options& options, const SceneInfo* named)
@@ -238,6 +241,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       throw Error(fmt::format("Scene {} rejects {}", info.name, why));
     settings_.remember(info.name, std::move(values), Clock::now());
   }
+  live_ = std::make_unique<GalleryLive>(options, settings_, audio_, firstScene.name);
   if (options.kiosk) {
     const auto scenes = sceneRegistry();
     // Cycling resumes after 30 s alone, or the dwell when shorter (but 10 s at least).
@@ -397,7 +401,15 @@ void Gallery::switchScene(const SceneInfo& info) {
   steps_.restart();
   stepCost_ = {};
   window_.setTitle(fmt::format("Vitrine — {}", chosen->title));
-  if (remote_) remote_->publish(*renderer_, true);
+  nowShowing();
+}
+
+// The scene showing changed (a switch, a finished fade): its mappings, and every page told.
+void Gallery::nowShowing() {
+  live_->showing(renderer_->info());
+  if (!remote_) return;
+  remote_->setMappings(live_->mappingLines());
+  remote_->publish(*renderer_, true);
 }
 
 // Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
@@ -441,7 +453,7 @@ void Gallery::finishFade() {
   panelError_.clear();
   missingAssets_ = assets_.missing();
   window_.setTitle(fmt::format("Vitrine — {}", renderer_->info().title));
-  if (remote_) remote_->publish(*renderer_, true);
+  nowShowing();
 }
 
 void Gallery::frame() {
@@ -521,6 +533,7 @@ void Gallery::simulate() {
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
     actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
+    for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
     if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
     remote_->publish(*renderer_);
   }
@@ -536,6 +549,7 @@ void Gallery::simulate() {
     input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
     input_.droppedFiles = std::exchange(drops_, {});
     input_.actions = std::exchange(actions_, {});
+    live_->step(*renderer_, input_);
     renderer_->scene().update(input_);
     // A frame's GPU time is news to its first step only: the automatic tiers count frames, and a
     // slow frame followed by many steps must not count as many slow frames.
@@ -564,13 +578,18 @@ bool Gallery::touchedThisFrame(const Pointer& pointer) {
 void Gallery::showMenu() {
   if (uiHidden_) return;
   const double fps = frameSeconds_ > 0.0 ? 1.0 / frameSeconds_ : 0.0;
-  const MenuChoice choice =
-      drawMenu(MenuState{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
-                         note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
-                         helpShown_, capture_.status(renderer_->info().name), capture_.active(), reloadNote_,
-                         remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string(),
-                         tiers_.describe(renderer_->info().name, params::snapshot(renderer_->parameters())),
-                         clockNote(), &menuLayout_});
+  MenuState state{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
+                  note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
+                  helpShown_, capture_.status(renderer_->info().name), capture_.active(), reloadNote_,
+                  remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string(),
+                  tiers_.describe(renderer_->info().name, params::snapshot(renderer_->parameters())),
+                  clockNote(), &menuLayout_};
+  state.livePanel = &live_->panel();
+  state.live = live_->panelState();
+  const MenuChoice choice = drawMenu(state);
+  const std::vector<std::string> mappings = live_->mappingLines();
+  live_->apply(choice.live, panel_);
+  if (remote_ && live_->mappingLines() != mappings) remote_->setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
   time_ = choice.time;
   time_.speed = TimeControl::clampSpeed(time_.speed);
@@ -659,10 +678,15 @@ void Gallery::applyEditNow(const PanelEdit& edit) {
 void Gallery::rememberValues() {
   const std::string_view scene = renderer_->info().name;
   params::KeyValues values = params::snapshot(renderer_->parameters());
-  if (const auto remote = remoteKeys_.find(scene); remote != remoteKeys_.end() && !remoteSaves_) {
-    std::erase_if(values, [&](const auto& kv) { return remote->second.contains(kv.first); });
+  std::set<std::string> theirs;  // keys whose live value is not the user's to save
+  if (const auto remote = remoteKeys_.find(scene); remote != remoteKeys_.end() && !remoteSaves_)
+    theirs = remote->second;
+  if (live_)  // a mapping plays these: the values the user saved stay
+    for (std::string& key : live_->drivenKeys()) theirs.insert(std::move(key));
+  if (!theirs.empty()) {
+    std::erase_if(values, [&](const auto& kv) { return theirs.contains(kv.first); });
     for (auto& kv : settings_.valuesFor(scene))
-      if (remote->second.contains(kv.first)) values.push_back(std::move(kv));
+      if (theirs.contains(kv.first)) values.push_back(std::move(kv));
   }
   settings_.remember(scene, std::move(values), Clock::now());
 }

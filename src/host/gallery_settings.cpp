@@ -83,6 +83,28 @@ void GallerySettings::showing(std::string_view scene, Clock::time_point now) {
   saver_.markDirty(now);
 }
 
+const std::vector<std::string>& GallerySettings::mappingsFor(std::string_view scene) const {
+  static const std::vector<std::string> none;
+  const auto it = settings_.mappings.find(std::string(scene));
+  return it == settings_.mappings.end() ? none : it->second;
+}
+
+void GallerySettings::setMappings(std::string_view scene, std::vector<std::string> lines, Clock::time_point now) {
+  if (mappingsFor(scene) == lines) return;
+  if (lines.empty()) settings_.mappings.erase(std::string(scene));
+  else settings_.mappings[std::string(scene)] = std::move(lines);
+  changes_.mappings.insert(std::string(scene));
+  saver_.markDirty(now);
+}
+
+void GallerySettings::setAudioInput(bool on, std::string device, Clock::time_point now) {
+  if (settings_.audioInput == on && settings_.audioDevice == device) return;
+  settings_.audioInput = on;
+  settings_.audioDevice = std::move(device);
+  changes_.live = true;
+  saver_.markDirty(now);
+}
+
 void GallerySettings::tick(Clock::time_point now) {
   if (saver_.due(now)) save();
 }

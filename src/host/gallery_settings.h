@@ -34,6 +34,12 @@ class GallerySettings {
   // as its default) are written over what another gallery on the same file may have saved.
   void remember(std::string_view scene, params::KeyValues values, Clock::time_point now);
   void showing(std::string_view scene, Clock::time_point now);  // the scene to start with next time
+  // Live input: the user's own mapping lines per scene, and whether audio input is on, from which device.
+  const std::vector<std::string>& mappingsFor(std::string_view scene) const;
+  void setMappings(std::string_view scene, std::vector<std::string> lines, Clock::time_point now);
+  bool audioInput() const { return settings_.audioInput; }
+  const std::string& audioDevice() const { return settings_.audioDevice; }
+  void setAudioInput(bool on, std::string device, Clock::time_point now);
   void tick(Clock::time_point now);  // writes when a burst of changes has settled
   void flush();                      // writes now if anything is unsaved
 

@@ -38,6 +38,8 @@ int runHeadless(const Options& options) {
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);
+  const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
+  config.live = live.get();
   std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
   if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
@@ -49,6 +51,7 @@ int runHeadless(const Options& options) {
       // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
       // SIGTERM ends the run early (the last frame is still written).
       remote.emplace(options.remoteBind, options.remoteAllow);
+      if (live) remote->setMappings(live->mappingLines());
       std::signal(SIGTERM, [](int) { stopHeadless = 1; });
       std::signal(SIGINT, [](int) { stopHeadless = 1; });
     }
@@ -61,6 +64,7 @@ int runHeadless(const Options& options) {
       if (k == warmFrames) warm = gpu::liveDeviceMemory();
       if (remote) {
         RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
+        if (live) for (const auto& [source, value] : applied.sources) live->sources().set(source, value);
         offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
         remote->publish(offscreen.renderer());
         std::this_thread::sleep_until(due += std::chrono::microseconds(16667));

@@ -152,7 +152,8 @@ std::optional<bool> askAboutCostlyEdit(const std::string& why) {
 float menuWidth(float fontSize) { return std::round(fontSize * 19.0f); }
 
 std::string MenuLayout::text() const {
-  return fmt::format("time={:d}\npanel={:d}\ntimings={:d}\npass_rows={}\n", time, panel, timings, passRows);
+  return fmt::format("time={:d}\npanel={:d}\nlive={:d}\ntimings={:d}\npass_rows={}\n", time, panel, live, timings,
+                     passRows);
 }
 
 void MenuLayout::readLine(std::string_view line) {
@@ -165,6 +166,7 @@ void MenuLayout::readLine(std::string_view line) {
   if (key == "time") time = number != 0;
   else if (key == "panel") panel = number != 0;
   else if (key == "timings") timings = number != 0;
+  else if (key == "live") live = number != 0;
   else if (key == "pass_rows") passRows = std::clamp(number, 0, 64);
 }
 
@@ -253,6 +255,7 @@ MenuChoice drawMenu(const MenuState& state) {
       if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), state.tierInUse);
       state.scene.drawPanel();
     }
+    if (state.livePanel && section("live input###live", layout.live)) choice.live = state.livePanel->draw(state.live);
     layout.passRows = std::max(layout.passRows, int(state.passes.size()));
     if (section("timings###timings", layout.timings)) drawPassTable(state, layout.passRows);
     ImGui::PopItemWidth();

@@ -3,6 +3,7 @@
 // The gallery's menu: scenes, timings, vsync, the current scene's own panel, and what went wrong.
 // It only draws and reports what was chosen; the frame loop decides what a choice changes.
 #include "gpu/pass_timer.h"
+#include "host/live_panel.h"
 #include "host/param_panel.h"
 #include "scenes/scene.h"
 
@@ -19,7 +20,7 @@ namespace vitrine::host {
 // Which of the menu's sections are open, and how many timing rows it keeps: kept in the overlay's
 // layout file (with the window's place and folded state), so the menu comes back as it was left.
 struct MenuLayout {
-  bool time = false, panel = false, timings = false;  // a first start shows the scene list only
+  bool time = false, panel = false, live = false, timings = false;  // a first start shows the scene list only
   int passRows = 0;  // rows reserved in the timings table: the most passes any scene has shown
   std::string text() const;            // "time=0\npanel=1\n...": the lines of its ini section
   void readLine(std::string_view line);  // one of those lines; anything else is ignored
@@ -52,6 +53,8 @@ struct MenuState {
   std::string tierInUse;                       // "auto: low": the quality tier the scene runs at
   std::string clock;                           // "simulation behind the clock: ...", when it is
   MenuLayout* layout = nullptr;                // open sections and reserved rows, kept across runs
+  LivePanel* livePanel = nullptr;              // live input: audio, MIDI, gamepads, mappings
+  LivePanelState live;
 };
 
 struct MenuChoice {
@@ -62,6 +65,7 @@ struct MenuChoice {
   bool help = false;
   bool capture = false;              // live capture on (F9)
   std::optional<bool> costly;        // the answer about the costly edit: apply (true) or not
+  LivePanelChoice live;              // what the user asked of live input
 };
 
 MenuChoice drawMenu(const MenuState& state);

@@ -13,7 +13,7 @@
 namespace vitrine::host {
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
     : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size),
-      startTime_(config.startTime), step_(config.step) {
+      startTime_(config.startTime), step_(config.step), live_(config.live), events_(config.events) {
   if (!(step_ > 0.0) || !std::isfinite(step_)) throw Error("an offscreen run needs a finite, positive time step");
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
@@ -33,6 +33,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
       throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, preset, why));
   if (auto why = renderer_.applyParameters(config.parameters); !why.empty())
     throw Error(fmt::format("Scene {} rejects {}", config.scene, why));
+  if (live_) live_->setScene(*info);
   input_.time = config.startTime;
   input_.dt = float(step_);
   input_.seed = config.seed;
@@ -69,6 +70,7 @@ FrameTimes Offscreen::renderFrame(uint32_t steps) {
 
 void Offscreen::step() {
   input_.time = startTime_ + double(input_.frame) * step_;
+  input_.actions.clear();  // a step's actions are its own: none carry over to the next
   if (player_) {
     StepInput scripted = player_->step(input_.time, size_);
     input_.cursor = scripted.cursor;
@@ -82,6 +84,7 @@ void Offscreen::step() {
   }
   input_.actions.insert(input_.actions.end(), extraActions_.begin(), extraActions_.end());
   extraActions_.clear();
+  if (live_) live_->step(renderer_, input_, events_);
   renderer_.scene().update(input_);
 }
 

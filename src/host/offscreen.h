@@ -5,6 +5,7 @@
 // in double from k (never by summing steps, which drifts), and an input script sees the same times.
 #include "image/image.h"
 #include "host/input_script.h"
+#include "host/live_link.h"
 #include "host/scene_renderer.h"
 
 #include <chrono>
@@ -27,6 +28,7 @@ struct OffscreenConfig {
   EventSink* events = nullptr;       // --events: where the scene's events go
   audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
   double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
+  LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
 };
 
 struct FrameTimes {
@@ -70,6 +72,8 @@ class Offscreen {
   double startTime_;
   double step_;
   std::optional<InputPlayer> player_;
+  LiveLink* live_ = nullptr;
+  EventSink* events_ = nullptr;
   std::vector<ActionCall> extraActions_;
   std::optional<Pointer> extraPointer_;
   CursorTracker extraCursor_;

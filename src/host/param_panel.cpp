@@ -140,6 +140,7 @@ std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, std::strin
         break;
       }
     }
+    if (ImGui::IsItemActivated()) clicked_ = param.key;
     tooltip(param);
     if (changed) {
       ImGui::SameLine();

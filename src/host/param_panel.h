@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace vitrine::host {
 
@@ -26,12 +27,16 @@ class ParamPanel {
   void forget() {  // a scene switch
     editing_.clear();
     typing_.clear();
+    clicked_.reset();
   }
+  // The parameter whose widget was last clicked (MIDI learn), once.
+  std::optional<std::string> takeClicked() { return std::exchange(clicked_, std::nullopt); }
 
  private:
   // Values being dragged or typed in widgets that apply on release, by key.
   std::map<std::string, double> editing_;
   std::map<std::string, std::string> typing_;
+  std::optional<std::string> clicked_;
 };
 
 // The first of the schema's presets that the current values match (every value it sets is the value

@@ -7,6 +7,7 @@
 #include "audio/engine.h"
 #include "audio/wav.h"
 #include "core/atomic_file.h"
+#include "live/audio_clip.h"
 #include "core/error.h"
 #include "host/event_log.h"
 #include "host/modes.h"
@@ -107,13 +108,16 @@ int runRecord(const Options& options) {
   if (!options.events.empty()) config.events = &events.emplace(options.events);
   audio::OfflineAudio sound(options.time);
   config.audio = &sound;
+  const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
+  config.live = live.get();
 
   uint32_t written = 0, redone = 0;
   {
     Offscreen offscreen(device, config);
     RecordManifest manifest{options.scene, config.size.width, config.size.height, options.fps, options.spp,
                             options.seed, options.time, options.reducedMotion, options.format,
-                            options.input.empty() ? std::string() : fingerprint(inputText),
+                            options.input.empty() && !live ? std::string()
+                                                           : fingerprint(inputText + (live ? live->fingerprintText() : "")),
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
     claimFolder(folder, manifest, holdsFrames(folder));
@@ -146,7 +150,15 @@ int runRecord(const Options& options) {
   if (events) events->close();
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
-  if (whole && sound.commandCount() > 0) audio::writeWav(folder / "audio.wav", sound.render(double(frames) / options.fps));
+  if (whole && (sound.commandCount() > 0 || (live && live->audioClip()))) {
+    // The scene's own sound, and the film's music (--audio-in) from the film's first moment, mixed.
+    std::vector<float> samples = sound.render(double(frames) / options.fps);
+    if (const live::AudioClip* music = live ? live->audioClip() : nullptr) {
+      const std::vector<float> track = live::stereo48k(*music, options.time, double(frames) / options.fps);
+      for (size_t i = 0; i < std::min(samples.size(), track.size()); ++i) samples[i] += track[i];
+    }
+    audio::writeWav(folder / "audio.wav", samples);
+  }
   std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
               written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
               options.fps, options.spp, options.scene.c_str(), device.properties().deviceName);

@@ -80,6 +80,9 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
       case remote::RemoteCommand::Kind::Action:
         if (command.scene == showing) applied.actions.push_back({command.key, command.args});
         break;
+      case remote::RemoteCommand::Kind::Modulation:
+        applied.sources.emplace_back("osc." + command.key, command.args[0]);
+        break;
       case remote::RemoteCommand::Kind::Pointer:
         pressed_ = pressed_ || (command.down && !down_);
         down_ = command.down;
@@ -124,7 +127,7 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
   const auto at = Clock::now();
   if (!now && at - lastPublish_ < kPublishInterval) return;
   lastPublish_ = at;
-  control_.publish(std::string(renderer.info().name), params::snapshot(renderer.parameters()));
+  control_.publish(std::string(renderer.info().name), params::snapshot(renderer.parameters()), mappings_);
 }
 
 }  // namespace vitrine::host

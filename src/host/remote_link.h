@@ -22,6 +22,7 @@ struct RemoteApplied {
   std::vector<ActionCall> actions;       // for the scene showing, in order
   params::KeyValues values;              // applied to the scene showing (for the settings' bookkeeping)
   bool touched = false;                  // anything at all arrived (kiosk mode: a person is playing)
+  std::vector<std::pair<std::string, float>> sources;  // live input: osc.NAME values (/vitrine/mod/NAME)
 };
 
 class RemoteLink {
@@ -43,6 +44,8 @@ class RemoteLink {
   std::optional<Pointer> pointer(VkExtent2D framebuffer);
   // Tells every page what the scene showing is and its values (a few times a second at most).
   void publish(SceneRenderer& renderer, bool now = false);
+  // The live mapping lines playing the scene showing, shown on every page from the next publish.
+  void setMappings(std::vector<std::string> lines) { mappings_ = std::move(lines); }
   // For the menu: "remote 127.0.0.1:8730: 2 pages, 1520 messages, 3 ignored".
   std::string status() const;
 
@@ -53,6 +56,7 @@ class RemoteLink {
   bool down_ = false, pressed_ = false;
   std::chrono::steady_clock::time_point lastTouch_{}, lastPublish_{};
   size_t refused_ = 0;
+  std::vector<std::string> mappings_;
 };
 
 }  // namespace vitrine::host

@@ -94,6 +94,11 @@ class Schema {
   // Throws std::logic_error on a duplicate name, an unknown key or a value that does not parse. Declare
   // presets after the parameters they set.
   Schema& preset(Preset preset);
+  // A mapping the scene plays with when live audio input is on (live/mapping.h's line, target
+  // unqualified: "audio.bass=fold:1:1.12 release=0.3"). Checked by a unit test against the scene, since
+  // the parameter layer knows no sources.
+  Schema& audioMapping(std::string line) { return audioMappings_.push_back(std::move(line)), *this; }
+  const std::vector<std::string>& audioMappings() const { return audioMappings_; }
 
   // A default-constructed settings struct (S{}): a scratch copy to validate values on, with no scene.
   std::shared_ptr<void> makeDefaults() const { return makeDefaults_(); }
@@ -107,6 +112,7 @@ class Schema {
   std::function<std::shared_ptr<void>()> makeDefaults_;
   std::vector<Param> params_;
   std::vector<Preset> presets_;
+  std::vector<std::string> audioMappings_;
 };
 
 // Builders: a field of struct S bound by member pointer. The default is the struct's own initial value

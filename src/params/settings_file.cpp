@@ -216,6 +216,23 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
         else
           settings.unknown["scenes"][name] = values;  // a scene of another version: kept as it is
       }
+    } else if (key == "mappings" && value.is_object()) {
+      for (const auto& [name, lines] : value.items()) {
+        if (!schemaFor || !schemaFor(name) || !lines.is_array()) {
+          settings.unknown["mappings"][name] = lines;  // another version's scene, or not ours to judge
+          continue;
+        }
+        for (const auto& line : lines) {
+          if (line.is_string()) settings.mappings[name].push_back(line.get<std::string>());
+          else result.warnings.push_back(fmt::format("{}: mappings.{}: expected lines of text, found {}; dropped", where, name, line.type_name()));
+        }
+      }
+    } else if (key == "live" && value.is_object()) {
+      for (const auto& [name, item] : value.items()) {
+        if (name == "audio_input" && item.is_boolean()) settings.audioInput = item.get<bool>();
+        else if (name == "audio_device" && item.is_string()) settings.audioDevice = item.get<std::string>();
+        else settings.unknown["live"][name] = item;
+      }
     } else {
       settings.unknown[key] = value;
     }
@@ -265,6 +282,17 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
       if (param && param->has(kTransient)) continue;
       scene[key] = typedValue(param, text);
     }
+  }
+  if (!settings.mappings.empty()) {
+    Json& mappings = out["mappings"];
+    if (!mappings.is_object()) mappings = Json::object();
+    for (const auto& [name, lines] : settings.mappings) mappings[name] = lines;
+  }
+  if (settings.audioInput || !settings.audioDevice.empty()) {
+    Json& live = out["live"];
+    if (!live.is_object()) live = Json::object();
+    live["audio_input"] = settings.audioInput;
+    if (!settings.audioDevice.empty()) live["audio_device"] = settings.audioDevice;
   }
 
   if (const fs::path folder = path.parent_path(); !folder.empty()) {
@@ -316,6 +344,12 @@ Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChange
     }
     if (theirs.empty() && mine == ours.scenes.end()) disk.scenes.erase(scene);
   }
+  for (const std::string& scene : changed.mappings) {
+    const auto mine = ours.mappings.find(scene);
+    if (mine == ours.mappings.end() || mine->second.empty()) disk.mappings.erase(scene);
+    else disk.mappings[scene] = mine->second;
+  }
+  if (changed.live) disk.audioInput = ours.audioInput, disk.audioDevice = ours.audioDevice;
   return disk;
 }
 

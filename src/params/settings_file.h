@@ -2,7 +2,12 @@
 // The gallery's settings file: the scene it last showed and every scene's saved values, e.g.
 //
 //   {"version": 1, "scene": "noodles",
-//    "scenes": {"kifs": {"step": 9, "tier": "high"}, "noodles": {"grid": "32x32x8", "msaa": "4x"}}}
+//    "scenes": {"kifs": {"step": 9, "tier": "high"}, "noodles": {"grid": "32x32x8", "msaa": "4x"}},
+//    "mappings": {"kifs": ["midi.cc.1.21=kifs.fold:0.9:1.2"]},
+//    "live": {"audio_input": true, "audio_device": ""}}
+//
+// Mappings (live/mapping.h) are kept here as their lines of text; whoever applies them checks them
+// against their scene, as values are checked by their parse.
 //
 // Values are typed by kind (Float/Int: numbers, Bool: true/false, Choice/Custom: strings) and every
 // one is validated by the parameter's own parse, as --set values are. A file is the user's: nothing in
@@ -35,6 +40,9 @@ std::filesystem::path defaultSettingsPath();
 struct Settings {
   std::string scene;                         // the scene to start with; empty: the gallery's default
   std::map<std::string, KeyValues> scenes;   // per scene: canonical key=value text, ready for applyValues
+  std::map<std::string, std::vector<std::string>> mappings;  // per scene: the user's mapping lines
+  bool audioInput = false;                   // live audio input on (the scenes' audio mappings play)
+  std::string audioDevice;                   // the capture device; empty: the default output's monitor
   // Everything read but not understood, in the file's own shape (top-level keys, scenes this version
   // does not have, unknown keys inside known scenes); saveSettings writes it back underneath.
   nlohmann::ordered_json unknown = nlohmann::ordered_json::object();
@@ -82,7 +90,9 @@ struct SettingsChanges {
   bool all = false;    // write everything (--reset-settings: the file starts over)
   bool scene = false;  // the scene to start with
   std::map<std::string, std::set<std::string>> keys;  // per scene, the keys changed (or removed)
-  bool empty() const { return !all && !scene && keys.empty(); }
+  std::set<std::string> mappings;  // scenes whose mapping lines changed (written whole)
+  bool live = false;               // audio input on/off or its device
+  bool empty() const { return !all && !scene && keys.empty() && mappings.empty() && !live; }
 };
 // `disk` (the file as it is now) with `ours` written over it where `changed` says, key by key; a
 // changed key `ours` no longer holds is removed. Everything else on disk stays as the other writer

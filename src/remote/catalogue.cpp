@@ -94,6 +94,8 @@ std::string Catalogue::check(const RemoteCommand& command) const {
       return "pointer: x and y are numbers from 0 to 1";
     return {};
   }
+  if (command.kind == Kind::Modulation)  // the source's name was judged by the parser; a value is clamped
+    return command.args.size() == 1 && std::isfinite(command.args[0]) ? "" : "mod: one finite number";
   const SceneInfo* scene = findScene(command.scene);
   if (!scene) return fmt::format("unknown scene '{}'", command.scene.substr(0, kMaxNameLength));
   const params::Schema& schema = scene->schema();
@@ -117,7 +119,8 @@ std::string Catalogue::check(const RemoteCommand& command) const {
     case Kind::Action:
       if (command.key.size() > kMaxNameLength) return fmt::format("{}: unknown action", scene->name);
       return checkAction(*scene, ActionCall{command.key, command.args});
-    case Kind::Pointer: break;
+    case Kind::Pointer:
+    case Kind::Modulation: break;
   }
   return {};
 }

@@ -15,6 +15,7 @@ struct RemoteCommand {
     Set,      // scene's parameter `key` = `value` (canonical text, as --set takes it)
     Action,   // scene's action `key` with `args` ("neon" "release" {x, y, z})
     Pointer,  // the current scene's cursor: `position` 0..1 from the top left, `down` while touching
+    Modulation,  // live input's source osc.`key` = `args[0]` (/vitrine/mod/NAME)
   };
   Kind kind = Kind::Scene;
   std::string scene;

@@ -217,6 +217,11 @@ ParseResult commandFromOsc(std::string_view path, std::span<const OscArgument> a
   }
   if (segments.size() != 3 || !plainName(segments[1]) || !plainName(segments[2]))
     return fail("unknown address; expected /vitrine/<scene>/<name>");
+  if (segments[1] == "mod") {  // no scene is called "mod": a live source, osc.NAME
+    const auto number = args.size() == 1 && isNumeric(args[0]) ? finiteFloat(args[0].number) : std::nullopt;
+    if (!number) return fail(fmt::format("/vitrine/mod/{} expects one finite number, 0 to 1", segments[2]));
+    return succeed({.kind = RemoteCommand::Kind::Modulation, .key = std::string(segments[2]), .args = {*number}});
+  }
   const std::string scene(segments[1]), name(segments[2]);
 
   if (catalogue.hasAction(scene, name)) {

@@ -13,6 +13,7 @@
 //   /vitrine/<scene>/<param> f|i|h|d|s|T|F   set a parameter
 //   /vitrine/<scene>/<action> f|i...        run an action with numeric arguments
 //   /vitrine/pointer x y [down]            the cursor, 0..1 from the top left; down: T/F or a number
+//   /vitrine/mod/<name> f|i|h|d|T|F        live input's source osc.<name>, 0..1 (docs/LIVE.md)
 #include "remote/catalogue.h"
 #include "remote/command.h"
 

@@ -49,7 +49,9 @@ class RemoteControl {
   const Catalogue& catalogue() const { return *catalogue_; }
 
   std::vector<RemoteCommand> drain() { return inbox_.drain(); }
-  void publish(std::string scene, params::KeyValues values) { web_->publish(std::move(scene), std::move(values)); }
+  void publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings = {}) {
+    web_->publish(std::move(scene), std::move(values), std::move(mappings));
+  }
   RemoteStatsSnapshot stats() const { return stats_.snapshot(); }
   size_t sockets() const { return web_->sockets(); }
 

@@ -97,11 +97,11 @@ struct WebServer::Impl {
   }
 
   // On the I/O thread: the state as JSON, sent to every open socket unless unchanged.
-  void broadcast(const std::string& scene, const params::KeyValues& values) {
+  void broadcast(const std::string& scene, const params::KeyValues& values, const std::vector<std::string>& mappings) {
     nlohmann::json object = nlohmann::json::object();
     for (const auto& [key, text] : values) object[key] = text;
     auto state = std::make_shared<const std::string>(
-        nlohmann::json{{"type", "state"}, {"scene", scene}, {"values", std::move(object)}}.dump(
+        nlohmann::json{{"type", "state"}, {"scene", scene}, {"values", std::move(object)}, {"mappings", mappings}}.dump(
             -1, ' ', false, nlohmann::json::error_handler_t::replace));
     if (hub.lastState && *hub.lastState == *state) return;
     hub.lastState = state;
@@ -117,10 +117,9 @@ WebServer::~WebServer() = default;
 
 uint16_t WebServer::port() const { return impl_->port; }
 
-void WebServer::publish(std::string scene, params::KeyValues values) {
-  net::post(impl_->io, [impl = impl_.get(), scene = std::move(scene), values = std::move(values)] {
-    impl->broadcast(scene, values);
-  });
+void WebServer::publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings) {
+  net::post(impl_->io, [impl = impl_.get(), scene = std::move(scene), values = std::move(values),
+                        mappings = std::move(mappings)] { impl->broadcast(scene, values, mappings); });
 }
 
 size_t WebServer::sockets() const { return impl_->hub.sockets.load(); }

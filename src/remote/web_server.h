@@ -47,7 +47,8 @@ class WebServer {
   uint16_t port() const;
   // Any thread, cheap: the state every socket is sent ({"type":"state",...}), now and to each new
   // socket on connect. The JSON is made on the I/O thread; an unchanged state is not resent.
-  void publish(std::string scene, params::KeyValues values);
+  // `mappings`: the live mapping lines playing the scene (shown on the page).
+  void publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings = {});
   size_t sockets() const;  // open WebSockets, for tests and a status line
 
   struct Impl;

@@ -326,10 +326,10 @@ TEST(SceneActions, CheckedAgainstTheirDeclaration) {
   EXPECT_EQ(checkAction(neon, {"release", {0.0f, 6.0f, 4.0f}}), "");
   EXPECT_EQ(checkAction(neon, {"release", {0.0f, 6.0f}}), "neon.release takes 3 numbers (x y z), not 2");
   EXPECT_EQ(checkAction(neon, {"release", {0.0f, NAN, 4.0f}}), "neon.release: arguments must be finite numbers");
-  EXPECT_EQ(checkAction(neon, {"explode", {}}), "scene neon has no action 'explode' (it has release)");
+  EXPECT_EQ(checkAction(neon, {"explode", {}}), "scene neon has no action 'explode' (it has release, burst)");
   EXPECT_EQ(checkAction(*findScene("kifs"), {"release", {}}), "scene kifs has no action 'release' (it has none)");
   EXPECT_EQ(checkAction(*findScene("glass"), {"shuffle", {}}), "");
-  EXPECT_EQ(checkAction(neon, {"ex\x1bplode", {}}), "scene neon has no action 'ex\\x1bplode' (it has release)");
+  EXPECT_EQ(checkAction(neon, {"ex\x1bplode", {}}), "scene neon has no action 'ex\\x1bplode' (it has release, burst)");
 }
 
 }  // namespace

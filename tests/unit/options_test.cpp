@@ -129,15 +129,29 @@ TEST(OptionsModes, AFlagOutsideItsModeIsRefusedNamingTheMode) {
   EXPECT_EQ(refusal({"--frames", "3"}), "--frames is only for --headless and bench runs, not the gallery.");
   EXPECT_EQ(refusal({"bench", "--json", "b.json", "--remote"}), "--remote is only for the gallery and --headless runs, not bench.");
   EXPECT_EQ(refusal({"--list-params", "kifs", "--validate"}), "accepted");  // listings take what they need
+  EXPECT_EQ(headless({"--audio-in-device", "default"}), "--audio-in-device is only for the gallery, not --headless.");
+  EXPECT_EQ(refusal({"--midi-in", "a.mid"}), "--midi-in is only for --headless and record runs, not the gallery.");
+  EXPECT_EQ(refusal({"bench", "--json", "b.json", "--map", "lfo.sine.2=fold"}),
+            "--map is only for the gallery, --headless and record runs, not bench.");
+}
+
+TEST(OptionsModes, LiveInputFlags) {
+  const Options o = parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--map", "a.map", "--map",
+                           "audio.bass=fold", "--audio-in", "song.wav", "--midi-in", "knob.mid"});
+  EXPECT_EQ(o.maps, (std::vector<std::string>{"a.map", "audio.bass=fold"}));
+  EXPECT_EQ(o.audioIn, "song.wav");
+  EXPECT_EQ(o.midiIn, "knob.mid");
+  EXPECT_EQ(refusal({"--audio-in", "song.wav", "--audio-in-device", "default"}),
+            "--audio-in FILE and --audio-in-device both feed the audio sources: give one of them.");
 }
 
 TEST(OptionsModes, AFlagGivenTwiceIsRefusedUnlessRepeatable) {
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--scene", "neon", "--out", "x.exr"}),
-            "--scene is given twice; only --set and --preset may be given more than once.");
+            "--scene is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "a.exr", "--out", "b.exr"}),
-            "--out is given twice; only --set and --preset may be given more than once.");
+            "--out is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--validate", "--validate"}),
-            "--validate is given twice; only --set and --preset may be given more than once.");
+            "--validate is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", "step=2", "--set", "step=3",
                      "--preset", "a", "--preset", "b"}),
             "accepted");

@@ -41,7 +41,9 @@ TEST(RemoteCatalogue, JsonDescribesEveryScene) {
   EXPECT_EQ(tier["kind"], "choice");
   EXPECT_EQ(tier["choices"], (std::vector<std::string>{"auto", "high", "medium", "low"}));
   EXPECT_TRUE(kifs["params"][2]["logarithmic"]);
-  EXPECT_TRUE(kifs["params"][3]["transient"]);
+  EXPECT_EQ(kifs["params"][3]["key"], "fold");  // played by the bass, and saved
+  EXPECT_FALSE(kifs["params"][3]["transient"]);
+  EXPECT_TRUE(kifs["params"][4]["transient"]);
   for (const auto& scene : json["scenes"])
     for (const auto& param : scene["params"])
       EXPECT_TRUE(param["kind"] == "float" || param["kind"] == "int" || param["kind"] == "bool" ||
@@ -52,9 +54,11 @@ TEST(RemoteCatalogue, JsonListsActions) {
   const auto json = nlohmann::json::parse(Catalogue().json());
   std::map<std::string, nlohmann::json> actions;
   for (const auto& scene : json["scenes"]) actions[scene["name"]] = scene["actions"];
-  ASSERT_EQ(actions["neon"].size(), 1u);
+  ASSERT_EQ(actions["neon"].size(), 2u);
   EXPECT_EQ(actions["neon"][0]["name"], "release");
   EXPECT_EQ(actions["neon"][0]["args"], (std::vector<std::string>{"x", "y", "z"}));
+  EXPECT_EQ(actions["neon"][1]["name"], "burst");  // the beat's, with live audio
+  EXPECT_TRUE(actions["neon"][1]["args"].empty());
   ASSERT_GE(actions["glass"].size(), 1u);
   EXPECT_EQ(actions["glass"][0]["name"], "shuffle");
   EXPECT_TRUE(actions["glass"][0]["args"].empty());

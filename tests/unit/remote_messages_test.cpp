@@ -140,6 +140,17 @@ TEST(RemoteMessages, OscAddressesBecomeCommands) {
   EXPECT_EQ(result.command->kind, Kind::Action);
   EXPECT_TRUE(result.command->args.empty());
 
+  // Live input's OSC sources: /vitrine/mod/NAME with one number, checked and carried as osc.NAME.
+  const std::vector<OscArgument> level{number('f', 0.25)};
+  result = commandFromOsc("/vitrine/mod/fader_1", level, catalogue);
+  ASSERT_TRUE(result.command) << result.error;
+  EXPECT_EQ(result.command->kind, Kind::Modulation);
+  EXPECT_EQ(result.command->key, "fader_1");
+  EXPECT_EQ(result.command->args, (std::vector<float>{0.25f}));
+  EXPECT_EQ(catalogue.check(*result.command), "");
+  EXPECT_FALSE(commandFromOsc("/vitrine/mod/fader", {}, catalogue).command);
+  EXPECT_FALSE(commandFromOsc("/vitrine/mod/fader", neon, catalogue).command);  // a string
+
   const std::vector<OscArgument> touch{number('f', 0.1), number('f', 0.9), {.type = 'T', .number = 1}};
   result = commandFromOsc("/vitrine/pointer", touch, catalogue);
   ASSERT_TRUE(result.command) << result.error;

@@ -3,7 +3,7 @@
 W3C WebDriver protocol (standard library only), drives a headless neon run over its WebSocket: arrow
 keys on the `particles` slider change the parameter, and a drag on the touch pad releases tubes along
 its path. Requests without the access token are refused."""
-import json, os, re, signal, socket, subprocess, sys, time, urllib.error, urllib.request
+import json, os, re, signal, socket, struct, subprocess, sys, time, urllib.error, urllib.request
 
 vitrine, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -43,6 +43,7 @@ def status_of(url):
 
 run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x36", "--frames", "3600",
                         "--set", "chains=256", "--set", "autopilot_idle=60", "--validate", "--remote",
+                        "--map", "osc.fader=bloom_strength:0:2",
                         "--remote-bind", "127.0.0.1:0", "--events", events, "--out", os.path.join(out, "remote.exr")],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 driver = None
@@ -90,6 +91,13 @@ try:
 
     http("POST", s + "/url", {"url": url})
     find('body[data-connection="live"][data-scene="neon"]')
+    # The live mappings playing the scene are listed (docs/LIVE.md); an OSC fader drives one.
+    item = find("#mappings li")
+    if http("GET", f"{s}/element/{item}/text")["value"] != "osc.fader=neon.bloom_strength:0:2":
+        fail("the page should list the mapping osc.fader=neon.bloom_strength:0:2")
+    address, fader = b"/vitrine/mod/fader\0\0", b",f\0\0" + struct.pack(">f", 1.0)
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as osc:
+        osc.sendto(address + fader, ("127.0.0.1", int(base.split(":")[2].split("/")[0])))
     slider = find('input[data-key="particles"]')
     # The first state push shows the run's value: particles 32, the slider's position 28 of 4..64.
     deadline = time.time() + 10
@@ -128,6 +136,9 @@ sets = [e for e in lines if e["event"] == "remote_set" and e["key"] == "particle
 releases = [e for e in lines if e["event"] == "release" and e["by"] == "cursor"]
 if not sets or sets[-1]["value"] != "28":
     fail(f"the slider should have set particles=28, got {[e['value'] for e in sets]}")
+mapped = [e for e in lines if e["event"] == "mapped" and e["by"] == "osc.fader"]
+if not mapped or mapped[-1]["value"] != "2":
+    fail(f"/vitrine/mod/fader 1 should have set bloom_strength=2 through the mapping, got {mapped}")
 if len(releases) < 1:  # a drag draws one tube: one release where it starts
     fail(f"the pad's drag should draw a tube, got {len(releases)} releases")
 print(f"ok: particles set to {sets[-1]['value']} in {len(sets)} steps, {len(releases)} tube(s) drawn from the pad")

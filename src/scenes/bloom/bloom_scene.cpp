@@ -129,8 +129,11 @@ class BloomScene final : public Scene {
     const Ray ray = cameraRay(input.cursor.normalized.x, input.cursor.normalized.y, aspect_);
     const CursorVapour vapour = cursorVapour(ray);
     const bool near = input.cursor.present && vapour.distance < settings_.reach * kCrystalRadius;
-    source_.voxel = worldToVoxel(vapour.point, uint32_t(settings_.lattice));
-    source_.rate = settings_.sourceRate * (input.cursor.dragging ? settings_.dragBoost : 1.0f);
+    // Without the cursor, the crystal breathes vapour in at its heart as strongly as `breath` says
+    // (live input plays it with the music's level).
+    const bool breathing = !near && settings_.breath > 0.0f;
+    source_.voxel = worldToVoxel(breathing ? glm::vec3(0.0f) : vapour.point, uint32_t(settings_.lattice));
+    source_.rate = settings_.sourceRate * (breathing ? settings_.breath : input.cursor.dragging ? settings_.dragBoost : 1.0f);
     stepSeconds_ = input.dt;
     if (stepsPending_ < std::max(1, int(std::lround(kMaxSecondsPerFrame / stepSeconds_))))
       ++stepsPending_;
@@ -138,7 +141,7 @@ class BloomScene final : public Scene {
       givenUpSeconds_ += double(stepSeconds_);
 
     // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
-    proxy_ = proxyStep(proxy_, !exhaling_ && input.cursor.present && vapour.distance < kCrystalRadius, input.dt,
+    proxy_ = proxyStep(proxy_, !exhaling_ && ((input.cursor.present && vapour.distance < kCrystalRadius) || breathing), input.dt,
                        {0.20f, settings_.decayRising, settings_.decayVenting});
     if (settings_.phaseSource == PhaseSource::Cpu)
       detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
@@ -159,7 +162,7 @@ class BloomScene final : public Scene {
     // any vapour enters again, so a cursor that simply stays sees every flip, the bloom and the vent.
     if (detector_.climax() && !exhaling_ && time_ - climaxTime_ >= kBloomSeconds) exhaling_ = true;
     if (exhaling_ && !detector_.climax() && detector_.phase() == Phase::Pristine) exhaling_ = false;
-    source_.on = near && !exhaling_;
+    source_.on = (near || breathing) && !exhaling_;
     // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins.
     if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
   }

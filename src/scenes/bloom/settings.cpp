@@ -20,6 +20,9 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"source", "source strength", "Concentration per second the hovering cursor "
                                  "injects at its centre.", "vapour"},
                                 &S::sourceRate, 0.0, 10.0));
+    s.add(params::floatParam<S>({"breath", "breath", "Without the cursor, vapour drawn in at the crystal's heart, "
+                                 "times the source strength (live audio breathes it with the level).", "vapour"},
+                                &S::breath, 0.0, 3.0));
     s.add(params::floatParam<S>({"drag_boost", "drag boost", "Times stronger while the button is held.", "vapour"},
                                 &S::dragBoost, 1.0, 10.0));
     s.add(params::floatParam<S>({"sigma", "source sigma", "Width of the Gaussian source, voxels at 96^3.", "vapour"},
@@ -54,6 +57,7 @@ const params::Schema& schema() {
                                  "stills).", "actions", kTransient},
                                 &S::fill, 0.0, 1.05));
     s.add(params::boolParam<S>({"vent", "vent now", "Empty the lattice at once.", "actions", kTransient}, &S::vent));
+    s.audioMapping("audio.level=breath:0:2 attack=0.05 release=0.8");
     s.preset({"fine", "A 160^3 lattice with more samples.", {{"lattice", "160"}, {"samples", "96"}}});
     s.preset({"quick", "A 64^3 lattice, fast phases: for slow devices.",
               {{"lattice", "64"}, {"source", "3"}, {"samples", "40"}}});

@@ -14,6 +14,7 @@ struct Settings {
   float decayRising = 0.10f;       // per second while vapour flows in
   float decayVenting = 0.40f;      // per second once it stops
   float sourceRate = 0.5f;         // concentration per second at the source centre, hovering
+  float breath = 0.0f;             // without the cursor: a source at the heart, times sourceRate (live input)
   float dragBoost = 2.5f;          // times the source rate while the button is held
   float sigma = 20.0f;             // source width, voxels at 96^3
   float reach = 1.3f;              // the cursor's ray injects within this many crystal radii of the centre

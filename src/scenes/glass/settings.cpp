@@ -150,6 +150,7 @@ const params::Schema& schema() {
                                   "graphics part is two TPCs).", "camera"},
                                  &S::pass, {"raster", "compute"}));
 
+    s.audioMapping("audio.high=abbe:12:2 curve=log attack=0.02 release=0.4");
     // The original's presets, value for value. A preset sets everything that makes its look, so it
     // gives the same picture whatever was chosen before it (physical optics, Sellmeier, another
     // panorama...): the original's common values (perspective at 45 degrees, exact refraction, jitter

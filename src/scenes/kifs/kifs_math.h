@@ -60,7 +60,8 @@ inline glm::vec3 tumble(glm::vec3 p, int step, glm::vec2 angles) {
 }
 
 // The distance estimate the march samples at stage `step`, at a point already in the tumbled frame.
-inline FieldSample field(glm::vec3 p, int step) {
+// `fold` scales the asymmetric fold's offsets (1: the write-up's).
+inline FieldSample field(glm::vec3 p, int step, float fold = 1.0f) {
   if (step <= 2) return {glm::length(p) - 0.5f, glm::abs(p)};
 
   if (step <= 5) {
@@ -74,7 +75,7 @@ inline FieldSample field(glm::vec3 p, int step) {
   }
 
   glm::vec3 q = p + glm::sin(glm::vec3(p.z, p.x, p.y) * kWarpFreq) * kWarpAmp;  // domain warp, axes coupled
-  q = glm::abs(q) - kFold;                                                      // asymmetric fold
+  q = glm::abs(q) - kFold * fold;                                                     // asymmetric fold
   glm::vec2 r = rotate({q.x, q.y}, kPlaneRotations.x);
   q.x = r.x, q.y = r.y;
   r = rotate({q.x, q.z}, kPlaneRotations.y);

@@ -45,7 +45,8 @@ class KifsScene final : public Scene {
                     settings_.step,
                     settingsFor(activeTier()).marchSteps,
                     reducedMotion_ ? 0.0f : 0.045f,
-                    reducedMotion_ ? 0u : uint32_t(frame.input.frame)};
+                    reducedMotion_ ? 0u : uint32_t(frame.input.frame),
+                    settings_.fold};
     frame.transition(frame.target, gpu::use::ComputeWrite);
     march_.bind(frame.cmd);
     march_.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));

@@ -11,6 +11,7 @@ struct Settings {
   int step = kStepCount;
   Tier tier = Tier::Auto;
   float targetMs = 8.0f;
+  float fold = 1.0f;                 // the fold offsets' scale (live input plays it)
   float dragX = 0.0f, dragY = 0.0f;  // accumulated cursor drag, in normalised output units
 };
 

@@ -156,6 +156,7 @@ class NeonScene final : public Scene {
   void release(double time, glm::vec3 position, const char* by);
   void handleCursor(const FrameInput& input);
   void autopilot(const FrameInput& input);
+  glm::vec3 penPosition(double t, uint32_t pen) const;
   void recordChains(const FrameContext& frame);
   uint32_t aliveChains();
   void recordFacadeAndTubes(const FrameContext& frame, const gpu::StreamSlice& block);
@@ -248,17 +249,19 @@ void NeonScene::autopilot(const FrameInput& input) {
   const float rate = settings_.autopilotRate * (reducedMotion_ ? kReducedMotionAutopilot : 1.0f);
   const uint32_t pens = std::clamp(uint32_t(std::lround(rate / 10.0f)), kAutopilotPens, 48u);
   while (autopilotNext_ <= input.time) {
-    const double t = autopilotNext_;
-    for (uint32_t pen = 0; pen < pens; ++pen) {
-      const double phase = double(pen) * (pen < kAutopilotPens ? 2.1 : 2.39996);
-      const glm::vec3 jitter{maths::hash01({uint32_t(releases_), 1u, 0x6a11u}) - 0.5f,
-                             maths::hash01({uint32_t(releases_), 2u, 0x6a11u}) - 0.5f, 0.0f};
-      const glm::vec3 at{float(7.5 * std::sin(0.23 * t + phase)), float(7.0 + 5.0 * std::sin(0.31 * t + 1.7 * phase)),
-                         kReleasePlaneZ + float(1.5 * std::sin(0.17 * t + phase))};
-      release(t, at + jitter * 1.2f, "autopilot");
-    }
+    for (uint32_t pen = 0; pen < pens; ++pen) release(autopilotNext_, penPosition(autopilotNext_, pen), "autopilot");
     autopilotNext_ += double(pens) / double(rate);
   }
+}
+
+// Where pen `pen` is at time t, a little off its Lissajous path (the jitter changes with every release).
+glm::vec3 NeonScene::penPosition(double t, uint32_t pen) const {
+  const double phase = double(pen) * (pen < kAutopilotPens ? 2.1 : 2.39996);
+  const glm::vec3 jitter{maths::hash01({uint32_t(releases_), 1u, 0x6a11u}) - 0.5f,
+                         maths::hash01({uint32_t(releases_), 2u, 0x6a11u}) - 0.5f, 0.0f};
+  const glm::vec3 at{float(7.5 * std::sin(0.23 * t + phase)), float(7.0 + 5.0 * std::sin(0.31 * t + 1.7 * phase)),
+                     kReleasePlaneZ + float(1.5 * std::sin(0.17 * t + phase))};
+  return at + jitter * 1.2f;
 }
 
 void NeonScene::update(const FrameInput& input) {
@@ -276,6 +279,8 @@ void NeonScene::update(const FrameInput& input) {
     if (call.name == "release") {
       lastInput_ = input.time;
       release(input.time, clampToReleaseVolume({call.args[0], call.args[1], call.args[2]}), "action");
+    } else if (call.name == "burst") {  // an accent (a beat): the autopilot plays on around it
+      for (uint32_t pen = 0; pen < kAutopilotPens; ++pen) release(input.time, penPosition(input.time, pen), "burst");
     }
   autopilot(input);
   engine_->step(input.dt);
@@ -431,6 +436,7 @@ void NeonScene::drawPanel() {
 constexpr std::string_view kReleaseArgs[] = {"x", "y", "z"};
 constexpr SceneAction kActions[] = {
     {"release", kReleaseArgs, "a tube head released at (x, y, z) metres: x across, y up from the floor, z depth"},
+    {"burst", {}, "a tube from each of the autopilot's pens at once, where they are now (a beat, with live audio)"},
 };
 
 constinit const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema,

@@ -68,6 +68,8 @@ const params::Schema& schema() {
     s.add(params::choiceParam<S>({"stage", "stage", "Show the frame after this stage: base, tubes, bloom, dof, "
                                   "tint, final.", "look", kTransient},
                                  &S::stage, {"base", "tubes", "bloom", "dof", "tint", "final"}));
+    s.audioMapping("audio.beat=burst");
+    s.audioMapping("audio.level=glow:2:4.5 curve=log attack=0.02 release=0.4");
     s.preset({"dense", "4096 chains of 32, the autopilot releasing fast enough to keep most of them alive.",
               {{"chains", "4096"}, {"autopilot_rate", "1400"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",

@@ -101,6 +101,7 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"speed", "time speed", "How fast the potentials drift, noise units per second.",
                                  "field"},
                                 &S::speed, 0.0, 10.0));
+    s.audioMapping("audio.mid=speed:0.3:3 attack=0.1 release=0.6");
     s.add(params::floatParam<S>({"lift", "lift", "A uniform upward flow added to the field.", "field"}, &S::lift,
                                 -10.0, 10.0));
     s.add(params::choiceParam<S>({"field", "field", "curl: divergence-free curl noise; bitangent: the cross "

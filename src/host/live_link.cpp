@@ -1,0 +1,211 @@
+#include "host/live_link.h"
+
+#include "core/error.h"
+#include "host/modes.h"
+#include "host/scene_renderer.h"
+#include "live/audio_capture.h"
+#include "live/audio_file_input.h"
+#include "live/midi_input.h"
+#include "live/smf.h"
+#include "scenes/scene.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <utility>
+
+namespace vitrine::host {
+namespace {
+
+// A MIDI channel message as the sources it moves.
+void applyMidi(const live::MidiMessage& message, live::SourceBank& sources) {
+  const std::string where = fmt::format("{}.{}", message.channel(), message.data1);
+  if (message.type() == 0xB0) {
+    sources.set("midi.cc." + where, float(message.data2) / 127.0f);
+  } else if (message.type() == 0x90 || message.type() == 0x80) {
+    const bool on = message.type() == 0x90 && message.data2 > 0;  // a note-on of velocity 0 is a note-off
+    sources.set("midi.note." + where, on ? float(message.data2) / 127.0f : 0.0f);
+    sources.set("midi.gate." + where, on ? 1.0f : 0.0f);
+  }
+}
+
+// --map's argument: a line when it holds '=' (a file name seldom does), else a mapping file.
+std::vector<live::Mapping> mappingsOf(const LiveConfig& config) {
+  std::vector<live::Mapping> mappings;
+  for (const std::string& map : config.maps) {
+    if (map.find('=') == std::string::npos) {
+      for (live::Mapping& mapping : live::loadMappingFile(map)) mappings.push_back(std::move(mapping));
+      continue;
+    }
+    std::string why;
+    auto mapping = live::parseMapping(map, &why);
+    if (!mapping) throw Error(fmt::format("--map {}: {}", map, why));
+    if (mapping->scene.empty()) mapping->scene = config.runScene;
+    const SceneInfo* scene = findScene(mapping->scene);
+    if (!scene) throw Error(fmt::format("--map {}: unknown scene '{}'; vitrine --list-scenes shows them", map, mapping->scene));
+    if (auto reason = live::checkMapping(*mapping, *scene); !reason.empty())
+      throw Error(fmt::format("--map {}: {}", map, reason));
+    mappings.push_back(std::move(*mapping));
+  }
+  return mappings;
+}
+
+}  // namespace
+
+LiveLink::LiveLink(LiveConfig config) : config_(std::move(config)), commandLine_(mappingsOf(config_)) {
+  if (!config_.audioFile.empty())
+    audioFile_ = std::make_unique<live::AudioFileInput>(config_.audioFile, config_.loopAudioFile);
+  if (config_.captureAudio) setAudioCapture(true, config_.audioDevice);
+  if (!config_.midiFile.empty()) midiFile_ = std::make_unique<live::SmfPlayer>(live::readSmf(config_.midiFile));
+  if (config_.midiPorts) midiPorts_ = std::make_unique<live::MidiInput>();
+}
+
+LiveLink::~LiveLink() = default;
+
+void LiveLink::setAudioCapture(bool on, const std::string& device) {
+  config_.captureAudio = on;
+  config_.audioDevice = device;
+  capture_.reset();  // a device switch closes the old stream first
+  if (on) {
+    capture_ = std::make_unique<live::AudioCapture>(live::AudioCapture::Options{.device = device});
+    if (!capture_->active()) capture_.reset();  // it said why, once
+  }
+  if (scene_) remap();
+}
+
+void LiveLink::setScene(const SceneInfo& scene, const std::vector<std::string>& saved, std::vector<std::string>* warnings) {
+  scene_ = &scene;
+  saved_.clear();
+  for (const std::string& line : saved) {
+    std::string why;
+    auto mapping = live::parseMapping(line, &why);
+    if (mapping && mapping->scene.empty()) mapping->scene = scene.name;
+    if (mapping) why = live::checkMapping(*mapping, scene);
+    if (!why.empty()) {
+      if (warnings) warnings->push_back(fmt::format("mapping '{}' for {}: {}; skipped", line, scene.name, why));
+      continue;
+    }
+    saved_.push_back(std::move(*mapping));
+  }
+  remap();
+}
+
+void LiveLink::remap() {
+  std::vector<live::Mapping> mappings = saved_;
+  for (const live::Mapping& mapping : commandLine_)
+    if (mapping.scene == scene_->name) mappings.push_back(mapping);
+  if (audioOn())
+    for (const std::string& line : scene_->schema().audioMappings()) {
+      auto mapping = live::parseMapping(line, nullptr);  // every scene's are checked by a unit test
+      if (!mapping) continue;
+      mapping->scene = scene_->name;
+      const bool taken = std::any_of(mappings.begin(), mappings.end(), [&](const live::Mapping& m) { return m.target == mapping->target; });
+      if (!taken && live::checkMapping(*mapping, *scene_).empty()) mappings.push_back(std::move(*mapping));
+    }
+  modulator_.setMappings(*scene_, std::move(mappings));
+}
+
+void LiveLink::readInputs(double time) {
+  sources_.setTime(time);
+  std::optional<live::AudioFeatures> audio;
+  if (audioFile_) audio = audioFile_->at(config_.audioFileClock ? config_.audioFileClock() : time);
+  else if (capture_) audio = capture_->take();
+  if (audio) {
+    sources_.set("audio.bass", audio->bass);
+    sources_.set("audio.mid", audio->mid);
+    sources_.set("audio.high", audio->high);
+    sources_.set("audio.level", audio->level);
+    sources_.set("audio.onset", audio->onset);
+    sources_.set("audio.beat", audio->beat);
+    sources_.set("audio.tempo", audio->tempo / 240.0f);  // 0..1 spans 0..240 beats a minute
+  }
+  // A MIDI file's events apply at the first step at or after their time.
+  if (midiFile_)
+    for (const live::MidiMessage& message : midiFile_->until(time + 1e-9)) applyMidi(message, sources_);
+  if (midiPorts_) {
+    midiPorts_->poll();
+    for (const live::MidiMessage& message : midiPorts_->drain()) applyMidi(message, sources_);
+  }
+  // MIDI learn watches the controls a person moves: MIDI and gamepads.
+  for (const auto& [name, value] : sources_.values()) {
+    if (!name.starts_with("midi.") && !name.starts_with("pad.")) continue;
+    const auto seen = controlsSeen_.find(name);
+    const float was = seen == controlsSeen_.end() ? (name.find(".axis.") != std::string::npos ? 0.5f : 0.0f) : seen->second;
+    const float by = std::abs(value - was);
+    if (by > 0.02f && by >= movedBy_) moved_ = name, movedBy_ = by;
+    controlsSeen_[name] = value;
+  }
+}
+
+void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* events) {
+  readInputs(input.time);
+  if (!scene_ || &renderer.info() != scene_) return;  // the scene showing has not been given yet
+  live::Modulated out = modulator_.step(sources_, renderer.parameters(), input.dt);
+  if (!out.values.empty()) {
+    const std::string why = renderer.applyParameters(out.values);
+    if (!why.empty()) {
+      if (why != lastRefusal_) std::fprintf(stderr, "vitrine: live input: %s refuses %s\n", std::string(scene_->name).c_str(), why.c_str());
+      lastRefusal_ = why;
+    } else if (events) {
+      for (const auto& [key, value] : out.values) {
+        const auto by = std::find_if(modulator_.mappings().rbegin(), modulator_.mappings().rend(),
+                                     [&](const live::Mapping& m) { return m.target == key; });
+        events->emit(input.time, scene_->name, {"mapped", {{"key", key}, {"value", value}, {"by", by->source}}});
+      }
+    }
+  }
+  input.actions.insert(input.actions.end(), out.actions.begin(), out.actions.end());
+}
+
+std::vector<std::string> LiveLink::mappingLines() const {
+  std::vector<std::string> lines;
+  for (const live::Mapping& mapping : modulator_.mappings()) lines.push_back(live::formatMapping(mapping));
+  return lines;
+}
+
+std::vector<std::string> LiveLink::drivenKeys() const {
+  std::vector<std::string> keys;
+  for (const live::Mapping& mapping : modulator_.mappings())
+    if (scene_ && !scene_->findAction(mapping.target)) keys.push_back(mapping.target);
+  return keys;
+}
+
+std::optional<std::string> LiveLink::takeMovedControl() {
+  movedBy_ = 0.0f;
+  return std::exchange(moved_, std::nullopt);
+}
+
+std::vector<std::string> LiveLink::status() const {
+  std::vector<std::string> lines;
+  if (audioFile_) lines.push_back(fmt::format("audio in: {} ({:.1f} s{})", config_.audioFile, audioFile_->clip().seconds(), config_.loopAudioFile ? ", looped" : ""));
+  else if (capture_) lines.push_back(capture_->status());
+  else lines.push_back("audio in: off");
+  if (midiFile_) lines.push_back("MIDI in: " + config_.midiFile);
+  if (midiPorts_) lines.push_back(midiPorts_->status());
+  return lines;
+}
+
+const live::AudioClip* LiveLink::audioClip() const { return audioFile_ ? &audioFile_->clip() : nullptr; }
+
+std::string LiveLink::fingerprintText() const {
+  std::string text;
+  for (const live::Mapping& mapping : commandLine_) text += live::formatMapping(mapping) + "\n";
+  for (const std::string* path : {&config_.audioFile, &config_.midiFile}) {
+    if (path->empty()) continue;
+    std::ifstream in(*path, std::ios::binary);
+    text += *path + "\n" + std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return text;
+}
+
+std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::string& scene) {
+  if (options.maps.empty() && options.audioIn.empty() && options.midiIn.empty()) return nullptr;
+  return std::make_unique<LiveLink>(LiveConfig{.maps = options.maps, .runScene = scene, .audioFile = options.audioIn,
+                                               .midiFile = options.midiIn});
+}
+
+}  // namespace vitrine::host

@@ -1,0 +1,107 @@
+#pragma once
+// The host's end of live input (docs/LIVE.md): the run's inputs (a sound file or a capture device, a
+// MIDI file or the MIDI ports, OSC values, gamepads the gallery reads), the mappings of the scene
+// showing, and once a simulation step, before the scene's update, the mapped values applied through
+// the schema and the mapped actions added to the step's input. Shared by the gallery, headless and
+// record runs; headless and record take only files, so a run is frame-exact and reproducible.
+#include "frame/frame_input.h"
+#include "live/modulator.h"
+#include "live/source_bank.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vitrine {
+class EventSink;
+struct SceneInfo;
+}  // namespace vitrine
+
+namespace vitrine::live {
+struct AudioClip;
+class AudioFileInput;
+class AudioCapture;
+class SmfPlayer;
+class MidiInput;
+}  // namespace vitrine::live
+
+namespace vitrine::host {
+
+class SceneRenderer;
+
+struct LiveConfig {
+  std::vector<std::string> maps;  // --map: mapping files and lines, in order
+  std::string runScene;           // the scene an unqualified --map line targets
+  std::string audioFile;          // --audio-in
+  bool loopAudioFile = false;     // the gallery loops it
+  // Where in the sound file the analysis is (seconds): the gallery's is what the speakers played;
+  // none: the simulation time, frame-exact (headless, record).
+  std::function<double()> audioFileClock;
+  bool captureAudio = false;      // capture from `audioDevice` (the gallery, audio input on)
+  std::string audioDevice;        // empty: the default output's monitor, where there is one
+  std::string midiFile;           // --midi-in
+  bool midiPorts = false;         // the gallery: every MIDI port, hot-plugged
+};
+
+class LiveLink {
+ public:
+  // Reads the --map files and lines and the input files; throws vitrine::Error naming what is wrong.
+  explicit LiveLink(LiveConfig config);
+  ~LiveLink();
+  LiveLink(const LiveLink&) = delete;
+  LiveLink& operator=(const LiveLink&) = delete;
+
+  // The scene showing from now on, with the user's own mapping lines for it (the settings file; a bad
+  // line is skipped with a reason in *warnings). --map's join them, and while audio input is on, the
+  // scene's audio mappings whose target no other mapping drives.
+  void setScene(const SceneInfo& scene, const std::vector<std::string>& saved = {},
+                std::vector<std::string>* warnings = nullptr);
+  // One simulation step, before the scene's update: the sources at `input.time`, the mapped values
+  // applied to the renderer's scene, fired actions appended to input.actions. Each applied value is
+  // reported to `events` as {"event": "mapped", "key", "value", "by"}.
+  void step(SceneRenderer& renderer, FrameInput& input, EventSink* events);
+  // The sources at simulation time `time` (step's first half): files, devices, and MIDI learn's watch.
+  void readInputs(double time);
+
+  live::SourceBank& sources() { return sources_; }                // OSC and gamepads write here between steps
+  const live::Modulator& modulator() const { return modulator_; }
+  const std::vector<live::Mapping>& commandLineMappings() const { return commandLine_; }
+  std::vector<std::string> mappingLines() const;  // the mappings playing the scene, as text (the remote page)
+  // Keys of the scene showing that a mapping drives now (kept out of the settings file).
+  std::vector<std::string> drivenKeys() const;
+
+  bool audioOn() const { return audioFile_ != nullptr || capture_ != nullptr; }
+  // The gallery's switch: capture from `device` (empty: the default monitor) or stop. A sound file
+  // given with --audio-in stays what feeds the sources.
+  void setAudioCapture(bool on, const std::string& device);
+  // MIDI learn: the MIDI control or gamepad input that moved most since the last call, if any moved.
+  std::optional<std::string> takeMovedControl();
+  std::vector<std::string> status() const;  // one line per input, for the panel
+  // The --audio-in file, for a film's sound track; null without one.
+  const live::AudioClip* audioClip() const;
+  // What feeds a run, for a recording's manifest: the mapping lines and the input files' bytes, hashed.
+  std::string fingerprintText() const;
+
+ private:
+  void remap();
+  LiveConfig config_;
+  std::vector<live::Mapping> commandLine_;
+  std::vector<live::Mapping> saved_;
+  const SceneInfo* scene_ = nullptr;
+  live::SourceBank sources_;
+  live::Modulator modulator_;
+  std::unique_ptr<live::AudioFileInput> audioFile_;
+  std::unique_ptr<live::AudioCapture> capture_;
+  std::unique_ptr<live::SmfPlayer> midiFile_;
+  std::unique_ptr<live::MidiInput> midiPorts_;
+  std::map<std::string, float, std::less<>> controlsSeen_;  // MIDI learn: the controls' last values
+  std::optional<std::string> moved_;
+  float movedBy_ = 0.0f;
+  std::string lastRefusal_;
+};
+
+}  // namespace vitrine::host
