@@ -57,7 +57,7 @@ const params::Schema& schema() {
                                  "stills).", "actions", kTransient},
                                 &S::fill, 0.0, 1.05));
     s.add(params::boolParam<S>({"vent", "vent now", "Empty the lattice at once.", "actions", kTransient}, &S::vent));
-    s.audioMapping("audio.level=breath:0:2 attack=0.05 release=0.8");
+    s.audioMapping("audio.level=breath:0:1.2 attack=0.05 release=0.8");
     s.preset({"fine", "A 160^3 lattice with more samples.", {{"lattice", "160"}, {"samples", "96"}}});
     s.preset({"quick", "A 64^3 lattice, fast phases: for slow devices.",
               {{"lattice", "64"}, {"source", "3"}, {"samples", "40"}}});

@@ -31,7 +31,7 @@ shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& momen
   b.viewPixels = {float(moment.extent.width), float(moment.extent.height)};
 
   b.ior = s.ior;
-  b.abbe = s.abbe;
+  b.abbe = s.abbe / s.spread;  // Cauchy's dispersion term goes as 1 / V_d
   b.strength = s.strength;
   b.photoDepth = s.depth;
   if (s.dispersion == Dispersion::Sellmeier && s.material > 0)

@@ -130,9 +130,11 @@ void GlassScene::update(const FrameInput& input) {
   if (loaded.panorama) resetHistory_ = true;
 
   // In motion the reprojected average lets go of old optics within a few frames, as of an old place, so
-  // a glide of ior, abbe or strength (live input plays them) does not throw the history away each frame.
+  // a glide of ior, abbe, spread or strength (live input plays them) does not throw the history away each frame.
   Settings compared = settings_;
-  if (!settings_.stopWorld) compared.ior = applied_.ior, compared.abbe = applied_.abbe, compared.strength = applied_.strength;
+  if (!settings_.stopWorld)
+    compared.ior = applied_.ior, compared.abbe = applied_.abbe, compared.spread = applied_.spread,
+    compared.strength = applied_.strength;
   if (!(compared == applied_)) resetHistory_ = true;
   // A drag while the world stands still restarts the progressive average; in motion the reprojected
   // EMA lets go of the old place within a few frames anyway.

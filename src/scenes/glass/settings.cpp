@@ -44,6 +44,10 @@ const params::Schema& schema() {
                                 &S::ior, 1.0, 3.5));
     s.add(params::floatParam<S>({"abbe", "Abbe V_d", "Abbe number: lower disperses more.", "glass", kLogarithmic},
                                 &S::abbe, 1.0, 100.0));
+    s.add(params::floatParam<S>({"spread", "dispersion spread", "Multiplies the dispersion of the Abbe fit: 1 as the "
+                                 "glass has it, 2 twice the rainbow (live audio plays it with the highs).", "glass",
+                                 kLogarithmic},
+                                &S::spread, 0.25, 4.0));
     s.add(params::floatParam<S>({"strength", "refraction strength", "Seed optics: how far the exit ray leans from "
                                  "the view ray toward the refracted direction.", "glass"},
                                 &S::strength, 0.0, 1.0));
@@ -150,7 +154,7 @@ const params::Schema& schema() {
                                   "graphics part is two TPCs).", "camera"},
                                  &S::pass, {"raster", "compute"}));
 
-    s.audioMapping("audio.high=abbe:12:2 curve=log attack=0.02 release=0.4");
+    s.audioMapping("audio.high=spread:1:2.5 curve=log attack=0.02 release=0.4");
     // The original's presets, value for value. A preset sets everything that makes its look, so it
     // gives the same picture whatever was chosen before it (physical optics, Sellmeier, another
     // panorama...): the original's common values (perspective at 45 degrees, exact refraction, jitter

@@ -22,6 +22,7 @@ struct Settings {
   int material = 0;               // 0: custom (ior and abbe below); else kMaterials[material - 1]
   float ior = 1.272f;             // n_d
   float abbe = 2.0f;              // V_d
+  float spread = 1.0f;            // multiplies the dispersion of abbe's Cauchy fit (live audio plays it)
   float strength = 0.15f;         // seed optics: how far the exit ray leans from the view ray toward the refraction
   RefractionMode mode = RefractionMode::Exact;
   bool jitter = true;
