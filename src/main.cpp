@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       case Mode::Headless: return host::runHeadless(options);
       case Mode::Bench: return host::runBench(options);
       case Mode::Record: return host::runRecord(options);
+      case Mode::Encode: return host::runEncode(options);
       case Mode::Compare: return host::runCompare(options);
       case Mode::Gallery: return host::runGallery(options);
     }

@@ -104,7 +104,7 @@ std::string lowercase(std::string text) {
 // outside its modes is refused, naming the mode, rather than ignored in silence (`--headless --fps 10`
 // would render at 60 all the same); one given twice is refused unless repeatable, as the second would
 // silently win. Flags not listed here (the --list-* modes, --help, --version) are checked by their own rules.
-enum ModeBits : unsigned { kGallery = 1, kHeadless = 2, kBench = 4, kRecord = 8, kRuns = 15 };
+enum ModeBits : unsigned { kGallery = 1, kHeadless = 2, kBench = 4, kRecord = 8, kEncode = 16, kRuns = 15 };
 
 struct FlagRule {
   std::string_view name;
@@ -124,7 +124,7 @@ constexpr FlagRule kFlagRules[] = {
     {"--preset", kRuns, true},
     {"--frames", kHeadless | kBench},
     {"--time", kHeadless | kBench | kRecord},
-    {"--out", kHeadless | kRecord},
+    {"--out", kHeadless | kRecord | kEncode},
     {"--json", kBench},
     {"--warmup", kBench},
     {"--fullscreen", kGallery},
@@ -148,7 +148,15 @@ constexpr FlagRule kFlagRules[] = {
     {"--spp", kRecord},
     {"--range", kRecord},
     {"--format", kRecord},
+    {"--codec", kRecord | kEncode},
+    {"--crf", kRecord | kEncode},
+    {"--bitrate", kRecord | kEncode},
+    {"--pix-fmt", kRecord | kEncode},
+    {"--full-range", kRecord | kEncode},
 };
+
+// The flags that shape a film's encoding: refused for a record run into a folder of frames.
+constexpr std::string_view kFilmFlags[] = {"--codec", "--crf", "--bitrate", "--pix-fmt", "--full-range"};
 
 const FlagRule* findFlagRule(std::string_view flag) {
   for (const FlagRule& rule : kFlagRules)
@@ -162,6 +170,7 @@ unsigned modeBit(Mode mode) {
     case Mode::Headless: return kHeadless;
     case Mode::Bench: return kBench;
     case Mode::Record: return kRecord;
+    case Mode::Encode: return kEncode;
     default: return 0;  // the listing and help modes take what they need and ignore the rest
   }
 }
@@ -171,6 +180,7 @@ std::string_view modeName(unsigned bit) {
     case kGallery: return "the gallery";
     case kHeadless: return "--headless";
     case kBench: return "bench";
+    case kEncode: return "encode";
     default: return "record";
   }
 }
@@ -178,7 +188,7 @@ std::string_view modeName(unsigned bit) {
 // "--headless and record runs", "the gallery", "bench runs".
 std::string modeList(unsigned modes) {
   std::vector<std::string_view> names;
-  for (const unsigned bit : {kGallery, kHeadless, kBench, kRecord})
+  for (const unsigned bit : {kGallery, kHeadless, kBench, kRecord, kEncode})
     if (modes & bit) names.push_back(modeName(bit));
   std::string text;
   for (size_t n = 0; n < names.size(); ++n)
@@ -212,6 +222,10 @@ const char* usage() {
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
           [--events FILE] [--map ...]... [--audio-in FILE] [--midi-in FILE.mid]
+  vitrine record ... --out FILM.mp4|FILM.mov|FILM.mkv [--codec h264|hevc|prores|prores4444|ffv1]
+          [--crf N | --bitrate N[k|M]] [--pix-fmt yuv420p|yuv444p|yuv420p10le|yuv444p10le] [--full-range]
+  vitrine encode FOLDER --out FILM.mp4|FILM.mov|FILM.mkv [--codec ...] [--crf N | --bitrate N[k|M]] [--pix-fmt ...]
+          [--full-range]
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
           [--preset [SCENE.]NAME]... --json FILE
   vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
@@ -224,6 +238,10 @@ Headless frame k shows time SECONDS + k/60; the last frame is written.
 record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average of K samples spread over
 its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames
 A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
+record --out FILM.mp4 (.mov, .mkv) encodes the frames as they render, with the scene's sound, into one film:
+h264 in .mp4, ProRes 422 HQ in .mov, lossless FFV1 in .mkv unless --codec says otherwise; --crf (18 for
+h264, 20 for hevc) or --bitrate sets the quality; BT.709, limited range unless --full-range. encode FOLDER
+turns a recorded sequence and its audio.wav into a film the same way.
 --kiosk shows each scene for --dwell seconds (45) with a cross-fade; a touch holds the scene, cycling resumes
 after 30 s alone (the dwell when shorter, 10 s at least). --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
 changes it); it prints the page's address with its access token. Bound beyond loopback, OSC is taken only from
@@ -261,6 +279,9 @@ Options parseOptions(int argc, const char* const* argv) {
     ++i;
   } else if (argc > 1 && std::string_view(argv[1]) == "record") {
     options.mode = Mode::Record;
+    ++i;
+  } else if (argc > 1 && std::string_view(argv[1]) == "encode") {
+    options.mode = Mode::Encode;
     ++i;
   } else if (argc > 1 && std::string_view(argv[1]) == "compare") {
     options.mode = Mode::Compare;
@@ -339,6 +360,16 @@ Options parseOptions(int argc, const char* const* argv) {
       if (options.format != "exr" && options.format != "png")
         throw Error(fmt::format("--format writes exr or png, not '{}'.", options.format));
     }
+    else if (arg == "--codec") options.film.codec = film::parseCodec(value(arg));
+    else if (arg == "--crf") options.film.crf = int(parseWhole(arg, value(arg), 0, 51));
+    else if (arg == "--bitrate") options.film.bitrate = film::parseBitrate(value(arg));
+    else if (arg == "--pix-fmt") options.film.pixelFormat = value(arg);
+    else if (arg == "--full-range") options.film.fullRange = true;
+    else if (options.mode == Mode::Encode && !arg.starts_with("-")) {  // encode's FOLDER
+      if (!options.sequence.empty())
+        throw Error(fmt::format("encode takes one FOLDER, not both {} and {}.", options.sequence, arg));
+      options.sequence = arg;
+    }
     else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
     else if (arg == "--list-params") {
@@ -354,6 +385,9 @@ Options parseOptions(int argc, const char* const* argv) {
     else throw Error(fmt::format("Unknown option '{}'; see vitrine --help.", arg));
   }
   checkFlagsApply(given, options.mode);
+  auto isGiven = [&](std::string_view flag) {
+    return std::any_of(given.begin(), given.end(), [&](const FlagRule* rule) { return rule->name == flag; });
+  };
   if (options.mode == Mode::Headless && options.out.empty())
     throw Error("--headless needs --out FILE.exr (or FILE.png).");
   if (options.mode == Mode::Bench && options.out.empty()) throw Error("bench needs --json FILE.");
@@ -367,6 +401,30 @@ Options parseOptions(int argc, const char* const* argv) {
     if (options.spp > 256) throw Error("--spp takes 1 to 256 samples a frame.");
     if (options.format == "png" && !canWritePng())
       throw Error("This build writes EXR only (built without OpenImageIO); use --format exr.");
+    if (film::isFilmName(options.out)) {
+      if (options.range)
+        throw Error(fmt::format("--range is for a sequence of frames in a folder; {} is a film, rendered whole: "
+                                "drop --range, or record into a folder and run vitrine encode on it.", options.out));
+      if (isGiven("--format"))
+        throw Error(fmt::format("--format picks the frames' files in a folder; {} is a film, encoded as --codec says.",
+                                options.out));
+      // The codec, the container and the size agree, and the film can be written, before anything renders.
+      const VkExtent2D size = options.size.value_or(kRecordSize);
+      (void)film::resolveFilm(options.out, options.film, size.width, size.height);
+      checkWritable(options.out);
+    } else {
+      for (const std::string_view flag : kFilmFlags)
+        if (isGiven(flag))
+          throw Error(fmt::format("{} is for a film: --out NAME.mp4, .mov or .mkv, not the folder {}.", flag, options.out));
+    }
+  }
+  if (options.mode == Mode::Encode) {
+    if (options.sequence.empty())
+      throw Error("encode needs the FOLDER of a recorded sequence: vitrine encode FOLDER --out film.mp4.");
+    if (options.out.empty()) throw Error("encode needs --out NAME.mp4, .mov or .mkv.");
+    if (!film::isFilmName(options.out))
+      throw Error(fmt::format("encode writes a film: --out NAME.mp4, .mov or .mkv, not '{}'.", options.out));
+    checkWritable(options.out);
   }
   const bool scripted = options.mode == Mode::Headless || options.mode == Mode::Record;
   if (!options.input.empty() && !scripted) throw Error("--input is only for --headless and record runs.");

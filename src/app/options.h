@@ -1,6 +1,7 @@
 #pragma once
 // The command line, parsed into one value. Bad input is a vitrine::Error with a sentence that says
 // what was wrong and what would be right; main turns it into a non-zero exit.
+#include "film/film_format.h"
 #include "image/image_compare.h"
 
 #include <vulkan/vulkan.h>
@@ -13,7 +14,7 @@
 
 namespace vitrine {
 
-enum class Mode { Gallery, Headless, Bench, Record, Compare, ListDevices, ListScenes, ListParams, Help, Version };
+enum class Mode { Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListScenes, ListParams, Help, Version };
 
 // One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
 struct SceneSetting {
@@ -52,6 +53,9 @@ struct Options {
   uint32_t spp = 1;                  // --spp K: sub-frame samples averaged into each frame
   std::optional<std::pair<uint32_t, uint32_t>> range;  // --range A:B: only frames A .. B-1
   std::string format = "exr";        // --format exr|png
+  // Films: record --out NAME.mp4|.mov|.mkv encodes as it renders; encode FOLDER turns a sequence into one.
+  film::FilmRequest film;            // --codec, --crf, --bitrate, --pix-fmt, --full-range
+  std::string sequence;              // encode FOLDER: a recorded sequence with its record.json
   // The gallery for installations.
   bool kiosk = false;                // --kiosk: fullscreen, no UI, cycling through the scenes
   double dwell = 45.0;               // --dwell SECONDS: how long each scene shows in kiosk mode
@@ -65,6 +69,9 @@ struct Options {
   std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
   std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time
 };
+
+// A record run's frame size when --size is not given.
+inline constexpr VkExtent2D kRecordSize{1280, 720};
 
 Options parseOptions(int argc, const char* const* argv);
 // The --set pairs that apply to `scene`, in command-line order: those naming it, and the unqualified

@@ -188,3 +188,31 @@ void checkWritableFolder(const std::filesystem::path& folder) {
 }
 
 }  // namespace vitrine
+
+namespace vitrine {
+
+PendingFile::PendingFile(const std::filesystem::path& target) : target_(target), path_(createTemporary(target)) {}
+
+PendingFile::~PendingFile() {
+  if (committed_) return;
+  std::error_code ignored;
+  std::filesystem::remove(path_, ignored);
+}
+
+void PendingFile::commit() {
+  // The writer has closed it; flushed before the rename, so a power cut cannot leave the target's name
+  // on a file whose blocks never reached the disk.
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int error = errno;
+    if (fd >= 0) ::close(fd);
+    throw Error(fmt::format("Cannot write {}: {}", target_.string(), osReason(error)));
+  }
+  ::close(fd);
+  std::error_code renamed;
+  std::filesystem::rename(path_, target_, renamed);
+  if (renamed) throw Error(fmt::format("Cannot write {}: {}", target_.string(), renamed.message()));
+  committed_ = true;
+}
+
+}  // namespace vitrine

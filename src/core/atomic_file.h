@@ -18,6 +18,26 @@ void replaceAtomically(const std::filesystem::path& target,
 // ("No space left on device"). Writers that encode to memory first (images) go through here.
 void writeFileAtomically(const std::filesystem::path& target, std::span<const unsigned char> bytes);
 
+// A temporary beside `target` for a writer that fills it over a long time (a film's encoder, frame after
+// frame) rather than in one call: named as replaceAtomically names its own (".film.mp4.HOST-PID-....tmp.mp4",
+// so removeStaleTemporaries clears one a killed writer left), removed when destroyed unless commit() has
+// flushed it to the disk and renamed it over the target. Until then the target is left as it was.
+class PendingFile {
+ public:
+  explicit PendingFile(const std::filesystem::path& target);  // makes it, empty; throws vitrine::Error
+  ~PendingFile();
+  PendingFile(const PendingFile&) = delete;
+  PendingFile& operator=(const PendingFile&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  // fsync, then rename over the target. Throws vitrine::Error with the system's reason.
+  void commit();
+
+ private:
+  std::filesystem::path target_, path_;
+  bool committed_ = false;
+};
+
 // Throws vitrine::Error with the system's reason ("Read-only file system", "No space left on device")
 // unless a file can be made and filled in `folder` now: checked before work whose output would go there.
 void checkWritableFolder(const std::filesystem::path& folder);

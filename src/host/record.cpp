@@ -7,19 +7,18 @@
 #include "audio/engine.h"
 #include "audio/wav.h"
 #include "core/atomic_file.h"
-#include "live/audio_clip.h"
 #include "core/error.h"
+#include "film/film_format.h"
 #include "host/event_log.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "host/record_manifest.h"
+#include "host/record_shared.h"
 #include "image/image_io.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -49,38 +48,10 @@ Found existingFrame(const std::filesystem::path& path, VkExtent2D size) {
   return isWholeImage(path, size.width, size.height) ? Found::Whole : Found::Broken;
 }
 
-// Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (logs).
-class Progress {
- public:
-  explicit Progress(uint32_t total) : total_(total), terminal_(isatty(fileno(stderr))) {}
-  void update(uint32_t done, uint32_t written) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
-    const double left = rate > 0.0 ? double(total_ - done) / rate : 0.0;
-    const std::string line = fmt::format("{}/{} frames ({} written), {:.1f} frames/s, {:.0f} s left", done, total_,
-                                         written, rate, left);
-    if (terminal_) {
-      const int width = 30, filled = int(std::lround(width * double(done) / double(std::max(total_, 1u))));
-      std::fprintf(stderr, "\r[%s%s] %s ", std::string(size_t(filled), '#').c_str(),
-                   std::string(size_t(width - filled), '.').c_str(), line.c_str());
-      if (done == total_) std::fputc('\n', stderr);
-    } else if (done == total_ || done * 10 / std::max(total_, 1u) != lastTenth_) {
-      lastTenth_ = done * 10 / std::max(total_, 1u);
-      std::fprintf(stderr, "%s\n", line.c_str());
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  uint32_t total_;
-  bool terminal_;
-  uint32_t lastTenth_ = 0;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 }  // namespace
 
 int runRecord(const Options& options) {
+  if (film::isFilmName(options.out)) return runRecordFilm(options);  // a film, not a folder of frames
   const std::filesystem::path folder = options.out;
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
@@ -98,10 +69,7 @@ int runRecord(const Options& options) {
 
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
-  OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{1280, 720}), options.time, options.seed,
-                         options.reducedMotion, presetsFor(options, options.scene, true),
-                         parametersFor(options, options.scene, true)};
-  config.step = 1.0 / (options.fps * double(options.spp));
+  OffscreenConfig config = recordConfig(options);
   std::string inputText;
   if (!options.input.empty()) config.input = loadInputScript(options.input, &inputText);
   std::optional<JsonLinesEventLog> events;
@@ -121,7 +89,7 @@ int runRecord(const Options& options) {
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
     claimFolder(folder, manifest, holdsFrames(folder));
-    Progress progress(end - first);
+    RecordProgress progress(end - first);
     for (uint32_t frame = 0; frame < end; ++frame) {
       const std::filesystem::path path = framePath(folder, frame, options.format);
       const Found found = frame >= first ? existingFrame(path, config.size) : Found::Whole;
@@ -131,17 +99,10 @@ int runRecord(const Options& options) {
                      config.size.width, config.size.height);
         ++redone;
       }
-      ImageRgba sum;
-      for (uint32_t sample = 0; sample < options.spp; ++sample) {
-        offscreen.renderFrame();
-        if (!wanted) continue;  // simulated all the same: a later frame depends on it
-        const ImageRgba image = offscreen.readback();
-        if (sum.pixels.empty()) sum = image;
-        else for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += image.pixels[i];
-      }
+      // Simulated all the same when not wanted: a later frame depends on it.
+      const ImageRgba frameImage = renderFrame(offscreen, options.spp, wanted);
       if (wanted) {
-        for (float& v : sum.pixels) v /= float(options.spp);
-        writeImage(path, sum);  // throws, naming the system's reason, when the disk does not take it whole
+        writeImage(path, frameImage);  // throws, naming the system's reason, when the disk does not take it whole
         ++written;
       }
       if (frame >= first) progress.update(frame - first + 1, written);
@@ -150,14 +111,9 @@ int runRecord(const Options& options) {
   if (events) events->close();
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
-  if (whole && (sound.commandCount() > 0 || (live && live->audioClip()))) {
-    // The scene's own sound, and the film's music (--audio-in) from the film's first moment, mixed.
-    std::vector<float> samples = sound.render(double(frames) / options.fps);
-    if (const live::AudioClip* music = live ? live->audioClip() : nullptr) {
-      const std::vector<float> track = live::stereo48k(*music, options.time, double(frames) / options.fps);
-      for (size_t i = 0; i < std::min(samples.size(), track.size()); ++i) samples[i] += track[i];
-    }
-    audio::writeWav(folder / "audio.wav", samples);
+  if (whole) {
+    const std::vector<float> samples = filmSound(sound, live.get(), options.time, double(frames) / options.fps);
+    if (!samples.empty()) audio::writeWav(folder / "audio.wav", samples);
   }
   std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
               written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),

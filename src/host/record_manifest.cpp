@@ -119,6 +119,15 @@ std::vector<std::string> manifestDifferences(const RecordManifest& folder, const
 
 std::filesystem::path manifestPath(const std::filesystem::path& folder) { return folder / "record.json"; }
 
+RecordManifest readManifest(const std::filesystem::path& folder) {
+  const std::filesystem::path path = manifestPath(folder);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(fmt::format("{} holds no record.json, so its frames' size and rate are unknown; encode a folder that "
+                            "vitrine record wrote.", folder.string()));
+  return parseManifest(readText(path), path.string());
+}
+
 void claimFolder(const std::filesystem::path& folder, const RecordManifest& run, bool folderHasFrames) {
   const std::filesystem::path path = manifestPath(folder);
   std::error_code ec;

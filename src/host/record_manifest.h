@@ -40,6 +40,9 @@ std::vector<std::string> manifestDifferences(const RecordManifest& folder, const
 
 // The file beside the frames.
 std::filesystem::path manifestPath(const std::filesystem::path& folder);
+// The manifest of the sequence in `folder` (vitrine encode reads its size and rate). Throws
+// vitrine::Error when the folder has none or it cannot be read.
+RecordManifest readManifest(const std::filesystem::path& folder);
 
 // Before the first frame: when `folder` holds a manifest, throws vitrine::Error unless it agrees with
 // `run`, naming every difference; when it holds none, writes it (atomically) unless frames are already

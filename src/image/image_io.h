@@ -26,6 +26,11 @@ std::optional<ImageFormat> imageFormatFromName(const std::filesystem::path& path
 // place (writeFileAtomically), so a reader never sees half a file and a full disk is an error with
 // the system's reason, the old file left as it was. Throws vitrine::Error.
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes = {});
+// The display values writeImage puts in a PNG, without the file: sRGB-encoded (IEC 61966-2-1), clamped
+// to [0, 1], RGBA, top row first, at 8 bits (`srgb8`, the PNG's very bytes) or on the same curve at 16
+// bits (`srgb16`, for 10-bit films). A film's frames are made from these, so a frame equals its PNG.
+std::vector<uint8_t> srgb8(const ImageRgba& image);
+std::vector<uint16_t> srgb16(const ImageRgba& image);
 // True when `path` decodes whole as an image of width x height (a frame a resumed recording may keep):
 // false for a truncated, corrupt or differently sized file, or one this build cannot read.
 bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t height);

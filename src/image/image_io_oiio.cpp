@@ -33,25 +33,44 @@ OIIO::ImageBuf openFresh(const std::filesystem::path& path) {
   return OIIO::ImageBuf(path.string());
 }
 
+// Linear floats as sRGB display values clamped to [0, 1], still floats: what a PNG and a film frame
+// quantise (OpenImageIO rounds to the nearest code in both, get_pixels and the PNG writer alike).
+OIIO::ImageBuf srgbBuffer(const ImageRgba& image, const ImageNotes& notes = {}) {
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+  for (const auto& [name, value] : notes) spec.attribute(name, value);
+  OIIO::ImageBuf buffer(spec, const_cast<float*>(image.pixels.data()));
+  return OIIO::ImageBufAlgo::clamp(OIIO::ImageBufAlgo::colorconvert(buffer, "linear", "sRGB"), 0.0f, 1.0f);
+}
+
+template <typename T>
+std::vector<T> quantised(const ImageRgba& image, OIIO::TypeDesc type) {
+  std::vector<T> out(image.pixels.size());
+  const OIIO::ImageBuf encoded = srgbBuffer(image);
+  if (!encoded.get_pixels(OIIO::ROI::All(), type, out.data()))
+    throw Error(fmt::format("Cannot encode a {}x{} frame as sRGB: {}", image.width, image.height, encoded.geterror()));
+  return out;
+}
+
 }  // namespace
 
 bool canWritePng() { return true; }
+
+std::vector<uint8_t> srgb8(const ImageRgba& image) { return quantised<uint8_t>(image, OIIO::TypeDesc::UINT8); }
+std::vector<uint16_t> srgb16(const ImageRgba& image) { return quantised<uint16_t>(image, OIIO::TypeDesc::UINT16); }
 
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
   const std::optional<ImageFormat> format = imageFormatFromName(path);
   if (!format)
     throw Error(fmt::format("Cannot write {}: name it .exr (linear half float) or .png (8-bit sRGB).", path.string()));
   const bool png = *format == ImageFormat::Png;
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-  for (const auto& [name, value] : notes) spec.attribute(name, value);
-  OIIO::ImageBuf buffer(spec, const_cast<float*>(image.pixels.data()));
   OIIO::ImageBuf encoded;
   if (png) {
-    encoded = OIIO::ImageBufAlgo::colorconvert(buffer, "linear", "sRGB");
-    encoded = OIIO::ImageBufAlgo::clamp(encoded, 0.0f, 1.0f);
+    encoded = srgbBuffer(image, notes);  // as srgb8 makes a film's frame
     encoded.set_write_format(OIIO::TypeDesc::UINT8);
   } else {
-    encoded.copy(buffer);
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+    for (const auto& [name, value] : notes) spec.attribute(name, value);
+    encoded.copy(OIIO::ImageBuf(spec, const_cast<float*>(image.pixels.data())));
     encoded.set_write_format(OIIO::TypeDesc::HALF);
   }
   // Encoded in memory: OpenImageIO's PNG writer does not check its writes (on a full disk it reported

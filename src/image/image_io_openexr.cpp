@@ -132,10 +132,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
     picture = readJpeg(path);
   } else if (format == "EXR") {
     const ImageRgba linear = readImage(path);
-    picture = {linear.width, linear.height, std::vector<uint8_t>(linear.pixels.size())};
-    for (size_t i = 0; i < linear.pixels.size(); ++i)
-      picture.rgba[i] = uint8_t(std::lround(255.0f * (i % 4 == 3 ? std::clamp(linear.pixels[i], 0.0f, 1.0f)
-                                                                 : linearToSrgb(linear.pixels[i]))));
+    picture = {linear.width, linear.height, srgb8(linear)};
   } else {
     throw Error(fmt::format("Cannot read {}: {} this build reads PNG, JPEG and EXR only (built with "
                             "VITRINE_WITH_OIIO=OFF).", path.string(),
@@ -167,15 +164,33 @@ class MemoryStream final : public Imf::OStream {
 
 }  // namespace
 
+namespace {
+
+// A channel's display value in [0, 1]: colour on the sRGB curve, alpha as it is.
+float displayValue(const ImageRgba& image, size_t i) {
+  return i % 4 == 3 ? std::clamp(image.pixels[i], 0.0f, 1.0f) : linearToSrgb(image.pixels[i]);
+}
+
+}  // namespace
+
+std::vector<uint8_t> srgb8(const ImageRgba& image) {
+  std::vector<uint8_t> out(image.pixels.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = uint8_t(std::lround(255.0f * displayValue(image, i)));
+  return out;
+}
+
+std::vector<uint16_t> srgb16(const ImageRgba& image) {
+  std::vector<uint16_t> out(image.pixels.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = uint16_t(std::lround(65535.0f * displayValue(image, i)));
+  return out;
+}
+
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
   const std::optional<ImageFormat> format = imageFormatFromName(path);
   if (!format)
     throw Error(fmt::format("Cannot write {}: name it .exr (linear half float) or .png (8-bit sRGB).", path.string()));
   if (*format == ImageFormat::Png) {  // libpng's simplified API writes no text: such a PNG has no notes
-    std::vector<uint8_t> encoded(image.pixels.size());
-    for (size_t i = 0; i < encoded.size(); ++i)
-      encoded[i] = uint8_t(std::lround(255.0f * (i % 4 == 3 ? std::clamp(image.pixels[i], 0.0f, 1.0f)
-                                                            : linearToSrgb(image.pixels[i]))));
+    const std::vector<uint8_t> encoded = srgb8(image);
     // Into memory (asked for its size first), then to the disk through writeFileAtomically, which
     // checks every write.
     png_image png{};

@@ -123,7 +123,7 @@ TEST(OptionsModes, AFlagOutsideItsModeIsRefusedNamingTheMode) {
   EXPECT_EQ(headless({"--kiosk"}), "--kiosk is only for the gallery, not --headless.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--json", "x.exr"}), "--json is only for bench runs, not --headless.");
   EXPECT_EQ(refusal({"bench", "--scene", "kifs", "--out", "b.json"}),
-            "--out is only for --headless and record runs, not bench.");
+            "--out is only for --headless, record and encode runs, not bench.");
   EXPECT_EQ(refusal({"record", "--scene", "kifs", "--seconds", "1", "--out", "f", "--frames", "3"}),
             "--frames is only for --headless and bench runs, not record.");
   EXPECT_EQ(refusal({"--frames", "3"}), "--frames is only for --headless and bench runs, not the gallery.");

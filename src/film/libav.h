@@ -1,0 +1,72 @@
+#pragma once
+// FFmpeg's objects owned like any other resource: each freed by the call FFmpeg pairs with its making,
+// whatever path a run leaves by (an error, an interrupt). Only src/film/*.cpp include this, and so
+// FFmpeg's headers.
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+#include <libavutil/pixdesc.h>
+#include <libswresample/swresample.h>
+#include <libswscale/swscale.h>
+}
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace vitrine::film {
+
+struct FreeCodec {
+  void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
+};
+struct FreeFrame {
+  void operator()(AVFrame* f) const { av_frame_free(&f); }
+};
+struct FreePacket {
+  void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+struct FreeScaler {
+  void operator()(SwsContext* s) const { sws_freeContext(s); }
+};
+struct FreeResampler {
+  void operator()(SwrContext* s) const { swr_free(&s); }
+};
+// An input file opened by avformat_open_input.
+struct CloseInput {
+  void operator()(AVFormatContext* f) const { avformat_close_input(&f); }
+};
+// An output file: its I/O closed (when opened), then the muxer freed. A muxer whose trailer was never
+// written leaves a file that is not a film; its owner removes it.
+struct CloseOutput {
+  void operator()(AVFormatContext* f) const {
+    if (f->pb && !(f->oformat->flags & AVFMT_NOFILE)) avio_closep(&f->pb);
+    avformat_free_context(f);
+  }
+};
+
+using CodecPtr = std::unique_ptr<AVCodecContext, FreeCodec>;
+using FramePtr = std::unique_ptr<AVFrame, FreeFrame>;
+using PacketPtr = std::unique_ptr<AVPacket, FreePacket>;
+using ScalerPtr = std::unique_ptr<SwsContext, FreeScaler>;
+using ResamplerPtr = std::unique_ptr<SwrContext, FreeResampler>;
+using InputPtr = std::unique_ptr<AVFormatContext, CloseInput>;
+using OutputPtr = std::unique_ptr<AVFormatContext, CloseOutput>;
+
+// FFmpeg's words for an error code ("No space left on device", "Invalid argument").
+std::string avErrorText(int code);
+// Throws vitrine::Error "Cannot write TARGET: WHAT failed: REASON" for a negative code; returns it otherwise.
+int checkAv(int code, const std::string& target, std::string_view what);
+
+FramePtr makeFrame();
+PacketPtr makePacket();
+// A muxer writing `path` as `muxer` ("mp4", "mov", "matroska"), its file opened. Throws vitrine::Error.
+OutputPtr openOutput(const std::string& muxer, const std::string& path, const std::string& target);
+struct FilmFormat;
+// The muxer's options for a film in `format`'s container (both passes write the same), for
+// avformat_write_header; the caller frees what it leaves.
+AVDictionary* muxerOptions(const FilmFormat& format);
+// FFmpeg logs only what is wrong, on stderr: errors, not its banner of warnings for every stream.
+void quietLibav();
+
+}  // namespace vitrine::film

@@ -1,0 +1,217 @@
+#include "film/video_encoder.h"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "film/libav.h"
+#include "film/sound_mux.h"
+
+namespace vitrine::film {
+namespace {
+
+// The film's tags, on the encoder (into H.264's and HEVC's VUI) and through it on the stream (the
+// container's colour boxes). The frames are BT.709 primaries with the sRGB transfer curve (iec61966-2-1),
+// since what is encoded are exactly the PNG's sRGB-encoded values, not values re-encoded on BT.709's
+// curve; the matrix is BT.709's (or none: RGB). ProRes's frame header has no code for the sRGB curve
+// (prores_ks writes "unknown" there), so a ProRes film says it in its 'colr' box only.
+void tagColour(AVCodecContext& codec, const FilmFormat& format) {
+  codec.color_primaries = AVCOL_PRI_BT709;
+  codec.color_trc = AVCOL_TRC_IEC61966_2_1;
+  codec.colorspace = format.rgb ? AVCOL_SPC_RGB : AVCOL_SPC_BT709;
+  codec.color_range = format.fullRange ? AVCOL_RANGE_JPEG : AVCOL_RANGE_MPEG;
+}
+
+// The encoder's own settings, set on its private options (AVCodecContext has a "profile" of its own that
+// would take ProRes's otherwise) and checked: quality for h264 and hevc, the profile for ProRes.
+void setEncoderOptions(AVCodecContext& codec, const FilmFormat& format, const std::string& target) {
+  auto set = [&](const char* key, const std::string& value) {
+    checkAv(av_opt_set(codec.priv_data, key, value.c_str(), 0), target,
+            fmt::format("setting {}'s {} to {}", format.encoder, key, value));
+  };
+  if (format.crf) set("crf", std::to_string(*format.crf));
+  if (format.bitrate) codec.bit_rate = *format.bitrate;
+  if (format.codec == Codec::Hevc) set("x265-params", "log-level=error");  // x265 prints a page otherwise
+  if (!format.proresProfile.empty()) set("profile", format.proresProfile);
+  if (format.codec == Codec::Ffv1) codec.level = 3;  // FFV1 version 3: slices with checksums, an archive's format
+}
+
+}  // namespace
+
+struct VideoEncoder::State {
+  std::string target;
+  FilmFormat format;
+  uint32_t width, height;
+  double fps;
+  PendingFile videoOnly;
+  OutputPtr output;
+  CodecPtr codec;
+  AVStream* stream = nullptr;
+  ScalerPtr scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
+  FramePtr frame = makeFrame();
+  PacketPtr packet = makePacket();
+  std::vector<uint8_t> rgb24;     // one frame's packed RGB, the scaler's input
+  std::vector<uint16_t> rgb48;    // the same at 16 bits a channel, for a 10-bit film
+  std::vector<uint16_t> widened;  // a PNG's RGBA at 16 bits, for a 10-bit film
+  uint32_t frames = 0;
+  bool finished = false;
+
+  State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
+        const AVCodec& encoder)
+      : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), videoOnly(path),
+        output(openOutput(format.muxer, videoOnly.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
+    if (!codec) throw std::bad_alloc();
+    codec->width = int(width);
+    codec->height = int(height);
+    codec->pix_fmt = av_get_pix_fmt(format.pixelFormat.c_str());
+    codec->framerate = av_d2q(fps, 1'000'000);
+    codec->time_base = av_inv_q(codec->framerate);
+    codec->thread_count = 0;  // as many as the encoder finds useful
+    tagColour(*codec, format);
+    if (output->oformat->flags & AVFMT_GLOBALHEADER) codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    setEncoderOptions(*codec, format, target);
+    const int opened = avcodec_open2(codec.get(), &encoder, nullptr);
+    if (opened < 0)
+      throw Error(fmt::format("Cannot write {}: {} would not start for {} {}x{} at {:g} fps: {}.", target, format.encoder,
+                              format.pixelFormat, width, height, fps, avErrorText(opened)));
+
+    stream = avformat_new_stream(output.get(), nullptr);
+    if (!stream) throw std::bad_alloc();
+    checkAv(avcodec_parameters_from_context(stream->codecpar, codec.get()), target, "describing the video stream");
+    // Apple's players play HEVC in MP4 and QuickTime only under the 'hvc1' tag (FFmpeg's default is 'hev1').
+    if (format.codec == Codec::Hevc && format.container != Container::Mkv)
+      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
+    stream->time_base = codec->time_base;
+    stream->avg_frame_rate = codec->framerate;
+    AVDictionary* options = muxerOptions(format);
+    const int header = avformat_write_header(output.get(), &options);
+    av_dict_free(&options);
+    checkAv(header, target, "writing the header");
+
+    frame->format = codec->pix_fmt;
+    frame->width = codec->width;
+    frame->height = codec->height;
+    checkAv(av_frame_get_buffer(frame.get(), 0), target, "allocating a frame");
+    if (!format.rgb) {
+      // BT.709's matrix from full-range RGB into limited (tv) or full (pc) range Y'CbCr; chroma
+      // subsampled from every input pixel (full chroma input), rounded accurately.
+      const AVPixelFormat source = format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24;
+      scaler.reset(sws_getContext(int(width), int(height), source, int(width), int(height), codec->pix_fmt,
+                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
+      if (!scaler) throw Error(fmt::format("Cannot write {}: swscale cannot convert RGB to {}.", target, format.pixelFormat));
+      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+      sws_setColorspaceDetails(scaler.get(), bt709, 1, bt709, format.fullRange ? 1 : 0, 0, 1 << 16, 1 << 16);
+    }
+  }
+
+  void encode(const AVFrame* next) {
+    checkAv(avcodec_send_frame(codec.get(), next), target, "encoding a frame");
+    for (;;) {
+      const int received = avcodec_receive_packet(codec.get(), packet.get());
+      if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
+      checkAv(received, target, "encoding a frame");
+      av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      checkAv(av_interleaved_write_frame(output.get(), packet.get()), target, "writing the video");
+    }
+  }
+
+  // The frame buffer may still be referenced by the encoder (frame threads, lookahead): a fresh one then.
+  void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
+
+  void send() {
+    frame->pts = frames++;
+    encode(frame.get());
+  }
+
+  // Display values, RGBA at 8 bits a channel, into the frame.
+  void addRgba8(const uint8_t* rgba) {
+    if (format.deep) {  // a PNG's bytes into a 10-bit film: 8 bits widened exactly (255 -> 65535)
+      widened.resize(size_t(width) * height * 4);
+      for (size_t i = 0; i < widened.size(); ++i) widened[i] = uint16_t(rgba[i] * 257);
+      return addRgba16(widened.data());
+    }
+    writable();
+    if (format.rgb) {  // bgr0: copied, not converted, so the bytes come back as they went in
+      for (uint32_t y = 0; y < height; ++y) {
+        uint8_t* row = frame->data[0] + size_t(y) * size_t(frame->linesize[0]);
+        const uint8_t* in = rgba + size_t(y) * width * 4;
+        for (uint32_t x = 0; x < width; ++x, in += 4, row += 4) row[0] = in[2], row[1] = in[1], row[2] = in[0], row[3] = 0;
+      }
+      return send();
+    }
+    rgb24.resize(size_t(width) * height * 3);
+    for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb24[p * 3], rgba + p * 4, 3);
+    const uint8_t* planes[1] = {rgb24.data()};
+    const int strides[1] = {int(width) * 3};
+    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
+    send();
+  }
+
+  void addRgba16(const uint16_t* rgba) {
+    writable();
+    rgb48.resize(size_t(width) * height * 3);
+    for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb48[p * 3], rgba + p * 4, 3 * sizeof(uint16_t));
+    const uint8_t* planes[1] = {reinterpret_cast<const uint8_t*>(rgb48.data())};
+    const int strides[1] = {int(width) * 6};
+    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
+    send();
+  }
+
+  void checkSize(uint32_t w, uint32_t h) const {
+    if (finished) throw Error(fmt::format("Cannot add a frame to {}: the film is finished.", target));
+    if (w != width || h != height)
+      throw Error(fmt::format("Cannot add a {}x{} frame to {}: the film is {}x{}.", w, h, target, width, height));
+  }
+
+  // Drains the encoder, writes the trailer and closes the file, checking the close: a full disk shows
+  // up in the last flush.
+  void endVideo() {
+    encode(nullptr);
+    checkAv(av_write_trailer(output.get()), target, "writing the trailer");
+    checkAv(avio_closep(&output->pb), target, "closing the file");
+    output.reset();
+  }
+};
+
+VideoEncoder::VideoEncoder(const std::filesystem::path& target, const FilmFormat& format, uint32_t width,
+                           uint32_t height, double fps) {
+  quietLibav();
+  const AVCodec* encoder = avcodec_find_encoder_by_name(format.encoder.c_str());
+  if (!encoder)
+    throw Error(fmt::format("This FFmpeg has no {} encoder, so it cannot write {}; choose another --codec.",
+                            format.encoder, codecName(format.codec)));
+  state_ = std::make_unique<State>(target, format, width, height, fps, *encoder);
+}
+
+VideoEncoder::~VideoEncoder() = default;  // unfinished: the temporary goes with the state
+
+void VideoEncoder::addFrame(const ImageRgba& linear) {
+  state_->checkSize(linear.width, linear.height);
+  if (state_->format.deep) state_->addRgba16(srgb16(linear).data());
+  else state_->addRgba8(srgb8(linear).data());
+}
+
+void VideoEncoder::addFrame(const Picture& srgb) {
+  state_->checkSize(srgb.width, srgb.height);
+  state_->addRgba8(srgb.rgba.data());
+}
+
+uint32_t VideoEncoder::frames() const { return state_->frames; }
+
+void VideoEncoder::finish(std::span<const float> stereo48k) {
+  State& s = *state_;
+  if (s.finished) throw Error(fmt::format("{} is already finished.", s.target));
+  if (s.frames == 0) throw Error(fmt::format("Cannot write {}: it has no frames.", s.target));
+  s.finished = true;
+  s.endVideo();
+  if (stereo48k.empty()) return s.videoOnly.commit();
+  PendingFile withSound(s.target);
+  muxWithSound(s.videoOnly.path(), withSound.path(), s.target, s.format, stereo48k, double(s.frames) / s.fps);
+  withSound.commit();
+}
+
+}  // namespace vitrine::film

@@ -1,0 +1,43 @@
+#pragma once
+// What the record runs share, whether they write a numbered sequence (record.cpp) or a film
+// (record_film.cpp): the offscreen run's settings, a frame averaged over its samples, the film's sound,
+// and the progress line.
+#include "app/options.h"
+#include "audio/engine.h"
+#include "host/live_link.h"
+#include "host/offscreen.h"
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+namespace vitrine::host {
+
+// The scene, size, start, seed, parameters and step of a record run: 1 / (fps x spp). Input, events,
+// sound and live input are the caller's to attach.
+OffscreenConfig recordConfig(const Options& options);
+
+// One frame of the film: `spp` steps rendered, their pictures averaged (motion blur and anti-aliasing
+// at once). With `keep` false the steps are only simulated (a later frame depends on them) and the
+// picture is empty.
+ImageRgba renderFrame(Offscreen& offscreen, uint32_t spp, bool keep = true);
+
+// The film's sound: the scene's own and the film's music (--audio-in) from the film's first moment,
+// mixed, as interleaved 48 kHz stereo of exactly round(seconds x 48000) frames. Empty when the scene
+// made no sound and there is no music.
+std::vector<float> filmSound(const audio::OfflineAudio& sound, const LiveLink* live, double start, double seconds);
+
+// Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (logs).
+class RecordProgress {
+ public:
+  explicit RecordProgress(uint32_t total);
+  void update(uint32_t done, uint32_t written);
+
+ private:
+  uint32_t total_;
+  bool terminal_;
+  uint32_t lastTenth_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace vitrine::host
