@@ -36,6 +36,10 @@ struct FrameContext {
   gpu::StreamArena& stream;        // per-frame CPU-written memory (uniform blocks, uploads)
   const FrameInput& input;
   uint32_t slot;  // frame-in-flight index, for per-frame resources
+  // False for a frame nobody will see (record's frames before its --range): a scene may record only
+  // what later frames depend on (its simulation) and skip its drawing. A scene whose picture carries
+  // history from frame to frame (glass' accumulation) draws all the same.
+  bool draws = true;
 
   // A labelled, timestamped GPU pass for the scope of the returned object.
   gpu::Pass pass(const char* name) const { return gpu::Pass(device, timer, cmd, name); }

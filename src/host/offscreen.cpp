@@ -57,7 +57,8 @@ void Offscreen::addInput(std::vector<ActionCall> actions, std::optional<Pointer>
   if (pointer) extraPointer_ = pointer;
 }
 
-FrameTimes Offscreen::renderFrame(uint32_t steps) {
+FrameTimes Offscreen::renderFrame(uint32_t steps, bool seen) {
+  renderer_.setDrawing(seen);
   const auto start = std::chrono::steady_clock::now();
   for (uint32_t i = 0; i < std::max(steps, 1u); ++i) {
     if (i > 0) ++input_.frame;

@@ -43,7 +43,9 @@ class Offscreen {
 
   // One frame after `steps` simulation steps, as the gallery draws after a slow frame (the steps'
   // frames are simulated, not drawn; frames() counts them all).
-  FrameTimes renderFrame(uint32_t steps = 1);
+  // `seen` false: a frame nobody sees, simulated only where the scene can (FrameContext::draws); its
+  // output is not defined.
+  FrameTimes renderFrame(uint32_t steps = 1, bool seen = true);
   // The last frame's input drawn again with no simulation step, as the gallery draws while paused.
   FrameTimes redrawFrame();
   ImageRgba readback();  // the output of the last frame

@@ -23,7 +23,7 @@ OffscreenConfig recordConfig(const Options& options) {
 ImageRgba renderFrame(Offscreen& offscreen, uint32_t spp, bool keep) {
   ImageRgba sum;
   for (uint32_t sample = 0; sample < spp; ++sample) {
-    offscreen.renderFrame();
+    offscreen.renderFrame(1, keep);  // a frame not kept is simulated, not drawn
     if (!keep) continue;
     const ImageRgba image = offscreen.readback();
     if (sum.pixels.empty()) sum = image;

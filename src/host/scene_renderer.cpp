@@ -89,7 +89,7 @@ void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const Frame
   timer_.beginFrame(cmd, slot);
   resources_->beginFrame(cmd, stream_, slot);
   target_.discard();  // a scene draws every texel each frame
-  scene_->record(FrameContext{device_, cmd, &timer_, target_, *resources_, stream_, input, slot});
+  scene_->record(FrameContext{device_, cmd, &timer_, target_, *resources_, stream_, input, slot, drawing_});
 }
 
 void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,

@@ -58,6 +58,9 @@ class SceneRenderer {
   // bench, tests), where anything they do on other threads must run in lock-step to stay reproducible.
   void setRealtime(bool realtime) { realtime_ = realtime; }
   gpu::PassTimer& timer() { return timer_; }
+  // Whether the frames recorded from now on are seen (FrameContext::draws); record's frames before its
+  // --range are simulated only.
+  void setDrawing(bool drawing) { drawing_ = drawing; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
               const Crossfade& fade = {});
@@ -73,6 +76,7 @@ class SceneRenderer {
 
  private:
   bool realtime_ = false;
+  bool drawing_ = true;
   void ensureTarget(VkExtent2D output);
   void blit(VkCommandBuffer cmd, const BlitDestination& dst);
   void present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade);

@@ -21,6 +21,18 @@ test "$(ls "$out/part")" = "$(printf 'frame_000003.exr\nframe_000004.exr\nframe_
 for f in 3 4 5; do
   "$vitrine" compare "$out/whole/frame_00000$f.exr" "$out/part/frame_00000$f.exr" | grep -q "max difference 0.00000"
 done
+# The stateful scenes too: a range simulates the frames before it without drawing them (FrameContext::draws),
+# and its frames are the whole run's, bit for bit.
+for scene in "neon --set chains=256" "bloom --preset quick --set fill=0.4" "noodles --set grid=8x8x4"; do
+  name=${scene%% *}
+  args=(record --scene $scene --size 48x27 --fps 30 --seconds 0.4 --validate)
+  "$vitrine" "${args[@]}" --out "$out/$name-whole" >/dev/null 2>&1
+  "$vitrine" "${args[@]}" --range 9:12 --out "$out/$name-part" >/dev/null 2>&1
+  for f in 09 10 11; do
+    "$vitrine" compare "$out/$name-whole/frame_0000$f.exr" "$out/$name-part/frame_0000$f.exr" | grep -q "max difference 0.00000" ||
+      { echo "$name: frame $f of a range differs from the whole run's"; exit 1; }
+  done
+done
 # Samples a frame are averaged: two samples differ from one where the fractal moves.
 "$vitrine" record --scene kifs --size 64x36 --fps 30 --seconds 0.1 --spp 1 --out "$out/one" >/dev/null
 if "$vitrine" compare "$out/one/frame_000002.exr" "$out/whole/frame_000002.exr" | grep -q "max difference 0.00000"; then

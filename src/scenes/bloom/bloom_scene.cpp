@@ -169,7 +169,8 @@ class BloomScene final : public Scene {
 
   void record(const FrameContext& frame) override {
     simulate(frame);
-    measure(frame);
+    measure(frame);  // the phases follow the lattice's statistics, seen or not
+    if (!frame.draws) return;
     drawChamber(frame);
     drawCrystal(frame);
     drawType(frame);

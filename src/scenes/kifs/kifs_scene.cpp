@@ -38,6 +38,7 @@ class KifsScene final : public Scene {
   }
 
   void record(const FrameContext& frame) override {
+    if (!frame.draws) return;  // nothing but the march, and a frame depends on its time alone
     const auto pass = frame.pass("kifs march");
     const shader::KifsMarchPush push{angles_,
                     uint32_t(frame.input.frame),

@@ -389,6 +389,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
 
 void NeonScene::record(const FrameContext& frame) {
   recordChains(frame);
+  if (!frame.draws) return;  // the chains are the simulation; the rest draws them
   const glm::mat4 viewProjection = projectionMatrix(aspect_) * viewMatrix();
   const glm::mat3 axes = glm::transpose(glm::mat3(viewMatrix()));  // the camera's right, up and back in world
   const float tanHalf = std::tan(0.5f * kFovY);

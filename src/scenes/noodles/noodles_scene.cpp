@@ -59,6 +59,7 @@ class NoodlesScene final : public Scene {
   }
 
   void record(const FrameContext& frame) override {
+    if (!frame.draws) return;  // the strands are integrated afresh from the settings each time they change
     ensureStrands();
     const StrandSettings strands = strandSettings();
     gpu::Buffer& nodes = frame.buffer(nodes_);
