@@ -70,22 +70,16 @@ int runRecord(const Options& options) {
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
   OffscreenConfig config = recordConfig(options);
-  std::string inputText;
-  if (!options.input.empty()) config.input = loadInputScript(options.input, &inputText);
-  std::optional<JsonLinesEventLog> events;
-  if (!options.events.empty()) config.events = &events.emplace(options.events);
-  audio::OfflineAudio sound(options.time);
-  config.audio = &sound;
-  const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
-  config.live = live.get();
+  RecordInputs inputs(options, config);
 
   uint32_t written = 0, redone = 0;
   {
     Offscreen offscreen(device, config);
     RecordManifest manifest{options.scene, config.size.width, config.size.height, options.fps, options.spp,
                             options.seed, options.time, options.reducedMotion, options.format,
-                            options.input.empty() && !live ? std::string()
-                                                           : fingerprint(inputText + (live ? live->fingerprintText() : "")),
+                            options.input.empty() && !inputs.live
+                                ? std::string()
+                                : fingerprint(inputs.inputText + (inputs.live ? inputs.live->fingerprintText() : "")),
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
     claimFolder(folder, manifest, holdsFrames(folder));
@@ -108,11 +102,11 @@ int runRecord(const Options& options) {
       if (frame >= first) progress.update(frame - first + 1, written);
     }
   }
-  if (events) events->close();
+  if (inputs.events) inputs.events->close();
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
   if (whole) {
-    const std::vector<float> samples = filmSound(sound, live.get(), options.time, double(frames) / options.fps);
+    const std::vector<float> samples = filmSound(inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
     if (!samples.empty()) audio::writeWav(folder / "audio.wav", samples);
   }
   std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",

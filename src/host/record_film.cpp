@@ -37,13 +37,7 @@ int runRecordFilm(const Options& options) {
 
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
-  if (!options.input.empty()) config.input = loadInputScript(options.input);
-  std::optional<JsonLinesEventLog> events;
-  if (!options.events.empty()) config.events = &events.emplace(options.events);
-  audio::OfflineAudio sound(options.time);
-  config.audio = &sound;
-  const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
-  config.live = live.get();
+  RecordInputs inputs(options, config);
   {
     Offscreen offscreen(device, config);
     RecordProgress progress(frames);
@@ -54,8 +48,8 @@ int runRecordFilm(const Options& options) {
       progress.update(frame + 1, frame + 1);
     }
   }
-  if (events) events->close();
-  const std::vector<float> samples = filmSound(sound, live.get(), options.time, double(frames) / options.fps);
+  if (inputs.events) inputs.events->close();
+  const std::vector<float> samples = filmSound(inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
   stop.check(fmt::format("before the film was written; {} left as it was.", target.string()));
   encoder.finish(samples);
   std::printf("recorded %u frames into %s (%ux%u, %s %s in %s, %.6g fps, %u samples a frame, %s, scene %s) on %s\n",

@@ -1,5 +1,7 @@
 #include "host/record_shared.h"
 
+#include "host/modes.h"
+
 #include "live/audio_clip.h"
 
 #include <fmt/format.h>
@@ -18,6 +20,14 @@ OffscreenConfig recordConfig(const Options& options) {
                          parametersFor(options, options.scene, true)};
   config.step = 1.0 / (options.fps * double(options.spp));
   return config;
+}
+
+RecordInputs::RecordInputs(const Options& options, OffscreenConfig& config)
+    : sound(options.time), live(offlineLiveInput(options, options.scene)) {
+  if (!options.input.empty()) config.input = loadInputScript(options.input, &inputText);
+  if (!options.events.empty()) config.events = &events.emplace(options.events);
+  config.audio = &sound;
+  config.live = live.get();
 }
 
 ImageRgba renderFrame(Offscreen& offscreen, uint32_t spp, bool keep) {

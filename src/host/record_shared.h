@@ -4,18 +4,35 @@
 // and the progress line.
 #include "app/options.h"
 #include "audio/engine.h"
+#include "host/event_log.h"
 #include "host/live_link.h"
 #include "host/offscreen.h"
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace vitrine::host {
 
 // The scene, size, start, seed, parameters and step of a record run: 1 / (fps x spp). Input, events,
-// sound and live input are the caller's to attach.
+// sound and live input are attached with RecordInputs.
 OffscreenConfig recordConfig(const Options& options);
+
+// What a record run feeds its scene and gathers from it besides pictures: the --input script, the
+// --events log, the sound, live input (--map, --audio-in, --midi-in). Made in place, attached to the
+// run's config, and kept for as long as the run.
+struct RecordInputs {
+  RecordInputs(const Options& options, OffscreenConfig& config);
+  RecordInputs(const RecordInputs&) = delete;
+  RecordInputs& operator=(const RecordInputs&) = delete;
+  std::string inputText;  // the script's bytes, for record.json's fingerprint
+  std::optional<JsonLinesEventLog> events;
+  audio::OfflineAudio sound;
+  std::unique_ptr<LiveLink> live;
+};
 
 // One frame of the film: `spp` steps rendered, their pictures averaged (motion blur and anti-aliasing
 // at once). With `keep` false the steps are only simulated (a later frame depends on them) and the
