@@ -587,9 +587,7 @@ void Gallery::showMenu() {
   state.livePanel = &live_->panel();
   state.live = live_->panelState();
   const MenuChoice choice = drawMenu(state);
-  const std::vector<std::string> mappings = live_->mappingLines();
-  live_->apply(choice.live, panel_);
-  if (remote_ && live_->mappingLines() != mappings) remote_->setMappings(live_->mappingLines());
+  if (live_->apply(choice.live, panel_) && remote_) remote_->setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
   time_ = choice.time;
   time_.speed = TimeControl::clampSpeed(time_.speed);

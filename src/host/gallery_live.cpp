@@ -32,6 +32,7 @@ void GalleryLive::showing(const SceneInfo& scene) {
   scene_ = &scene;
   std::vector<std::string> warnings;
   link_->setScene(scene, settings_.mappingsFor(scene.name), &warnings);
+  remapped_ = true;
   for (const auto& warning : warnings) std::fprintf(stderr, "vitrine: settings: %s\n", warning.c_str());
   learn_ = LearnStep::Idle;
 }
@@ -61,13 +62,15 @@ void GalleryLive::setUserMappings(std::vector<std::string> lines) {
   showing(*scene_);
 }
 
-void GalleryLive::apply(const LivePanelChoice& choice, ParamPanel& parameters) {
-  if (!scene_) return;
+bool GalleryLive::apply(const LivePanelChoice& choice, ParamPanel& parameters) {
+  if (!scene_) return false;
+  remapped_ = false;
   if (choice.audioOn || choice.audioDevice) {
     const bool on = choice.audioOn.value_or(link_->audioOn() || choice.audioDevice.has_value());
     const std::string device = choice.audioDevice.value_or(settings_.audioDevice());
     settings_.setAudioInput(on, device, GallerySettings::Clock::now());
     link_->setAudioCapture(on, device);
+    remapped_ = true;  // the scene's audio mappings come and go with audio input
     message_ = on && !link_->audioOn() ? "no audio input could be opened (see the console)" : "";
   }
   const auto add = [&](const std::string& line) {
@@ -136,6 +139,7 @@ void GalleryLive::apply(const LivePanelChoice& choice, ParamPanel& parameters) {
       if (add(fmt::format("{}={}.{}", *control, scene_->name, learnKey_))) message_ = fmt::format("learnt {} for {}", *control, learnKey_);
     }
   }
+  return remapped_;
 }
 
 }  // namespace vitrine::host

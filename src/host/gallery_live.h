@@ -33,8 +33,9 @@ class GalleryLive {
 
   LivePanel& panel() { return panel_; }
   LivePanelState panelState() const;
-  // Applies what the menu returned; `parameters` tells MIDI learn which parameter was clicked.
-  void apply(const LivePanelChoice& choice, ParamPanel& parameters);
+  // Applies what the menu returned; `parameters` tells MIDI learn which parameter was clicked. True
+  // when the mappings playing the scene changed (the remote page lists them).
+  bool apply(const LivePanelChoice& choice, ParamPanel& parameters);
 
  private:
   void setUserMappings(std::vector<std::string> lines);
@@ -47,6 +48,7 @@ class GalleryLive {
   const SceneInfo* scene_ = nullptr;
   LearnStep learn_ = LearnStep::Idle;
   std::string learnKey_, message_;
+  bool remapped_ = false;  // showing() ran during the current apply()
 };
 
 }  // namespace vitrine::host

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <cmath>
 
 namespace vitrine::live {
@@ -43,13 +45,17 @@ struct Target {
   double span = 1.0;  // the range's width, for takeover's "close enough"
 };
 
-// What the parameter becomes for a shaped value x in 0..1.
-Target target(const Mapping& mapping, const params::Param& param, const params::Schema& schema, float x) {
-  if (param.kind == params::Kind::Bool) return {x >= 0.5f ? "on" : "off", x >= 0.5f ? 1.0 : 0.0, 1.0};
+// The range a mapping spreads 0..1 over, as the parameter's numbers (choices: their indices).
+std::pair<double, double> rangeOf(const Mapping& mapping, const params::Param& param, const params::Schema& schema) {
   const bool choice = param.kind == params::Kind::Choice;
-  const double lo = mapping.lo ? numberOf(param, schema, *mapping.lo) : choice ? 0.0 : param.min;
-  const double hi = mapping.hi ? numberOf(param, schema, *mapping.hi) : choice ? double(param.choices.size() - 1) : param.max;
-  if (choice) {  // each choice of the range gets an equal share of 0..1
+  return {mapping.lo ? numberOf(param, schema, *mapping.lo) : choice ? 0.0 : param.min,
+          mapping.hi ? numberOf(param, schema, *mapping.hi) : choice ? double(param.choices.size() - 1) : param.max};
+}
+
+// What the parameter becomes for a shaped value x in 0..1 over [lo, hi].
+Target target(const Mapping& mapping, const params::Param& param, double lo, double hi, float x) {
+  if (param.kind == params::Kind::Bool) return {x >= 0.5f ? "on" : "off", x >= 0.5f ? 1.0 : 0.0, 1.0};
+  if (param.kind == params::Kind::Choice) {  // each choice of the range gets an equal share of 0..1
     const double steps = std::abs(hi - lo) + 1.0;
     const double offset = std::min(std::floor(double(x) * steps), steps - 1.0);
     const size_t index = size_t(lo <= hi ? lo + offset : lo - offset);
@@ -72,6 +78,10 @@ void Modulator::setMappings(const SceneInfo& scene, std::vector<Mapping> mapping
   scene_ = &scene;
   mappings_ = std::move(mappings);
   states_.assign(mappings_.size(), State{});
+  // The range's ends are read once here, not every step (each read parses on a scratch settings struct).
+  for (size_t i = 0; i < mappings_.size(); ++i)
+    if (const params::Param* param = scene.schema().find(mappings_[i].target))
+      std::tie(states_[i].lo, states_[i].hi) = rangeOf(mappings_[i], *param, scene.schema());
 }
 
 Modulated Modulator::step(const SourceBank& sources, const params::Bound& current, float dt) {
@@ -95,7 +105,7 @@ Modulated Modulator::step(const SourceBank& sources, const params::Bound& curren
     const params::Param* param = schema.find(mapping.target);
     if (!param) continue;  // checked when the mapping was made; a schema never loses a key
     const std::string now = param->format(current.settings);
-    const Target aim = target(mapping, *param, schema, state.shaped);
+    const Target aim = target(mapping, *param, state.lo, state.hi, state.shaped);
     if (mapping.takeoverMode() == Takeover::Soft) {
       if (state.engaged && now != state.written) state.engaged = false;  // someone else moved it
       if (!state.engaged) {

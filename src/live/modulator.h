@@ -47,6 +47,7 @@ class Modulator {
     std::optional<double> lastTarget;  // the value it last aimed at, as a number (takeover)
     std::string written;               // the text it last wrote ("" before)
     bool engaged = false;
+    double lo = 0.0, hi = 1.0;         // the range as the parameter's numbers, read at setMappings
   };
   const SceneInfo* scene_ = nullptr;
   std::vector<Mapping> mappings_;
