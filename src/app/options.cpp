@@ -147,6 +147,8 @@ constexpr FlagRule kFlagRules[] = {
     {"--seconds", kRecord},
     {"--spp", kRecord},
     {"--range", kRecord},
+    {"--checkpoint-every", kRecord},
+    {"--checkpoints-only", kRecord},
     {"--format", kRecord},
     {"--codec", kRecord | kEncode},
     {"--crf", kRecord | kEncode},
@@ -220,8 +222,9 @@ const char* usage() {
           [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
           [--map ...]... [--audio-in FILE] [--midi-in FILE.mid] --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
-          [--format exr|png] [--time SECONDS] [--seed S] [--set ...] [--preset ...] [--input FILE]
-          [--events FILE] [--map ...]... [--audio-in FILE] [--midi-in FILE.mid]
+          [--checkpoint-every N [--checkpoints-only]] [--format exr|png] [--time SECONDS] [--seed S]
+          [--set ...] [--preset ...] [--input FILE] [--events FILE] [--map ...]... [--audio-in FILE]
+          [--midi-in FILE.mid]
   vitrine record ... --out FILM.mp4|FILM.mov|FILM.mkv [--codec h264|hevc|prores|prores4444|ffv1]
           [--crf N | --bitrate N[k|M]] [--pix-fmt yuv420p|yuv444p|yuv420p10le|yuv444p10le] [--full-range]
   vitrine encode FOLDER --out FILM.mp4|FILM.mov|FILM.mkv [--codec ...] [--crf N | --bitrate N[k|M]] [--pix-fmt ...]
@@ -238,6 +241,9 @@ Headless frame k shows time SECONDS + k/60; the last frame is written.
 record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average of K samples spread over
 its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames
 A..B-1 only, the same pixels whichever machine renders them. Scenes with sound also write audio.wav.
+--checkpoint-every N saves the simulation every N frames (FOLDER/checkpoint_NNNNNN.state); a run starts
+from the latest checkpoint at or before its first missing frame instead of simulating from frame 0.
+--checkpoints-only writes them without drawing a frame (a cheap first job before ranges on many machines).
 record --out FILM.mp4 (.mov, .mkv) encodes the frames as they render, with the scene's sound, into one film:
 h264 in .mp4, ProRes 422 HQ in .mov, lossless FFV1 in .mkv unless --codec says otherwise; --crf (18 for
 h264, 20 for hevc) or --bitrate sets the quality; BT.709, limited range unless --full-range. encode FOLDER
@@ -355,6 +361,8 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--seconds") options.seconds = parsePositive(arg, value(arg), 86400.0);
     else if (arg == "--spp") options.spp = parseWhole(arg, value(arg), 1);
     else if (arg == "--range") options.range = parseRange(value(arg));
+    else if (arg == "--checkpoint-every") options.checkpointEvery = parseWhole(arg, value(arg), 1);
+    else if (arg == "--checkpoints-only") options.checkpointsOnly = true;
     else if (arg == "--format") {
       options.format = lowercase(value(arg));
       if (options.format != "exr" && options.format != "png")
@@ -399,12 +407,17 @@ Options parseOptions(int argc, const char* const* argv) {
     if (options.out.empty()) throw Error("record needs --out FOLDER for the numbered frames.");
     if (!(options.seconds > 0.0)) throw Error("record needs --seconds S, the film's length.");
     if (options.spp > 256) throw Error("--spp takes 1 to 256 samples a frame.");
+    if (options.checkpointsOnly && options.checkpointEvery == 0)
+      throw Error("--checkpoints-only writes checkpoints: say how often with --checkpoint-every N.");
     if (options.format == "png" && !canWritePng())
       throw Error("This build writes EXR only (built without OpenImageIO); use --format exr.");
     if (film::isFilmName(options.out)) {
       if (options.range)
         throw Error(fmt::format("--range is for a sequence of frames in a folder; {} is a film, rendered whole: "
                                 "drop --range, or record into a folder and run vitrine encode on it.", options.out));
+      if (options.checkpointEvery > 0)
+        throw Error(fmt::format("--checkpoint-every keeps state beside a sequence of frames; {} is a film, rendered "
+                                "whole in one run: record into a folder and run vitrine encode on it.", options.out));
       if (isGiven("--format"))
         throw Error(fmt::format("--format picks the frames' files in a folder; {} is a film, encoded as --codec says.",
                                 options.out));

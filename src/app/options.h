@@ -53,6 +53,8 @@ struct Options {
   uint32_t spp = 1;                  // --spp K: sub-frame samples averaged into each frame
   std::optional<std::pair<uint32_t, uint32_t>> range;  // --range A:B: only frames A .. B-1
   std::string format = "exr";        // --format exr|png
+  uint32_t checkpointEvery = 0;      // --checkpoint-every N: the simulation saved every N frames (0: never)
+  bool checkpointsOnly = false;      // --checkpoints-only: simulate and write checkpoints, draw no frame
   // Films: record --out NAME.mp4|.mov|.mkv encodes as it renders; encode FOLDER turns a sequence into one.
   film::FilmRequest film;            // --codec, --crf, --bitrate, --pix-fmt, --full-range
   std::string sequence;              // encode FOLDER: a recorded sequence with its record.json

@@ -155,6 +155,8 @@ class OfflineAudio final : public AudioSink {
   std::vector<float> render(double seconds) const;
   // How many commands the scene gave: none means a silent scene (no WAV worth writing).
   size_t commandCount() const { return commands_.size(); }
+  // Every command so far, in order: a checkpoint keeps them, and a run resumed from it posts them again.
+  const std::vector<Command>& commands() const { return commands_; }
 
  private:
   void add(Command::Kind kind, double time, float value);

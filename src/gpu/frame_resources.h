@@ -41,6 +41,7 @@ struct ImageDecl {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   std::vector<std::byte> initial;  // level-0 texels uploaded at creation (absolute sizes)
   ImageUse initialUse = use::ComputeSample;  // where an uploaded image is left
+  bool state = false;  // simulation state a checkpoint saves and restores (download, restore)
 };
 
 struct ImageHandle {
@@ -65,6 +66,7 @@ struct BufferDecl {
   bool clear = false;              // else every 32-bit word set to clearValue at creation
   uint32_t clearValue = 0;
   BufferUse initialUse = use::ComputeReadBuffer;  // where initial contents leave it
+  bool state = false;  // simulation state a checkpoint saves and restores (download, restore)
 };
 
 struct BufferHandle {
@@ -94,6 +96,15 @@ class FrameResources {
   Buffer& previous(BufferHandle handle);  // PingPong: the one to write
   void flip(BufferHandle handle);         // PingPong: swaps current and previous
 
+  // Checkpoints (frame/state_archive.h), for images and buffers declared with `state`: download reads
+  // the current() one's level-0 contents back, waiting for the device (between frames, never while
+  // recording); restore replaces them as the next frame begins, after any initial upload, and its
+  // size must be the whole image's or buffer's.
+  std::vector<std::byte> download(ImageHandle handle);
+  std::vector<std::byte> download(BufferHandle handle);
+  void restore(ImageHandle handle, std::vector<std::byte> contents);
+  void restore(BufferHandle handle, std::vector<std::byte> contents);
+
   // Host: how many frames may be in flight (PerFrame buffers), before any buffer is declared.
   void setFramesInFlight(uint32_t frames) { framesInFlight_ = frames; }
   // Host: the scene's target has this extent; recreates relative images and buffers whose size changed.
@@ -115,12 +126,14 @@ class FrameResources {
     uint32_t front = 0;        // index of current()
     bool fresh = true;         // created since the last beginFrame: upload / clear pending
     bool historyValid = false;
+    std::vector<std::byte> restored;  // contents for current(), uploaded as the next frame begins
   };
   struct BufferEntry {
     BufferDecl decl;
     std::vector<Buffer> buffers;
     uint32_t front = 0;
     bool fresh = true;
+    std::vector<std::byte> restored;  // contents for current(), uploaded as the next frame begins
   };
   void create(Entry& entry, VkExtent2D target);
   void create(BufferEntry& entry, VkExtent2D target);
@@ -129,6 +142,7 @@ class FrameResources {
     if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
   }
   void beginBuffers(VkCommandBuffer cmd, StreamArena& stream);
+  void writeFirstContents(VkCommandBuffer cmd, StreamArena& stream, Entry& entry);
   Entry& ready(ImageHandle handle);
   BufferEntry& ready(BufferHandle handle);
   const Device& device_;

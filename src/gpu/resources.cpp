@@ -142,8 +142,8 @@ void recordReadback(VkCommandBuffer cmd, Image& image, Buffer& buffer) {
   image.use(cmd, use::TransferSrc);
   buffer.use(cmd, use::TransferDstBuffer);
   VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {image.desc().extent.width, image.desc().extent.height, 1};
+  region.imageSubresource = {image.desc().aspect, 0, 0, 1};
+  region.imageExtent = image.extent();
   vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
   buffer.use(cmd, use::HostReadBuffer);
 }

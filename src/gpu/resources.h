@@ -91,7 +91,7 @@ class Image {
   ImageUse last_ = use::Discard;
 };
 
-// Records a copy of a 2D colour image into a host-readable buffer, with the barriers that make it
+// Records a copy of an image's level 0 (2D or 3D) into a host-readable buffer, with the barriers that make it
 // visible to the CPU once the submission has finished.
 void recordReadback(VkCommandBuffer cmd, Image& image, Buffer& buffer);
 

@@ -70,6 +70,11 @@ FrameTimes Offscreen::renderFrame(uint32_t steps, bool seen) {
 }
 
 void Offscreen::step() {
+  gatherInput(events_);
+  renderer_.scene().update(input_);
+}
+
+void Offscreen::gatherInput(EventSink* events) {
   input_.time = startTime_ + double(input_.frame) * step_;
   input_.actions.clear();  // a step's actions are its own: none carry over to the next
   if (player_) {
@@ -85,8 +90,31 @@ void Offscreen::step() {
   }
   input_.actions.insert(input_.actions.end(), extraActions_.begin(), extraActions_.end());
   extraActions_.clear();
-  if (live_) live_->step(renderer_, input_, events_);
-  renderer_.scene().update(input_);
+  if (live_) live_->step(renderer_, input_, events);
+}
+
+std::vector<std::byte> Offscreen::saveSimulation() {
+  if (!renderer_.scene().checkpoints()) throw Error(fmt::format("{} cannot be checkpointed", scene().name));
+  StateArchive state = StateArchive::saving();
+  params::KeyValues values = params::snapshot(parameters(), true);  // exact: the shortest text of each float
+  state(values);
+  renderer_.scene().simulationState(state);
+  return state.bytes();
+}
+
+void Offscreen::restoreSimulation(uint64_t frames, std::span<const std::byte> bytes) {
+  if (input_.frame != 0 || !renderer_.scene().checkpoints())
+    throw Error("a checkpoint is restored before the first frame, into a scene that can be checkpointed");
+  // The script's and live input's own state (a held key, a smoothed band) is theirs: replayed, unseen by
+  // the scene and unlogged, up to the checkpoint's frame.
+  for (; input_.frame < frames; ++input_.frame) gatherInput(nullptr);
+  StateArchive state = StateArchive::restoring(bytes);
+  params::KeyValues values;
+  state(values);
+  if (auto why = renderer_.applyParameters(values); !why.empty())
+    throw Error(fmt::format("its parameters are refused: {}", why));
+  renderer_.scene().simulationState(state);
+  if (!state.finished()) throw Error("it holds more than this build's scene reads");
 }
 
 FrameTimes Offscreen::redrawFrame() {

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,9 +58,18 @@ class Offscreen {
   SceneRenderer& renderer() { return renderer_; }
   double time() const { return startTime_ + double(input_.frame) * step_; }  // the next frame's
   VkExtent2D size() const { return size_; }
+  std::string deviceName() const { return device_.properties().deviceName; }
   // Input from outside the script (a remote client), for the next frame: its actions, and a pointer
   // that drives the cursor instead of the script's while present.
   void addInput(std::vector<ActionCall> actions, std::optional<Pointer> pointer);
+
+  // Checkpoints (host/checkpoint.h). saveSimulation: between frames, every parameter's exact value and
+  // the scene's own state (Scene::simulationState). restoreSimulation: before the first frame, puts the
+  // run where it was `frames` frames in: the script and live input, which are cheap and keep their own
+  // state, are replayed up to there without the scene, then the state is restored. Throws
+  // vitrine::Error saying why the state does not fit (another build, another scene).
+  std::vector<std::byte> saveSimulation();
+  void restoreSimulation(uint64_t frames, std::span<const std::byte> state);
 
  private:
   const gpu::Device& device_;
@@ -81,6 +91,7 @@ class Offscreen {
   CursorTracker extraCursor_;
   bool rendered_ = false;
   void step();  // one simulation step: input_'s frame, its script input, the scene's update
+  void gatherInput(EventSink* events);  // input_ for its frame: the script's, the remote's, live input's
   FrameTimes draw(std::chrono::steady_clock::time_point start);  // records, submits, waits: input_'s frame
 };
 

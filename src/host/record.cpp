@@ -1,14 +1,16 @@
 // record: a scene rendered offline into a numbered sequence of frames, for a film. Time advances in
 // fixed steps of 1 / (fps x samples), so each frame averages `spp` samples spread over its interval
-// (motion blur and anti-aliasing at once). The simulation always runs from frame 0, writing only the
-// frames asked for that are not already there: a run resumes where an interrupted one stopped, and
-// frames A..B-1 rendered on one machine are bit for bit those a whole run renders (same driver). The
-// folder's record.json (host/record_manifest.h) keeps a resume from mixing in another film's frames.
+// (motion blur and anti-aliasing at once). The simulation runs from frame 0, or from the latest
+// checkpoint (host/checkpoint.h) at or before the first frame to write, writing only the frames asked
+// for that are not already there: a run resumes where an interrupted one stopped, and frames A..B-1
+// rendered on one machine are bit for bit those a whole run renders (same driver). The folder's
+// record.json (host/record_manifest.h) keeps a resume from mixing in another film's frames.
 #include "audio/engine.h"
 #include "audio/wav.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/film_format.h"
+#include "host/checkpoint.h"
 #include "host/event_log.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
@@ -48,6 +50,33 @@ Found existingFrame(const std::filesystem::path& path, VkExtent2D size) {
   return isWholeImage(path, size.width, size.height) ? Found::Whole : Found::Broken;
 }
 
+// Puts the run at the latest checkpoint at or before `firstToWrite`, if the folder holds one past frame
+// 0: its sound so far and its simulation. Returns its frame. A checkpoint that cannot be trusted stops
+// the run before anything is written, naming the file.
+std::optional<uint32_t> resumeFromCheckpoint(Offscreen& offscreen, audio::OfflineAudio& sound,
+                                             const std::filesystem::path& folder, const std::string& film,
+                                             uint32_t firstToWrite, uint32_t spp) {
+  const std::optional<uint32_t> at = latestCheckpointFrame(folder, firstToWrite);
+  if (!at || *at == 0) return std::nullopt;
+  const std::filesystem::path path = checkpointPath(folder, *at);
+  const Checkpoint checkpoint = readCheckpoint(path, film);
+  if (checkpoint.frame != *at || checkpoint.scene != offscreen.scene().name)
+    throw Error(fmt::format("Checkpoint {} holds frame {} of {}, not what its name says: delete it.", path.string(),
+                            checkpoint.frame, checkpoint.scene));
+  const std::string device = offscreen.deviceName();
+  if (checkpoint.device != device)
+    std::fprintf(stderr, "vitrine: %s was simulated on %s, this run is on %s: its frames match a whole run only "
+                 "where both devices compute alike\n", path.filename().c_str(), checkpoint.device.c_str(), device.c_str());
+  for (const audio::Command& command : checkpoint.sound) sound.post(command);
+  try {
+    offscreen.restoreSimulation(uint64_t(*at) * spp, checkpoint.simulation);
+  } catch (const Error& e) {
+    throw Error(fmt::format("Checkpoint {} does not fit this run: {}; delete it to start from an earlier one, or "
+                            "from frame 0.", path.string(), e.what()));
+  }
+  return at;
+}
+
 }  // namespace
 
 int runRecord(const Options& options) {
@@ -72,7 +101,8 @@ int runRecord(const Options& options) {
   OffscreenConfig config = recordConfig(options);
   RecordInputs inputs(options, config);
 
-  uint32_t written = 0, redone = 0;
+  uint32_t written = 0, redone = 0, saved = 0;
+  std::optional<uint32_t> resumedAt;
   {
     Offscreen offscreen(device, config);
     RecordManifest manifest{options.scene, config.size.width, config.size.height, options.fps, options.spp,
@@ -83,12 +113,28 @@ int runRecord(const Options& options) {
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
     claimFolder(folder, manifest, holdsFrames(folder));
+    // What is there already, judged once: frames kept are not rendered again (--checkpoints-only keeps all).
+    std::vector<Found> found(end - first, Found::Whole);
+    if (!options.checkpointsOnly)
+      for (uint32_t frame = first; frame < end; ++frame)
+        found[frame - first] = existingFrame(framePath(folder, frame, options.format), config.size);
+    const auto missing = std::find_if(found.begin(), found.end(), [](Found f) { return f != Found::Whole; });
+    const uint32_t firstToWrite = first + uint32_t(missing - found.begin());
+
+    const bool checkpointing = offscreen.renderer().scene().checkpoints();
+    if (options.checkpointEvery > 0 && !checkpointing)
+      std::fprintf(stderr, "vitrine: %s cannot be checkpointed (its picture carries history); no checkpoints written\n",
+                   options.scene.c_str());
+    const std::string film = fingerprint(manifestText(manifest));
+    if (checkpointing) resumedAt = resumeFromCheckpoint(offscreen, inputs.sound, folder, film, firstToWrite, options.spp);
+    const uint32_t start = resumedAt.value_or(0);
+
     RecordProgress progress(end - first);
-    for (uint32_t frame = 0; frame < end; ++frame) {
+    for (uint32_t frame = start; frame < end; ++frame) {
       const std::filesystem::path path = framePath(folder, frame, options.format);
-      const Found found = frame >= first ? existingFrame(path, config.size) : Found::Whole;
-      const bool wanted = found != Found::Whole;
-      if (found == Found::Broken) {
+      const Found state = frame >= first ? found[frame - first] : Found::Whole;
+      const bool wanted = state != Found::Whole;
+      if (state == Found::Broken) {
         std::fprintf(stderr, "vitrine: %s is not a whole %ux%u frame; rendering it again\n", path.filename().c_str(),
                      config.size.width, config.size.height);
         ++redone;
@@ -98,6 +144,13 @@ int runRecord(const Options& options) {
       if (wanted) {
         writeImage(path, frameImage);  // throws, naming the system's reason, when the disk does not take it whole
         ++written;
+      }
+      const uint32_t next = frame + 1;
+      if (checkpointing && options.checkpointEvery > 0 && next % options.checkpointEvery == 0 && next < frames &&
+          !std::filesystem::exists(checkpointPath(folder, next), ec)) {
+        writeCheckpoint(checkpointPath(folder, next), {film, options.scene, device.properties().deviceName, next,
+                                                       inputs.sound.commands(), offscreen.saveSimulation()});
+        ++saved;
       }
       if (frame >= first) progress.update(frame - first + 1, written);
     }
@@ -109,9 +162,11 @@ int runRecord(const Options& options) {
     const std::vector<float> samples = filmSound(inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
     if (!samples.empty()) audio::writeWav(folder / "audio.wav", samples);
   }
-  std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s\n",
+  std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s%s%s\n",
               written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
-              options.fps, options.spp, options.scene.c_str(), device.properties().deviceName);
+              options.fps, options.spp, options.scene.c_str(), device.properties().deviceName,
+              resumedAt ? fmt::format(", simulated from the checkpoint at frame {}", *resumedAt).c_str() : "",
+              saved ? fmt::format(", {} checkpoint{} written", saved, saved == 1 ? "" : "s").c_str() : "");
   if (instance.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
     return 3;

@@ -5,6 +5,7 @@
 // without knowing of scenes); nothing else of the host.
 #include "core/assets.h"
 #include "frame/frame_context.h"
+#include "frame/state_archive.h"
 #include "params/schema.h"
 #include "audio/audio_sink.h"
 #include "scenes/scene_events.h"
@@ -59,6 +60,13 @@ class Scene {
   // for but could not run within one frame (bloom at a few frames a second). The gallery's clock
   // counts them as falling behind, so the overlay says so.
   virtual double takeGivenUpSeconds() { return 0.0; }
+  // Checkpoints (record --checkpoint-every; frame/state_archive.h). A scene that can be checkpointed
+  // walks everything later frames depend on that the parameters do not hold (the host keeps those)
+  // through simulationState, saved after a frame or restored before the next update, so a film resumed
+  // from it is frame for frame a whole run. One that cannot (its ranges simulate from frame 0) says no;
+  // one that keeps nothing from one frame to the next says yes and walks nothing.
+  virtual bool checkpoints() const { return false; }
+  virtual void simulationState(StateArchive& /*state*/) {}
 };
 
 struct SceneInfo {

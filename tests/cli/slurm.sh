@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # slurm.sh VITRINE OUTDIR: a film split across a real scheduler renders what one run renders. Starts its
 # own single-node Slurm (munged with a fresh key, slurmctld and slurmd, every file under OUTDIR, free
-# ports), submits scripts/slurm-film.sbatch for a 1 s kifs film in 3 array tasks and its encode job, and
-# holds each of the 30 frames to the same frame of a whole `vitrine record` run: max difference 0. Then
+# ports), submits scripts/slurm-film.sbatch for a 1 s neon film: its checkpoint job, 3 array tasks that
+# start from those checkpoints, and its encode job, and holds each of the 30 frames to the same frame
+# of a whole `vitrine record` run: max difference 0. Then
 # the encode job's film.mp4 has 30 frames, when this vitrine has an encode mode (else that check alone
 # is skipped, saying so). Slurm that cannot start here (not root, no munge, a daemon that refuses)
 # skips the test (exit 77) with the reason; the trap stops every daemon it started.
@@ -27,7 +28,7 @@ for tool in munged slurmctld slurmd sbatch squeue sinfo scontrol scancel; do
 done
 
 # The reference first, before any daemon: the whole film in one run.
-film=(--scene kifs --size 64x36 --fps 30 --seconds 1 --spp 2)
+film=(--scene neon --size 64x36 --fps 30 --seconds 1 --spp 2 --set chains=256)
 "$vitrine" record "${film[@]}" --out "$out/whole" >"$out/whole.log" 2>&1 || { cat "$out/whole.log"; fail "the whole run failed"; }
 
 # --- daemons, each stopped by the trap whatever happens -------------------------------------------------
@@ -152,17 +153,20 @@ echo "slurm up in $((SECONDS - started)) s (node $node, ports $ctld_port and $sl
 
 # --- the film, split in 3 array tasks, and its encode job ----------------------------------------------
 encode_available=0
-"$vitrine" --help 2>&1 | grep -q 'vitrine encode' && encode_available=1
+# (The help read whole first: grep -q quitting early would make the pipe fail under pipefail.)
+grep -q 'vitrine encode' <<<"$("$vitrine" --help 2>&1)" && encode_available=1
 (
   cd "$out"
-  export VITRINE=$vitrine FILM_SCENE=kifs FILM_SECONDS=1 FILM_FPS=30 FILM_SIZE=64x36 FILM_SPP=2 FILM_TASKS=3 \
-    FILM_FOLDER=$out/film FILM_MP4=$out/film.mp4
+  export VITRINE=$vitrine FILM_SCENE=neon FILM_SECONDS=1 FILM_FPS=30 FILM_SIZE=64x36 FILM_SPP=2 FILM_TASKS=3 \
+    FILM_FOLDER=$out/film FILM_MP4=$out/film.mp4 FILM_ARGS="--set chains=256"
   "$root/scripts/slurm-film.sbatch"
 ) | tee "$out/submit.log"
+checkpoints=$(sed -n 's/^submitted checkpoint job \([0-9]*\):.*/\1/p' "$out/submit.log")
 array=$(sed -n 's/^submitted array job \([0-9]*\):.*/\1/p' "$out/submit.log")
 encode=$(sed -n 's/^submitted encode job \([0-9]*\):.*/\1/p' "$out/submit.log")
+[ -n "$checkpoints" ] || fail "the script submitted no checkpoint job"
 [ -n "$array" ] || fail "the script submitted no array job"
-jobs_submitted=("$array" ${encode:+"$encode"})
+jobs_submitted=("$checkpoints" "$array" ${encode:+"$encode"})
 if ((encode_available)); then
   [ -n "$encode" ] || fail "vitrine has an encode mode but the script submitted no encode job"
 else
@@ -176,6 +180,8 @@ while pending; do
   sleep 0.5
 done
 echo "jobs done $((SECONDS - started)) s in"
+scontrol -o show job "$checkpoints" | grep -q 'JobState=COMPLETED .* ExitCode=0:0' ||
+  { tail_logs "$out"/vitrine-checkpoints-*.out; fail "the checkpoint job did not complete: $(scontrol -o show job "$checkpoints")"; }
 # Every task, and the encode job, ended COMPLETED with exit code 0 (scontrol keeps ended jobs MinJobAge, 300 s).
 states=$(scontrol -o show job "$array" | grep -o 'ArrayTaskId=[0-9]*\|JobState=[A-Z_]*\|ExitCode=[0-9:]*' | paste -sd' ')
 tasks_ok=$(scontrol -o show job "$array" | grep -c 'JobState=COMPLETED .* ExitCode=0:0' || true)
@@ -185,6 +191,8 @@ for i in 0 1 2; do
   first=$((i * 10))
   grep -q "recorded 10 of frames $first..$((first + 9)) into $out/film" "$log" ||
     { tail_logs "$log"; fail "task $i did not render frames $first..$((first + 9))"; }
+  ((i == 0)) || grep -q "simulated from the checkpoint at frame $first" "$log" ||
+    { tail_logs "$log"; fail "task $i did not start from the checkpoint at frame $first"; }
 done
 
 # The split film is the whole film, frame for frame, and nothing else was left in its folder.
@@ -204,8 +212,8 @@ for f in $(seq 0 29); do
 done
 listing=$(ls -A "$out/film")
 # shellcheck disable=SC2046
-[ "$listing" = "$(printf 'frame_%06d.exr\n' $(seq 0 29); echo record.json)" ] ||
-  fail "the film's folder holds more than 30 frames and record.json: $(echo "$listing" | paste -sd' ')"
+[ "$listing" = "$(printf 'checkpoint_%06d.state\n' 10 20; printf 'frame_%06d.exr\n' $(seq 0 29); echo record.json)" ] ||
+  fail "the film's folder holds more than its 2 checkpoints, 30 frames and record.json: $(echo "$listing" | paste -sd' ')"
 echo "30 frames from 3 array tasks equal the whole run's"
 
 if ((encode_available)); then

@@ -257,6 +257,40 @@ TEST(NeonEngine, RejectsBadSettings) {
   EXPECT_EQ(engine.latest().steps, 1u);
 }
 
+// A checkpoint mid-run (slots recycled, a pen held): an engine restored from it goes on exactly as the
+// one that saved it.
+TEST(NeonEngine, ARestoredEngineGoesOnAsTheSavedOne) {
+  auto play = [](ParticleEngine& engine, int from, int to) {
+    for (int step = from; step < to; ++step) {
+      if (step % 3 == 0) engine.release({float(step), 1.0f, 0.0f});
+      if (step == 5) engine.release({0.0f, 2.0f, 0.0f}, true);
+      if (step > 5 && step < 20) engine.steer({float(step) * 0.1f, 2.0f, 0.0f});
+      if (step == 20) engine.endSteer();
+      engine.step(0.05f + 0.001f * float(step));
+    }
+  };
+  ParticleEngine original({5, 0.7f}, EngineMode::LockStep);
+  play(original, 0, 12);
+  StateArchive saved = StateArchive::saving();
+  original.simulationState(saved);
+  ParticleEngine restored({5, 0.1f}, EngineMode::LockStep);
+  StateArchive in = StateArchive::restoring(saved.bytes());
+  restored.simulationState(in);
+  EXPECT_TRUE(in.finished());
+  EXPECT_EQ(restored.latest().steps, 12u);
+  play(original, 12, 40);
+  play(restored, 12, 40);
+  const Snapshot& a = original.latest();
+  const Snapshot& b = restored.latest();
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.releases, b.releases);
+  ASSERT_EQ(a.heads.size(), b.heads.size());
+  EXPECT_EQ(std::memcmp(a.heads.data(), b.heads.data(), a.heads.size() * sizeof(HeadState)), 0);
+  ParticleEngine smaller({4, 0.7f}, EngineMode::LockStep);  // another size is refused
+  StateArchive again = StateArchive::restoring(saved.bytes());
+  EXPECT_THROW(smaller.simulationState(again), std::invalid_argument);
+}
+
 // ---------------------------------------------------------------------------------- determinism
 
 // A script of releases: a few per step at hashed positions, enough to fill 64 slots and replace.

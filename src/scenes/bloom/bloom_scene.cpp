@@ -27,7 +27,9 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <optional>
 #include <utility>
+#include <vector>
 
 namespace vitrine::bloom {
 namespace {
@@ -145,15 +147,8 @@ class BloomScene final : public Scene {
                        {0.20f, settings_.decayRising, settings_.decayVenting});
     if (settings_.phaseSource == PhaseSource::Cpu)
       detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
-    while (auto result = statsReadback_.poll()) {  // finished a frame or more ago: no waiting
-      shader::BloomLatticeCounts counts;
-      std::memcpy(&counts, result->bytes.data(), sizeof(counts));
-      const LatticeStats stats = LatticeStats::from(counts);
-      stats_ = stats;
-      history_.push_back({float(stats.peak), stats.fractions()[1], proxy_});
-      if (history_.size() > kHistory) history_.pop_front();
-      if (settings_.phaseSource == PhaseSource::Gpu) detect(stats.fractions(), kFractionBands, result->tag);
-    }
+    for (const Reading& reading : std::exchange(carried_, {})) observe(reading);
+    while (auto reading = pollStatistics()) observe(*reading);  // finished a frame or more ago: no waiting
     if (settings_.vent) {
       settings_.vent = false;
       restart(0.0f);
@@ -178,6 +173,19 @@ class BloomScene final : public Scene {
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
   float renderScale() const override { return tierScale(quality_.active()); }
+
+  // Between frames. The statistics of the frame just finished wait in the readback ring: they are taken
+  // out and carried, so the next update reads them exactly as it would have.
+  bool checkpoints() const override { return true; }
+  void simulationState(StateArchive& state) override {
+    if (!state.isRestoring())
+      while (auto reading = pollStatistics()) carried_.push_back(*reading);
+    state(droning_, appliedGain_, builtLattice_, builtFill_, time_, frame_, seed_, source_, stepsPending_,
+          givenUpSeconds_, stepSeconds_, proxy_, stats_, detector_, history_, carried_, label_, labelTime_,
+          chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_);
+    if (state.isRestoring()) resources_.redeclare(lattice_, latticeDecl(builtLattice_, 0.0f));
+    state.contents(resources_, lattice_);
+  }
   double frameCost(const void* values) const override {  // the lattice's diffusion dominates
     const auto& v = *static_cast<const Settings*>(values);
     return std::pow(double(v.lattice), 3.0) * (1.0 + double(v.samples) / 256.0);
@@ -207,12 +215,32 @@ class BloomScene final : public Scene {
   struct Sample {
     float peak, fraction, proxy;
   };
+  struct Reading {  // one frame's statistics, tagged with its time
+    LatticeStats stats;
+    double time;
+  };
+
+  std::optional<Reading> pollStatistics() {
+    const auto result = statsReadback_.poll();
+    if (!result) return std::nullopt;
+    shader::BloomLatticeCounts counts;
+    std::memcpy(&counts, result->bytes.data(), sizeof(counts));
+    return Reading{LatticeStats::from(counts), result->tag};
+  }
+
+  void observe(const Reading& reading) {
+    stats_ = reading.stats;
+    history_.push_back({float(stats_.peak), stats_.fractions()[1], proxy_});
+    if (history_.size() > kHistory) history_.pop_front();
+    if (settings_.phaseSource == PhaseSource::Gpu) detect(stats_.fractions(), kFractionBands, reading.time);
+  }
   static constexpr size_t kHistory = 600;  // ten seconds of readings
 
   gpu::ImageDecl latticeDecl(int n, float fill) const {
     gpu::ImageDecl decl{"bloom vapour", kLatticeFormat,
                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                         gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n)), 1, gpu::Pairing::PingPong};
+    decl.state = true;  // checkpoints save the vapour
     // Initial texels: the fill inside the crystal, zero outside.
     const uint32_t size = uint32_t(n);
     std::vector<float> texels(size_t(size) * size * size, 0.0f);
@@ -446,6 +474,7 @@ class BloomScene final : public Scene {
   float stepSeconds_ = 1.0f / 60.0f;
   float proxy_ = 0.0f;
   LatticeStats stats_;
+  std::vector<Reading> carried_;  // readings a checkpoint took out of the ring, for the next update
   PhaseDetector detector_;
   std::deque<Sample> history_;
   text::Font labelFont_;

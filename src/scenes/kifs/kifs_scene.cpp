@@ -64,6 +64,8 @@ class KifsScene final : public Scene {
   }
 
   params::Bound parameters() override { return {&schema(), &settings_}; }
+  // A frame depends on its time and the parameters alone (a drag lands in dragX and dragY).
+  bool checkpoints() const override { return true; }
 
  private:
   Tier activeTier() const { return quality_.active(); }

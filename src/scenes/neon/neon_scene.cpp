@@ -73,7 +73,8 @@ gpu::BufferDecl particlesDecl(int chains, int particles) {
           .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
           .pairing = gpu::Pairing::PingPong,
           .initial = bytesOf(hidden),
-          .initialUse = gpu::use::ComputeReadBuffer};
+          .initialUse = gpu::use::ComputeReadBuffer,
+          .state = true};  // checkpoints save the chains
 }
 
 // The building's boxes, uploaded once.
@@ -149,6 +150,8 @@ class NeonScene final : public Scene {
     return double(v.chains) * double(v.particles);
   }
   void drawPanel() override;
+  bool checkpoints() const override { return true; }
+  void simulationState(StateArchive& state) override;
 
  private:
   void startEngine();
@@ -292,6 +295,21 @@ void NeonScene::update(const FrameInput& input) {
   if (stepsPending_.size() >= kMaxChainStepsPerFrame) stepsPending_.erase(stepsPending_.begin());
   stepsPending_.push_back({input.dt, followerLerp(settings_.lerp, input.dt), strength, settings_.fieldScale,
                            reducedMotion_ ? 0.0 : input.time * 0.05});
+}
+
+// Between frames: the engine, which chains the GPU has placed, the autopilot, and every particle.
+void NeonScene::simulationState(StateArchive& state) {
+  int chains = builtChains_, particles = builtParticles_;
+  state(chains, particles);
+  if (state.isRestoring()) {
+    if (chains != settings_.chains || particles != settings_.particles)
+      throw Error("neon's saved chains do not match its parameters");
+    resizeChains();  // buffers and an engine of the saved size, restored below
+  }
+  engine_->simulationState(state);
+  placement_->simulationState(state);
+  state(releases_, lastInput_, drawing_, autopilotNext_, time_, reducedMotion_, stepsPending_);
+  state.contents(resources_, particles_);
 }
 
 uint32_t NeonScene::aliveChains() {

@@ -212,6 +212,23 @@ void ParticleEngine::dropStaleOccupants() {
   }
 }
 
+void ParticleEngine::simulationState(StateArchive& state) {
+  if (mode_ != EngineMode::LockStep) throw std::logic_error("neon: only a lock-step engine can be checkpointed");
+  {
+    std::lock_guard lock(inboxMutex_);
+    if (!inbox_.empty()) throw std::logic_error("neon: a checkpoint between a release and its step");
+  }
+  std::vector<uint32_t> freeSlots;  // the heap's pop order is the slots' order, whatever its layout
+  for (auto heap = free_; !heap.empty(); heap.pop()) freeSlots.push_back(heap.top());
+  uint64_t applied = releasesApplied_.load(std::memory_order_relaxed);
+  state(decayPerSecond_, heads_, freeSlots, occupants_, serial_, pen_, steps_, applied);
+  if (!state.isRestoring()) return;
+  if (heads_.size() != maxChains_) throw std::invalid_argument("neon: the saved engine has another number of chains");
+  free_ = decltype(free_)(std::greater<>(), std::move(freeSlots));
+  releasesApplied_.store(applied, std::memory_order_relaxed);
+  publish();
+}
+
 void ParticleEngine::publish() {
   Snapshot& back = snapshots_.back();
   back.steps = steps_;

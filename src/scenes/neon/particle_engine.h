@@ -5,6 +5,7 @@
 // caller's thread (lock-step: headless runs and tests, deterministic) or on the engine's own worker
 // thread (the gallery), which publishes a snapshot after every step through a triple buffer that the
 // render thread reads without ever waiting.
+#include "frame/state_archive.h"
 #include "scenes/neon/head_state.h"
 
 #include <glm/vec3.hpp>
@@ -112,6 +113,10 @@ class ParticleEngine {
   // The newest published snapshot, valid until this thread's next call. Never waits.
   const Snapshot& latest() { return snapshots_.latest(); }
 
+  // Checkpoints: the whole simulation saved or restored, between steps of a lock-step engine (a
+  // worker's would race it: std::logic_error). A restored engine publishes the restored heads.
+  void simulationState(StateArchive& state);
+
   uint64_t releasesApplied() const { return releasesApplied_.load(std::memory_order_relaxed); }  // any thread
   uint32_t maxChains() const { return maxChains_; }
   EngineMode mode() const { return mode_; }
@@ -182,6 +187,7 @@ class PlacementGuard {
   explicit PlacementGuard(uint32_t maxChains) : placed_(maxChains, 0u) {}
   // Copies `heads` into `out` (the upload, same size), fixing up unplaced chains; returns how many.
   uint32_t copy(std::span<const HeadState> heads, std::span<HeadState> out);
+  void simulationState(StateArchive& state) { state(placed_); }  // checkpoints
 
  private:
   std::vector<uint32_t> placed_;  // per chain: the serial of the release it was last placed for, 0 for none

@@ -98,6 +98,14 @@ class NoodlesScene final : public Scene {
 
   void drawPanel() override;
 
+  // The strands are integrated afresh from the settings and the drift: only the drift and the camera
+  // carry over from frame to frame.
+  bool checkpoints() const override { return true; }
+  void simulationState(StateArchive& state) override {
+    state(writhe_, lastTime_, reducedMotion_, pinned_, dragging_, camera_);
+    if (state.isRestoring()) integrated_.reset();
+  }
+
  private:
   // (Re)declares the node buffer when grid or segments changed (the host retires the old one, which
   // frames in flight may still read). Nothing is allocated in frames where they did not change.
