@@ -35,6 +35,7 @@ int runHeadless(const Options& options) {
   OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
+  config.flashGuard = flashGuardOn(options);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);

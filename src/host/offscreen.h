@@ -9,6 +9,7 @@
 #include "host/scene_renderer.h"
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -30,6 +31,7 @@ struct OffscreenConfig {
   audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
   double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
   LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
+  bool flashGuard = false;           // --flash-guard (on with --reduced-motion): frames shown through it
 };
 
 struct FrameTimes {
@@ -75,6 +77,7 @@ class Offscreen {
   const gpu::Device& device_;
   Assets assets_ = Assets::locate();
   gpu::ProgramLibrary programs_;
+  std::unique_ptr<FlashGuard> guard_;  // before the renderer: destroyed after it has drained the device
   SceneRenderer renderer_;
   VkExtent2D size_;
   gpu::Image output_;

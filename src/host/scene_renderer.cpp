@@ -96,7 +96,7 @@ void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput&
                            const Crossfade& fade) {
   recordTarget(cmd, slot, input, dst.extent);
   if (dst.storageView && device_.storageWriteWithoutFormat())
-    present(cmd, dst, fade);
+    present(cmd, dst, fade, input.time, guard_ != nullptr && drawing_);
   else
     blit(cmd, dst);
 }
@@ -105,18 +105,25 @@ void SceneRenderer::recordScaled(VkCommandBuffer cmd, gpu::Image& output) {
   output.discard();  // every texel is written
   const BlitDestination dst{output.handle(), output.extent2d(), output.lastUse(), gpu::use::TransferSrc, output.view()};
   if (device_.storageWriteWithoutFormat())
-    present(cmd, dst, {});
+    present(cmd, dst, {}, 0.0, false);
   else
     blit(cmd, dst);
   output.assumeUse(gpu::use::TransferSrc);
 }
 
-void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
-  gpu::Pass pass(device_, &timer_, cmd, "present");
+void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade, double time,
+                            bool guarded) {
+  gpu::Pass pass(device_, &timer_, cmd, guarded ? "present + flash guard" : "present");
   target_.use(cmd, gpu::use::ComputeSample);
   gpu::Image& other = fade.other ? *fade.other : target_;
   if (fade.other) other.use(cmd, gpu::use::ComputeSample);
   gpu::transition(cmd, dst.image, dst.before, gpu::use::ComputeWrite);
+  if (guarded) {
+    guard_->present(cmd, GuardSources{target_.view(), other.view(), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f},
+                    GuardOutput{dst.storageView, dst.extent, dst.encodeSrgb}, time);
+    gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);
+    return;
+  }
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   present_.bind(cmd);
   present_.push(cmd, gpu::Bindings()

@@ -8,6 +8,7 @@
 #include "gpu/frame_resources.h"
 #include "gpu/resources.h"
 #include "gpu/stream.h"
+#include "host/flash_guard.h"
 #include "scenes/scene.h"
 
 #include <memory>
@@ -61,6 +62,10 @@ class SceneRenderer {
   // Whether the frames recorded from now on are seen (FrameContext::draws); record's frames before its
   // --range are simulated only.
   void setDrawing(bool drawing) { drawing_ = drawing; }
+  // The flash guard the frames presented from now on go through (null: none). It belongs to the
+  // output, not to this renderer: the gallery hands its one guard to whichever renderer is showing.
+  void setFlashGuard(FlashGuard* guard) { guard_ = guard; }
+  FlashGuard* flashGuard() const { return guard_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
               const Crossfade& fade = {});
@@ -77,9 +82,11 @@ class SceneRenderer {
  private:
   bool realtime_ = false;
   bool drawing_ = true;
+  FlashGuard* guard_ = nullptr;
   void ensureTarget(VkExtent2D output);
   void blit(VkCommandBuffer cmd, const BlitDestination& dst);
-  void present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade);
+  // `guarded` at most once a frame, for the frame that is shown (a screenshot's copy is not).
+  void present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade, double time, bool guarded);
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
   const Assets& assets_;

@@ -1,0 +1,19 @@
+// What the present pass shows at a pixel of the output, before any transfer function: the scene's
+// target scaled onto the output, mixed with the incoming scene's in a cross-fade. One definition for
+// the present pass and the flash guard's passes, so the guard measures exactly what is shown.
+#ifndef HOST_PRESENT_COLOUR_GLSL
+#define HOST_PRESENT_COLOUR_GLSL
+
+vec4 presentedColour(sampler2D source, sampler2D incoming, float fade, ivec2 pixel, ivec2 size) {
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+  vec4 colour = textureLod(source, uv, 0.0);
+  if (fade > 0.0) colour = mix(colour, textureLod(incoming, uv, 0.0), fade);
+  return colour;
+}
+
+vec3 linearToSrgb(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+}
+
+#endif
