@@ -122,6 +122,7 @@ constexpr FlagRule kFlagRules[] = {
     {"--output-warp", kGallery | kHeadless},
     {"--outputs", kGallery},
     {"--span", kGallery},
+    {"--flash-guard", kRuns},
     {"--seed", kRuns},
     {"--size", kRuns},
     {"--set", kRuns, true},
@@ -217,8 +218,8 @@ const char* usage() {
   return R"(Vitrine: a gallery of real-time GPU pieces.
 
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
-          [--reduced-motion] [--seed S] [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]...
-          [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
+          [--reduced-motion] [--flash-guard on|off] [--seed S] [--set [SCENE.]KEY=VALUE]...
+          [--preset [SCENE.]NAME]... [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
           [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]... [--remote-saves]]
           [--map FILE|SOURCE=[SCENE.]KEY[:LO:HI]]... [--audio-in FILE | --audio-in-device NAME|INDEX|default]
           [--monitor INDEX|NAME | --span] [--output-warp FILE.json] [--outputs FILE.json]
@@ -266,6 +267,8 @@ Live input (docs/LIVE.md): --map plays a parameter or action from a source (audi
 pad.0.axis.1, osc.NAME, lfo.sine.8); --audio-in FILE feeds a sound file (looped in the gallery, frame-exact
 in headless and record runs, whose audio.wav then carries it) and turns on the scenes' audio mappings, as
 --audio-in-device does with a capture device; --midi-in plays a MIDI file's events against simulation time.
+--flash-guard on holds back what would flash more than three times a second over a large area (WCAG 2.3.1, in
+every mode; docs/INSTALLATIONS.md); it is on by default with --kiosk and --reduced-motion, off otherwise.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
 that scene. --list-params shows each scene's parameters.
 A flag outside its mode (--fps in --headless, --json for --out) is refused, as is one given twice, except
@@ -347,6 +350,12 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--output-warp") options.outputWarp = value(arg);
     else if (arg == "--outputs") options.outputs = value(arg);
     else if (arg == "--span") options.span = true;
+    else if (arg == "--flash-guard") {
+      const std::string state = lowercase(value(arg));
+      if (state != "on" && state != "off")
+        throw Error(fmt::format("--flash-guard is on or off, not '{}'.", state));
+      options.flashGuard = state == "on";
+    }
     else if (arg == "--seed") options.seed = parseWhole(arg, value(arg), 0);
     else if (arg == "--size") options.size = parseSize(value(arg));
     else if (arg == "--frames") options.frames = parseWhole(arg, value(arg), 1);

@@ -32,6 +32,7 @@ struct Options {
   std::string device;                // --device INDEX|NAME
   bool validation = false;           // --validate, or VITRINE_VALIDATION=1
   bool reducedMotion = false;
+  std::optional<bool> flashGuard;    // --flash-guard on|off; unset: flashGuardOn() decides
   uint32_t seed = 0;
   std::optional<VkExtent2D> size;    // --size WxH (window size in the gallery)
   uint32_t frames = 1;
@@ -77,6 +78,12 @@ struct Options {
   std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
   std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time
 };
+
+// Whether frames go through the flash guard (docs/INSTALLATIONS.md): as --flash-guard says, else on in
+// kiosk mode and with --reduced-motion, where nobody may be there to look away, or somebody asked for calm.
+inline bool flashGuardOn(const Options& options) {
+  return options.flashGuard.value_or(options.kiosk || options.reducedMotion);
+}
 
 // A record run's frame size when --size is not given.
 inline constexpr VkExtent2D kRecordSize{1280, 720};

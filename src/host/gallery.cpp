@@ -137,6 +137,8 @@ class Gallery {
   MenuLayout menuLayout_;  // before the overlay, whose layout file is written when it goes
   TierWatch tiers_;        // before the renderers, whose scenes report to it
   audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
+  FlashGuard guard_;          // before the renderers, which drain the device before it goes
+  bool flashGuard_ = false;   // --flash-guard, --kiosk, --reduced-motion, then the menu's switch
   std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
   std::unique_ptr<SceneRenderer> incoming_;  // kiosk mode: the scene fading in, made at the first fade
   Swapchain swapchain_;
@@ -205,6 +207,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       device_(instance_, {options.device, surface_.handle()}),
       programs_(checkWindowSize(device_, options.size), VITRINE_SHADER_SOURCE_DIR, /*preferNewerSources=*/true),
       settings_(params::defaultSettingsPath(), options.resetSettings, /*keepScene=*/options.kiosk),
+      guard_(device_, programs_),
+      flashGuard_(flashGuardOn(options)),
       renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
       swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
@@ -517,6 +521,7 @@ void Gallery::frame() {
     incoming_->recordTarget(cmd, slot, incomingShown_, frameExtent(swapchain_.extent(), warp()));
     fade = {&incoming_->target(), fade_};
   }
+  renderer_->setFlashGuard(flashGuard_ ? &guard_ : nullptr);
   renderer_->record(cmd, slot, shown_,
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
                                     compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, warp()},
@@ -630,9 +635,12 @@ void Gallery::showMenu() {
                   clockNote(), &menuLayout_};
   state.livePanel = &live_->panel();
   state.live = live_->panelState();
+  state.flashGuard = flashGuard_;
   const MenuChoice choice = drawMenu(state);
   if (live_->apply(choice.live, panel_) && remote_) remote_->setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
+  if (choice.flashGuard && !flashGuard_) guard_.reset();  // what it held is stale: count from the next frame
+  flashGuard_ = choice.flashGuard;
   time_ = choice.time;
   time_.speed = TimeControl::clampSpeed(time_.speed);
   helpShown_ = choice.help;

@@ -36,6 +36,7 @@ int runHeadless(const Options& options) {
   OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
+  config.flashGuard = flashGuardOn(options);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   if (!options.outputWarp.empty()) config.warp = readOutputWarp(options.outputWarp);
   std::optional<JsonLinesEventLog> events;

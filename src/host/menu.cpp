@@ -213,6 +213,7 @@ bool menuHasKeyboard() {
 // the user opens keep their place; messages that come and go are last, where they move nothing.
 MenuChoice drawMenu(const MenuState& state) {
   MenuChoice choice{nullptr, state.vsync, std::nullopt, state.time, state.help, state.capturing};
+  choice.flashGuard = state.flashGuard;
   choice.time.speed = TimeControl::clampSpeed(choice.time.speed);  // shown and kept within 0-4x
   if (choice.help) drawHelp(state, choice.help);
   choice.costly = askAboutCostlyEdit(state.costly);
@@ -250,6 +251,9 @@ MenuChoice drawMenu(const MenuState& state) {
         ImGui::SameLine();
         ImGui::TextColored(kErrorRed, "REC");
       }
+      ImGui::Checkbox("flash guard", &choice.flashGuard);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Holds back what would flash over three times a second (WCAG 2.3.1): docs/INSTALLATIONS.md");
     }
     const std::string header = fmt::format("{}###scene panel", state.current.title);
     if (section(header.c_str(), layout.panel)) {

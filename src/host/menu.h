@@ -55,6 +55,7 @@ struct MenuState {
   MenuLayout* layout = nullptr;                // open sections and reserved rows, kept across runs
   LivePanel* livePanel = nullptr;              // live input: audio, MIDI, gamepads, mappings
   LivePanelState live;
+  bool flashGuard = false;                     // frames go through the flash guard
 };
 
 struct MenuChoice {
@@ -66,6 +67,7 @@ struct MenuChoice {
   bool capture = false;              // live capture on (F9)
   std::optional<bool> costly;        // the answer about the costly edit: apply (true) or not
   LivePanelChoice live;              // what the user asked of live input
+  bool flashGuard = false;           // the flash guard's switch as the menu left it
 };
 
 MenuChoice drawMenu(const MenuState& state);

@@ -18,6 +18,8 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
   if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
+  if (config.flashGuard) guard_ = std::make_unique<FlashGuard>(device, programs_);
+  renderer_.setFlashGuard(guard_.get());
   renderer_.setEventSink(config.events);
   renderer_.setAudioSink(config.audio);
   renderer_.setScene(*info);

@@ -9,6 +9,7 @@
 #include "host/scene_renderer.h"
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -31,6 +32,7 @@ struct OffscreenConfig {
   double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
   LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
   std::optional<maths::OutputWarp> warp;  // --output-warp: how the output shows the frame (a projector's)
+  bool flashGuard = false;           // --flash-guard (on with --reduced-motion): frames shown through it
 };
 
 struct FrameTimes {
@@ -76,6 +78,7 @@ class Offscreen {
   const gpu::Device& device_;
   Assets assets_ = Assets::locate();
   gpu::ProgramLibrary programs_;
+  std::unique_ptr<FlashGuard> guard_;  // before the renderer: destroyed after it has drained the device
   SceneRenderer renderer_;
   VkExtent2D size_;
   gpu::Image output_;

@@ -112,6 +112,7 @@ int runRecord(const Options& options) {
                                 : fingerprint(inputs.inputText + (inputs.live ? inputs.live->fingerprintText() : "")),
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
+    manifest.flashGuard = config.flashGuard;
     claimFolder(folder, manifest, holdsFrames(folder));
     // What is there already, judged once: frames kept are not rendered again (--checkpoints-only keeps all).
     std::vector<Found> found(end - first, Found::Whole);

@@ -50,6 +50,7 @@ std::string manifestText(const RecordManifest& manifest) {
       {"seed", manifest.seed},
       {"time", manifest.time},
       {"reduced_motion", manifest.reducedMotion},
+      {"flash_guard", manifest.flashGuard},
       {"format", manifest.format},
       {"input", manifest.input},
       {"values", values},
@@ -77,6 +78,7 @@ RecordManifest parseManifest(std::string_view text, std::string_view name) {
     manifest.seed = document.at("seed").get<uint32_t>();
     manifest.time = document.at("time").get<double>();
     manifest.reducedMotion = document.at("reduced_motion").get<bool>();
+    manifest.flashGuard = document.value("flash_guard", false);
     manifest.format = document.at("format").get<std::string>();
     manifest.input = document.at("input").get<std::string>();
     for (const auto& [key, value] : document.at("values").items())
@@ -100,6 +102,7 @@ std::vector<std::string> manifestDifferences(const RecordManifest& folder, const
   differ("seed", fmt::format("{}", folder.seed), fmt::format("{}", run.seed));
   differ("time", fmt::format("{}", folder.time), fmt::format("{}", run.time));
   differ("reduced motion", folder.reducedMotion ? "on" : "off", run.reducedMotion ? "on" : "off");
+  differ("flash guard", folder.flashGuard ? "on" : "off", run.flashGuard ? "on" : "off");
   differ("format", folder.format, run.format);
   differ("input script", folder.input.empty() ? "none" : folder.input, run.input.empty() ? "none" : run.input);
   if (folder.scene != run.scene) return out;  // other parameters altogether: the scene says it

@@ -24,6 +24,7 @@ struct RecordManifest {
   std::string format;        // "exr" or "png"
   std::string input;         // the --input script's fingerprint (FNV-1a of its bytes), empty without one
   params::KeyValues values;  // every parameter of the scene with its canonical text, sorted by key
+  bool flashGuard = false;   // frames through the flash guard (a manifest from before it: off)
   bool operator==(const RecordManifest&) const = default;
 };
 

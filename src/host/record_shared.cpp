@@ -18,6 +18,7 @@ OffscreenConfig recordConfig(const Options& options) {
   OffscreenConfig config{options.scene, options.size.value_or(kRecordSize), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
+  config.flashGuard = flashGuardOn(options);
   config.step = 1.0 / (options.fps * double(options.spp));
   return config;
 }

@@ -117,33 +117,60 @@ void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const Frame
 void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
                            const Crossfade& fade) {
   recordTarget(cmd, slot, input, frameExtent(dst.extent, dst.warp));
-  if (dst.storageView && device_.storageWriteWithoutFormat())
-    present(cmd, dst, fade);
-  else
-    blit(cmd, dst);
+  shown_ = guard_ && drawing_ && canPresent(dst) ? &guardFrame(cmd, fade, input.time) : nullptr;
+  recordOutput(cmd, dst, fade);
 }
 
 void SceneRenderer::recordOutput(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
-  if (dst.storageView && device_.storageWriteWithoutFormat())
-    present(cmd, dst, fade);
-  else
+  if (!canPresent(dst))
     blit(cmd, dst);
+  else if (shown_)  // the guard's frame, the fade already in it
+    present(cmd, dst, *shown_, {});
+  else
+    present(cmd, dst, target_, fade);
 }
 
 void SceneRenderer::recordScaled(VkCommandBuffer cmd, gpu::Image& output) {
   output.discard();  // every texel is written
   const BlitDestination dst{output.handle(), output.extent2d(), output.lastUse(), gpu::use::TransferSrc, output.view()};
-  if (device_.storageWriteWithoutFormat())
-    present(cmd, dst, {});
+  if (canPresent(dst))
+    present(cmd, dst, target_, {});
   else
     blit(cmd, dst);
   output.assumeUse(gpu::use::TransferSrc);
 }
 
-void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
-  gpu::Pass pass(device_, &timer_, cmd, "present");
+bool SceneRenderer::canPresent(const BlitDestination& dst) const {
+  return dst.storageView && device_.storageWriteWithoutFormat();
+}
+
+// The frame at the target's size with the incoming scene mixed in and the flashes held back: what every
+// output of this frame shows, so one guard covers them all whatever their warps.
+gpu::Image& SceneRenderer::guardFrame(VkCommandBuffer cmd, const Crossfade& fade, double time) {
+  gpu::Pass pass(device_, &timer_, cmd, "flash guard");
+  const VkExtent2D size = target_.extent2d();
+  if (!guarded_ || guarded_.extent2d().width != size.width || guarded_.extent2d().height != size.height) {
+    if (guarded_) device_.retire(std::move(guarded_));
+    gpu::ImageDesc desc;
+    desc.extent = {size.width, size.height, 1};
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    guarded_ = gpu::Image(device_, desc, "flash-guarded frame");
+  }
   target_.use(cmd, gpu::use::ComputeSample);
   gpu::Image& other = fade.other ? *fade.other : target_;
+  if (fade.other) other.use(cmd, gpu::use::ComputeSample);
+  guarded_.discard();  // every texel is written
+  guarded_.use(cmd, gpu::use::ComputeWrite);
+  guard_->present(cmd, GuardSources{target_.view(), other.view(), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f},
+                  GuardOutput{guarded_.view(), size, false}, time);
+  return guarded_;
+}
+
+void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, gpu::Image& frame, const Crossfade& fade) {
+  gpu::Pass pass(device_, &timer_, cmd, "present");
+  frame.use(cmd, gpu::use::ComputeSample);
+  gpu::Image& other = fade.other ? *fade.other : frame;
   if (fade.other) other.use(cmd, gpu::use::ComputeSample);
   gpu::transition(cmd, dst.image, dst.before, gpu::use::ComputeWrite);
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
@@ -151,7 +178,7 @@ void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, con
   const gpu::StreamSlice warp = stream_.writeValue(warpBlock(warped ? *dst.warp : maths::OutputWarp{}));
   present_.bind(cmd);
   present_.push(cmd, gpu::Bindings()
-                         .sampledImage("source", target_.view(), linear, gpu::use::ComputeSample.layout)
+                         .sampledImage("source", frame.view(), linear, gpu::use::ComputeSample.layout)
                          .storageImage("destination", dst.storageView)
                          .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout)
                          .uniformBuffer("Warp", warp.buffer, warp.offset, sizeof(shader::HostOutputWarp)));

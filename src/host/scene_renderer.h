@@ -9,6 +9,7 @@
 #include "gpu/resources.h"
 #include "gpu/stream.h"
 #include "maths/output_warp.h"
+#include "host/flash_guard.h"
 #include "scenes/scene.h"
 
 #include <memory>
@@ -69,6 +70,10 @@ class SceneRenderer {
   // Whether the frames recorded from now on are seen (FrameContext::draws); record's frames before its
   // --range are simulated only.
   void setDrawing(bool drawing) { drawing_ = drawing; }
+  // The flash guard the frames presented from now on go through (null: none). It belongs to the
+  // output, not to this renderer: the gallery hands its one guard to whichever renderer is showing.
+  void setFlashGuard(FlashGuard* guard) { guard_ = guard; }
+  FlashGuard* flashGuard() const { return guard_; }
 
   void record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
               const Crossfade& fade = {});
@@ -87,9 +92,13 @@ class SceneRenderer {
  private:
   bool realtime_ = false;
   bool drawing_ = true;
+  FlashGuard* guard_ = nullptr;
   void ensureTarget(VkExtent2D output);
   void blit(VkCommandBuffer cmd, const BlitDestination& dst);
-  void present(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade);
+  bool canPresent(const BlitDestination& dst) const;  // the compute path: else a blit
+  // Once a frame, for the frame that is shown (a screenshot's copy is not): the guard's frame.
+  gpu::Image& guardFrame(VkCommandBuffer cmd, const Crossfade& fade, double time);
+  void present(VkCommandBuffer cmd, const BlitDestination& dst, gpu::Image& frame, const Crossfade& fade);
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
   const Assets& assets_;
@@ -104,6 +113,8 @@ class SceneRenderer {
   std::unique_ptr<gpu::FrameResources> resources_;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;
+  gpu::Image guarded_;            // the flash guard's frame (guardFrame), when the guard is on
+  gpu::Image* shown_ = nullptr;   // this frame's guarded frame, which every output shows; null: the target
   VkExtent2D sceneExtent_{0, 0};  // what the scene and its images were last sized for
 };
 

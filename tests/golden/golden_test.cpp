@@ -7,6 +7,8 @@
 #include "host/offscreen.h"
 #include "support/gpu_test.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -121,9 +123,26 @@ TEST_P(GoldenMutation, ComparisonCatchesTheChange) {
   EXPECT_FALSE(result.passed) << c.name << " still matches its golden: " << result.summary();
 }
 
+// The flash guard never alters a frame within WCAG 2.3.1's thresholds: every case, rendered through
+// it, is the same to the last bit as without it (docs/INSTALLATIONS.md).
+class GoldenGuarded : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
+
+TEST_P(GoldenGuarded, FlashGuardChangesNoBit) {
+  const GoldenCase& c = GetParam();
+  host::OffscreenConfig guarded = c.config;
+  guarded.flashGuard = true;
+  const ImageRgba plain = render(device(), c.config, c.frames, {});
+  const ImageRgba shown = render(device(), guarded, c.frames, {});
+  ASSERT_EQ(plain.pixels.size(), shown.pixels.size());
+  float largest = 0.0f;
+  for (size_t i = 0; i < plain.pixels.size(); ++i) largest = std::max(largest, std::abs(plain.pixels[i] - shown.pixels[i]));
+  EXPECT_EQ(largest, 0.0f) << c.name << ": the guard changed a frame within the thresholds";
+}
+
 std::string caseName(const ::testing::TestParamInfo<GoldenCase>& info) { return info.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Frames, Golden, ::testing::ValuesIn(loadCases(false)), caseName);
+INSTANTIATE_TEST_SUITE_P(Frames, GoldenGuarded, ::testing::ValuesIn(loadCases(false)), caseName);
 INSTANTIATE_TEST_SUITE_P(Frames, GoldenMutation, ::testing::ValuesIn(loadCases(true)), caseName);
 
 }  // namespace

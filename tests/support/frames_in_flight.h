@@ -12,7 +12,8 @@ namespace vitrine::test {
 class FramesInFlight {
  public:
   FramesInFlight(const gpu::Device& device, Assets assets)
-      : device_(device), assets_(std::move(assets)), programs_(device), renderer_(device, programs_, assets_, 2),
+      : device_(device), assets_(std::move(assets)), programs_(device), guard_(device, programs_),
+        renderer_(device, programs_, assets_, 2),
         pool_(gpu::createCommandPool(device, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, "test frames")) {
     const VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
                                             VK_COMMAND_BUFFER_LEVEL_PRIMARY, 2};
@@ -23,6 +24,8 @@ class FramesInFlight {
   FramesInFlight& operator=(const FramesInFlight&) = delete;
 
   host::SceneRenderer& renderer() { return renderer_; }
+  // Frames from now on go through the flash guard (or not), as the gallery's switch does.
+  void guard(bool on) { renderer_.setFlashGuard(on ? &guard_ : nullptr); }
 
   void frames(int count, VkExtent2D size) {
     for (int i = 0; i < count; ++i) frame(size);
@@ -71,6 +74,7 @@ class FramesInFlight {
   const gpu::Device& device_;
   Assets assets_;
   gpu::ProgramLibrary programs_;
+  host::FlashGuard guard_;  // before the renderer, which drains the device before it goes
   host::SceneRenderer renderer_;
   gpu::Unique<VkCommandPool> pool_;
   std::array<VkCommandBuffer, 2> cmds_{};

@@ -36,6 +36,18 @@ std::string refusal(std::vector<const char*> args) {
   return "accepted";
 }
 
+// -------------------------------------------------------------------------------------- flash guard
+
+TEST(Options, FlashGuardIsOnInKioskModeAndWithReducedMotionUnlessTold) {
+  EXPECT_FALSE(flashGuardOn(parse({})));
+  EXPECT_TRUE(flashGuardOn(parse({"--kiosk"})));
+  EXPECT_TRUE(flashGuardOn(parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--reduced-motion"})));
+  EXPECT_FALSE(flashGuardOn(parse({"--kiosk", "--flash-guard", "off"})));
+  EXPECT_TRUE(flashGuardOn(parse({"record", "--scene", "kifs", "--seconds", "1", "--out", "f", "--flash-guard", "ON"})));
+  EXPECT_EQ(refusal({"--flash-guard", "maybe"}), "--flash-guard is on or off, not 'maybe'.");
+  EXPECT_EQ(refusal({"--flash-guard"}), "--flash-guard needs a value; see vitrine --help.");
+}
+
 // ------------------------------------------------------------------------------------------- numbers
 
 TEST(OptionsNumbers, TimeMustBeFinite) {

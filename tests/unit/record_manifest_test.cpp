@@ -31,6 +31,7 @@ TEST(RecordManifest, ReadsBackWhatItWrites) {
   film.time = -1.5;
   film.input = fingerprint("0.5 down\n");
   film.reducedMotion = true;
+  film.flashGuard = true;
   EXPECT_EQ(parseManifest(manifestText(film), "record.json"), film);
   EXPECT_EQ(fingerprint("0.5 down\n").size(), 16u);
   EXPECT_NE(fingerprint("0.5 down\n"), fingerprint("0.5 up\n"));
@@ -49,6 +50,9 @@ TEST(RecordManifest, NamesEveryDifference) {
   other.scene = "kifs";  // another scene: its parameters are another set altogether, the scene says it
   other.values = {{"step", "9"}};
   EXPECT_EQ(manifestDifferences(film, other), std::vector<std::string>{"scene: neon in the folder, kifs in this run"});
+  other = film;
+  other.flashGuard = true;  // the guard changes the frames: a resume must not mix them
+  EXPECT_EQ(manifestDifferences(film, other), std::vector<std::string>{"flash guard: off in the folder, on in this run"});
 }
 
 class RecordFolder : public test::TempFolderTest {};

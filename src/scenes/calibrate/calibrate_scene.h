@@ -1,0 +1,6 @@
+#pragma once
+#include "scenes/scene.h"
+
+namespace vitrine::calibrate {
+extern const SceneInfo kSceneInfo;
+}

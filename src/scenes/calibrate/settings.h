@@ -1,0 +1,18 @@
+#pragma once
+// Everything the calibration card's panel, --set and the settings file can change, declared once
+// (params/schema.h). Apart from the scene so that what reads values needs no GPU code.
+#include "params/schema.h"
+
+namespace vitrine::calibrate {
+
+enum class StrobeColour { White, Red };
+
+struct Settings {
+  bool strobe = false;  // the flash guard's test: off unless asked for
+  float strobeHz = 10.0f;
+  StrobeColour strobeColour = StrobeColour::White;
+};
+
+const params::Schema& schema();
+
+}  // namespace vitrine::calibrate
