@@ -55,6 +55,7 @@ struct MenuState {
   MenuLayout* layout = nullptr;                // open sections and reserved rows, kept across runs
   LivePanel* livePanel = nullptr;              // live input: audio, MIDI, gamepads, mappings
   LivePanelState live;
+  UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
 };
 
 struct MenuChoice {

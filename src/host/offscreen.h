@@ -23,13 +23,16 @@ struct OffscreenConfig {
   double startTime = 0.0;
   uint32_t seed = 0;
   bool reducedMotion = false;
-  std::vector<std::string> presets;  // applied in order after creation, before the parameters
+  // Applied in order after creation, before the parameters: presets by name (the scene's own, then the
+  // user's: host/user_presets.h), then presetFiles.
+  std::vector<std::string> presets;
   params::KeyValues parameters;      // applied together after the presets
   std::optional<InputScript> input;  // --input: the cursor and keys, as a person would use them
   EventSink* events = nullptr;       // --events: where the scene's events go
   audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
   double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
   LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
+  std::vector<params::Preset> presetFiles;  // --preset-file: presets read from files, after the named ones
 };
 
 struct FrameTimes {

@@ -1,4 +1,5 @@
 #include "host/record_shared.h"
+#include "host/user_presets.h"
 
 #include "host/modes.h"
 
@@ -18,6 +19,7 @@ OffscreenConfig recordConfig(const Options& options) {
   OffscreenConfig config{options.scene, options.size.value_or(kRecordSize), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
+  config.presetFiles = presetFilesFor(options, options.scene);
   config.step = 1.0 / (options.fps * double(options.spp));
   return config;
 }
