@@ -71,8 +71,10 @@ std::optional<PanelEdit> ParamPanel::drawUserPresetActions(const params::Bound& 
         renaming_ = name;
         std::snprintf(name_, sizeof name_, "%s", name.c_str());
       }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rename your preset '%s'.", name.c_str());
       ImGui::SameLine();
       if (ImGui::SmallButton("delete")) edit = PanelEdit{PanelEdit::What::DeletePreset, {}, name, {}};
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Delete your preset '%s'.", name.c_str());
       ImGui::SameLine();
       if (ImGui::SmallButton("export")) edit = PanelEdit{PanelEdit::What::ExportPreset, {}, name, {}};
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write '%s' as a file to share (--preset-file FILE reads it).", name.c_str());

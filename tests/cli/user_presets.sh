@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # user_presets.sh VITRINE OUTDIR: a preset people make, end to end. A headless run saves its values as
-# a preset of the user's (--save-preset, into the presets folder beside the settings file); --preset
+# a preset of the user's (--save-preset, into the presets folder beside the settings file), and so
+# does an OSC client of a headless --remote run (/vitrine/preset/save); --preset
 # finds it by name; --export-preset writes it as a file, which --preset-file applies in a run with no
 # settings folder at all; every one of those frames equals a run with the same --set values (compare,
 # max difference 0). A built-in name, a broken file and a bad playlist are refused with a reason naming
@@ -38,6 +39,32 @@ XDG_CONFIG_HOME=$out/elsewhere "$vitrine" "${args[@]}" --preset-file "$out/share
 if "$vitrine" compare "$out/set.exr" "$out/imported_then_set.exr" >/dev/null 2>&1; then
   fail "--set after --preset-file changed nothing"
 fi
+
+# Saved through OSC by a headless --remote run: a value set, then /vitrine/preset/save SCENE NAME.
+"$vitrine" --headless --scene kifs --size 32x18 --frames 100000 --remote --remote-bind 127.0.0.1:0 \
+  --out "$out/remote.exr" >"$out/remote.log" 2>&1 &
+pid=$!
+for _ in $(seq 200); do grep -q "remote control on" "$out/remote.log" && break; sleep 0.1; done
+port=$(sed -nE 's/.*remote control on 127\.0\.0\.1:([0-9]+).*/\1/p' "$out/remote.log")
+python3 - "$port" <<'PY'
+import socket, struct, sys, time
+def pad(b): return b + b"\0" * (4 - len(b) % 4)
+def osc(address, tags, *args):
+    body = b"".join(struct.pack(">i", a) if t == "i" else pad(a.encode()) for t, a in zip(tags, args))
+    return pad(address.encode()) + pad(("," + tags).encode()) + body
+sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+sock.sendto(osc("/vitrine/kifs/step", "i", 4), ("127.0.0.1", int(sys.argv[1])))
+time.sleep(0.5)
+sock.sendto(osc("/vitrine/preset/save", "ss", "kifs", "remote look"), ("127.0.0.1", int(sys.argv[1])))
+time.sleep(0.5)
+PY
+kill -TERM $pid; wait $pid || fail "the --remote run failed: $(cat "$out/remote.log")"
+remote=$out/config/vitrine/presets/kifs-remote%20look.json
+[ -f "$remote" ] || fail "OSC saved no preset: $(cat "$out/remote.log")"
+grep -q '"step": 4' "$remote" || fail "the OSC preset lacks step 4: $(cat "$remote")"
+"$vitrine" "${args[@]}" --preset "remote look" --out "$out/remote_by_name.exr"
+"$vitrine" "${args[@]}" --set step=4 --out "$out/step4.exr"
+"$vitrine" compare --fail-fraction 0 --hard-limit 0 "$out/step4.exr" "$out/remote_by_name.exr"
 
 refused "one of the scene's own presets" "$vitrine" "${args[@]}" --save-preset sphere --out "$out/x.exr"
 refused "yours: 'evening look'" "$vitrine" "${args[@]}" --preset nope --out "$out/x.exr"
