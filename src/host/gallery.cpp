@@ -133,7 +133,7 @@ class Gallery {
   gpu::Device device_;
   gpu::ProgramLibrary programs_;
   GallerySettings settings_;
-  params::PresetStore presets_ = openUserPresets();  // the user's own, beside the settings file
+  params::PresetStore presets_ = openUserPresets(params::LoadMode::MoveBadAside);  // the user's, beside the settings
   MenuLayout menuLayout_;  // before the overlay, whose layout file is written when it goes
   TierWatch tiers_;        // before the renderers, whose scenes report to it
   audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note

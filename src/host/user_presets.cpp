@@ -17,7 +17,9 @@ std::filesystem::path userPresetFolder() {
   return settings.empty() ? std::filesystem::path() : settings.parent_path() / "presets";
 }
 
-params::PresetStore openUserPresets() { return params::PresetStore(userPresetFolder(), schemaOfScene); }
+params::PresetStore openUserPresets(params::LoadMode mode) {
+  return params::PresetStore(userPresetFolder(), schemaOfScene, mode);
+}
 
 FoundPreset findPreset(std::string_view scene, std::string_view name, const params::PresetStore* store) {
   const params::Schema* schema = schemaOfScene(scene);

@@ -20,7 +20,9 @@ namespace vitrine::host {
 // "presets" beside the settings file ($XDG_CONFIG_HOME/vitrine/presets); empty when there is no
 // settings folder.
 std::filesystem::path userPresetFolder();
-params::PresetStore openUserPresets();  // the folder above, read now; its warnings are the caller's to show
+// The folder above, read now; its warnings are the caller's to show. Only the gallery moves bad files
+// aside: a run that only reads presets leaves them as they are.
+params::PresetStore openUserPresets(params::LoadMode mode = params::LoadMode::LeaveAlone);
 
 // `name` among the scene's own presets, then `store`'s (null: the user's, read only if needed). Empty
 // values and the reason ("kifs has no preset 'x'; its presets: sphere final; yours: evening") when

@@ -90,7 +90,7 @@ void writePresetFile(const fs::path& path, const UserPreset& preset, const Schem
   writeJsonFile(path, out);
 }
 
-PresetStore::PresetStore(fs::path folder, SchemaLookup schemaFor)
+PresetStore::PresetStore(fs::path folder, SchemaLookup schemaFor, LoadMode mode)
     : folder_(std::move(folder)), schemaFor_(std::move(schemaFor)) {
   std::error_code ec;
   if (folder_.empty() || !fs::is_directory(folder_, ec)) return;  // none saved yet
@@ -106,7 +106,7 @@ PresetStore::PresetStore(fs::path folder, SchemaLookup schemaFor)
       warnings_.push_back(fmt::format("{}: a second preset '{}' of {}; ignored", file.string(), read.preset->name,
                                       read.preset->scene));
     } else {
-      warnings_.push_back(fmt::format("{}; {}", read.why, moveAside(file)));
+      warnings_.push_back(fmt::format("{}; {}", read.why, mode == LoadMode::MoveBadAside ? moveAside(file) : "left as it is"));
     }
   }
 }

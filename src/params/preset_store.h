@@ -54,8 +54,9 @@ void writePresetFile(const std::filesystem::path& path, const UserPreset& preset
 class PresetStore {
  public:
   // `folder` empty: no folder to keep presets in; the list is empty and saving says so. Reads every
-  // "*.json" in it; a refused file is moved aside ("NAME.json.bad-..."), one warning each.
-  PresetStore(std::filesystem::path folder, SchemaLookup schemaFor);
+  // "*.json" in it; a refused file is one warning each and, with MoveBadAside (the gallery), moved
+  // aside ("NAME.json.bad-..."); runs that only read presets leave it alone.
+  PresetStore(std::filesystem::path folder, SchemaLookup schemaFor, LoadMode mode = LoadMode::MoveBadAside);
 
   const std::vector<std::string>& warnings() const { return warnings_; }
   const std::filesystem::path& folder() const { return folder_; }

@@ -25,6 +25,8 @@ saved=$out/config/vitrine/presets/kifs-evening%20look.json
 [ -f "$saved" ] || fail "no preset file at $saved: $(ls -R "$out/config")"
 grep -q '"name": "evening look"' "$saved" || fail "the file does not name the preset: $(cat "$saved")"
 
+"$vitrine" --list-params kifs | grep -q "evening look  (yours)  step=6" \
+  || fail "--list-params does not list the user's preset: $("$vitrine" --list-params kifs)"
 "$vitrine" "${args[@]}" --preset "evening look" --out "$out/by_name.exr"
 "$vitrine" compare --fail-fraction 0 --hard-limit 0 "$out/set.exr" "$out/by_name.exr"
 

@@ -116,6 +116,14 @@ TEST_F(PresetStoreTest, BadFilesAreRefusedNamingTheFileAndMovedAsideNeverCrashin
   }
 }
 
+TEST_F(PresetStoreTest, ARunThatOnlyReadsLeavesABadFileWhereItIs) {
+  write(presets() / "a.json", "{not json");
+  const PresetStore store(presets(), host::schemaOfScene, LoadMode::LeaveAlone);
+  ASSERT_EQ(store.warnings().size(), 1u);
+  EXPECT_NE(store.warnings()[0].find("left as it is"), std::string::npos) << store.warnings()[0];
+  EXPECT_TRUE(fs::exists(presets() / "a.json"));
+}
+
 TEST_F(PresetStoreTest, WithoutAFolderNothingIsSavedAndSaysWhy) {
   PresetStore store({}, host::schemaOfScene);
   EXPECT_NE(store.save({"kifs", "mine", {{"step", "2"}}}).find("no settings folder"), std::string::npos);
