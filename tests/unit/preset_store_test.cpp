@@ -1,6 +1,7 @@
 // The user's presets: saved, read back, renamed, deleted, exported and imported, every value checked as
 // the settings file checks it, and every refusal with a reason naming the file or the name.
 #include "host/gallery_settings.h"
+#include "host/param_panel.h"
 #include "host/playlist.h"
 #include "params/preset_store.h"
 #include "support/temp_folder.h"
@@ -122,6 +123,24 @@ TEST_F(PresetStoreTest, ARunThatOnlyReadsLeavesABadFileWhereItIs) {
   ASSERT_EQ(store.warnings().size(), 1u);
   EXPECT_NE(store.warnings()[0].find("left as it is"), std::string::npos) << store.warnings()[0];
   EXPECT_TRUE(fs::exists(presets() / "a.json"));
+}
+
+// The panel's list names the user's preset the values match, marked as theirs; a built-in match wins.
+TEST_F(PresetStoreTest, ThePanelMarksTheUsersPresetThatTheValuesMatch) {
+  const Schema& schema = *host::schemaOfScene("kifs");
+  const auto settings = schema.makeDefaults();
+  const Bound bound{&schema, settings.get()};
+  const UserPreset evening{"kifs", "evening", {{"step", "6"}, {"fold", "1.1"}}};
+  const host::UserPresets mine{&evening};
+  ASSERT_EQ(applyValues(bound, evening.values), "");
+  EXPECT_EQ(host::matchingUserPreset(bound, mine), &evening);
+  EXPECT_EQ(host::presetLabel(bound, mine), "evening (yours)");
+  ASSERT_EQ(applyValues(bound, {{"fold", "1.2"}}), "");
+  EXPECT_EQ(host::matchingUserPreset(bound, mine), nullptr);
+  EXPECT_EQ(host::presetLabel(bound, mine), "custom");
+  ASSERT_EQ(applyPreset(bound, "sphere"), "");
+  const UserPreset sameAsSphere{"kifs", "mine", snapshot(bound, false)};
+  EXPECT_EQ(host::presetLabel(bound, {&sameAsSphere}), "sphere");
 }
 
 TEST_F(PresetStoreTest, WithoutAFolderNothingIsSavedAndSaysWhy) {
