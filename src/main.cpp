@@ -5,6 +5,7 @@
 #include "gpu/device.h"
 #include "host/modes.h"
 #include "host/user_presets.h"
+#include "host/window.h"
 #include "scenes/scene.h"
 
 #include <cstdio>
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
         return 0;
       case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced
         return host::runListParams(options);
+      case Mode::ListMonitors: std::fputs(host::Window::listMonitors().c_str(), stdout); return 0;
       case Mode::ListDevices: {
         gpu::Instance instance({options.validation, {}});
         std::fputs(gpu::listDevices(instance).c_str(), stdout);

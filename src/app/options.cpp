@@ -118,6 +118,10 @@ constexpr FlagRule kFlagRules[] = {
     {"--device", kRuns},
     {"--validate", kRuns},
     {"--reduced-motion", kRuns},
+    {"--monitor", kGallery},
+    {"--output-warp", kGallery | kHeadless},
+    {"--outputs", kGallery},
+    {"--span", kGallery},
     {"--seed", kRuns},
     {"--size", kRuns},
     {"--set", kRuns, true},
@@ -220,10 +224,11 @@ const char* usage() {
           [--preset-file FILE]... [--reset-settings] [--validate] [--kiosk [--dwell SECONDS | --playlist FILE]]
           [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]... [--remote-saves]]
           [--map FILE|SOURCE=[SCENE.]KEY[:LO:HI]]... [--audio-in FILE | --audio-in-device NAME|INDEX|default]
+          [--monitor INDEX|NAME | --span] [--output-warp FILE.json] [--outputs FILE.json]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
           [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--preset-file FILE]... [--save-preset NAME]
           [--input FILE] [--events FILE] [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
-          [--map ...]... [--audio-in FILE] [--midi-in FILE.mid] --out FILE.exr|FILE.png
+          [--map ...]... [--audio-in FILE] [--midi-in FILE.mid] [--output-warp FILE.json] --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--checkpoint-every N [--checkpoints-only]] [--format exr|png] [--time SECONDS] [--seed S]
           [--set ...] [--preset ...] [--input FILE] [--events FILE] [--map ...]... [--audio-in FILE]
@@ -237,7 +242,7 @@ const char* usage() {
   vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
   vitrine --list-params [SCENE]
   vitrine --export-preset [SCENE.]NAME --out FILE.json
-  vitrine --list-devices | --list-scenes | --help | --version
+  vitrine --list-devices | --list-monitors | --list-scenes | --help | --version
 
 Gallery keys: 1-9 switch scene, Tab hides the UI, F1 or ? shows help, V toggles vsync, P pauses, . steps while paused, F5
 restarts the scene, M mutes, F9 live capture, F11 fullscreen, F12 screenshot, Esc quits.
@@ -256,6 +261,11 @@ turns a recorded sequence and its audio.wav into a film the same way.
 after 30 s alone (the dwell when shorter, 10 s at least). --remote serves a control page for phones and listens for OSC on 127.0.0.1:8730 (--remote-bind
 changes it); it prints the page's address with its access token. Bound beyond loopback, OSC is taken only from
 --remote-allow networks (192.168.1.0/24) or senders that sent the token. Remote changes are not saved unless --remote-saves.
+--monitor puts the window, and F11's fullscreen, on a monitor from --list-monitors (its index or part of its
+name). --output-warp FILE.json turns, mirrors, crops, corner-pins and edge-blends the output for a projector
+(docs/INSTALLATIONS.md); --outputs FILE.json opens more windows (projectors), each fullscreen on a monitor or
+at a place, showing the same frame through its own warp; --span stretches the window over every monitor.
+The scene still renders once.
 Live input (docs/LIVE.md): --map plays a parameter or action from a source (audio.bass, midi.cc.1.21,
 pad.0.axis.1, osc.NAME, lfo.sine.8); --audio-in FILE feeds a sound file (looped in the gallery, frame-exact
 in headless and record runs, whose audio.wav then carries it) and turns on the scenes' audio mappings, as
@@ -340,6 +350,10 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--device") options.device = value(arg);
     else if (arg == "--validate") options.validation = true;
     else if (arg == "--reduced-motion") options.reducedMotion = true;
+    else if (arg == "--monitor") options.monitor = value(arg);
+    else if (arg == "--output-warp") options.outputWarp = value(arg);
+    else if (arg == "--outputs") options.outputs = value(arg);
+    else if (arg == "--span") options.span = true;
     else if (arg == "--seed") options.seed = parseWhole(arg, value(arg), 0);
     else if (arg == "--size") options.size = parseSize(value(arg));
     else if (arg == "--frames") options.frames = parseWhole(arg, value(arg), 1);
@@ -394,6 +408,7 @@ Options parseOptions(int argc, const char* const* argv) {
     }
     else if (arg == "--list-devices") options.mode = Mode::ListDevices;
     else if (arg == "--list-scenes") options.mode = Mode::ListScenes;
+    else if (arg == "--list-monitors") options.mode = Mode::ListMonitors;
     else if (arg == "--list-params") {
       options.mode = Mode::ListParams;
       if (i + 1 < argc && argv[i + 1][0] != '-') {  // the optional SCENE
@@ -416,6 +431,8 @@ Options parseOptions(int argc, const char* const* argv) {
   if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME.");
   if (options.mode == Mode::Headless && !imageFormatFromName(options.out))
     throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
+  if (options.span && !options.monitor.empty())
+    throw Error("--span covers every monitor with one window: drop --monitor.");
   if (options.mode == Mode::Record) {
     if (options.scene.empty()) throw Error("record needs --scene NAME.");
     if (options.out.empty()) throw Error("record needs --out FOLDER for the numbered frames.");

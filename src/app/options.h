@@ -14,7 +14,9 @@
 
 namespace vitrine {
 
-enum class Mode { Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListScenes, ListParams, ExportPreset, Help, Version };
+enum class Mode {
+  Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListMonitors, ListScenes, ListParams, ExportPreset, Help, Version
+};
 
 // One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
 struct SceneSetting {
@@ -49,6 +51,10 @@ struct Options {
   std::string input;                 // --input FILE (headless): scripted input
   std::string events;                // --events FILE (headless): the scene's events, as JSON lines
   bool resetSettings = false;        // --reset-settings (gallery)
+  std::string monitor;               // --monitor N|NAME (gallery): where the window and fullscreen go
+  std::string outputWarp;            // --output-warp FILE (gallery, headless): the output's turn, pin, blend
+  std::string outputs;               // --outputs FILE (gallery): more windows showing the frame (projectors)
+  bool span = false;                 // --span (gallery): the window covers every monitor, without a frame
   std::string audioOut;              // --audio-out FILE.wav (headless): the run's sound, offline
   // record: a numbered sequence of frames into the folder --out.
   double fps = 30.0;                 // --fps F

@@ -100,7 +100,7 @@ class Device {
     std::span<const VkSemaphoreSubmitInfo> wait;
     std::span<const VkSemaphoreSubmitInfo> signal;  // at most kMaxSignals, besides the timeline
   };
-  static constexpr size_t kMaxSignals = 4;
+  static constexpr size_t kMaxSignals = 8;  // the window and up to seven more outputs
   uint64_t submit(const Submit& work) const;
   uint64_t lastSubmitted() const { return submitted_; }
   uint64_t completed() const;            // the newest serial the GPU has finished

@@ -5,6 +5,8 @@
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
 
+#include <vector>
+
 namespace vitrine::host {
 
 FrameSlot::FrameSlot(const gpu::Device& device, uint32_t index)
@@ -29,12 +31,17 @@ VkCommandBuffer FrameSlot::begin() {
   return cmd_;
 }
 
-void FrameSlot::submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished) {
+void FrameSlot::submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished,
+                       std::span<const std::pair<VkSemaphore, VkSemaphore>> more) {
   VK_CHECK(vkEndCommandBuffer(cmd_));
-  const VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, imageAcquired_, 0, acquireStage, 0};
-  const VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0,
-                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0};
-  serial_ = device_->submit({cmd_, {&wait, 1}, {&signal, 1}});
+  std::vector<VkSemaphoreSubmitInfo> waits, signals;
+  const auto add = [&](VkSemaphore acquired, VkSemaphore finished) {
+    waits.push_back({VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, acquired, 0, acquireStage, 0});
+    signals.push_back({VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, finished, 0, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0});
+  };
+  add(imageAcquired_, renderFinished);
+  for (const auto& [acquired, finished] : more) add(acquired, finished);
+  serial_ = device_->submit({cmd_, waits, signals});
 }
 
 }  // namespace vitrine::host

@@ -4,6 +4,9 @@
 // the GPU is done with them), and the semaphore its swapchain image is acquired with.
 #include "gpu/device.h"
 
+#include <span>
+#include <utility>
+
 namespace vitrine::host {
 
 class FrameSlot {
@@ -13,8 +16,10 @@ class FrameSlot {
   void wait() const;  // until the GPU has finished this slot's last frame
   VkSemaphore imageAcquired() const { return imageAcquired_; }
   VkCommandBuffer begin();  // recycles the slot's commands: only after wait()
-  // Runs the recorded frame once the image is acquired; signals renderFinished for presentation.
-  void submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished);
+  // Runs the recorded frame once the image is acquired; signals renderFinished for presentation. `more`:
+  // the other outputs' images drawn in the same frame, each (acquired, render finished).
+  void submit(VkPipelineStageFlags2 acquireStage, VkSemaphore renderFinished,
+              std::span<const std::pair<VkSemaphore, VkSemaphore>> more = {});
 
  private:
   const gpu::Device* device_;

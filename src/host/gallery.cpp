@@ -25,6 +25,8 @@
 #include "host/fixed_step.h"
 #include "host/frame_slot.h"
 #include "host/gallery_live.h"
+#include "host/output_warp_file.h"
+#include "host/output_window.h"
 #include "host/gallery_settings.h"
 #include "host/kiosk.h"
 #include "host/live_capture.h"
@@ -128,6 +130,8 @@ class Gallery {
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
   Window window_;
+  std::optional<maths::OutputWarp> warp_;  // --output-warp: how this output shows the frame (a projector's)
+  const maths::OutputWarp* warp() const { return warp_ ? &*warp_ : nullptr; }
   gpu::Instance instance_;
   Surface surface_;
   gpu::Device device_;
@@ -144,6 +148,7 @@ class Gallery {
   Screenshots screenshots_;
   LiveCapture capture_;
   std::vector<FrameSlot> slots_;
+  std::vector<std::unique_ptr<OutputWindow>> outputs_;  // --outputs: more windows showing the same frame
   uint64_t frameCount_ = 0;
   uint64_t sceneSerial_ = 0;           // counts scene switches and restarts
   std::vector<uint64_t> slotSerial_ = std::vector<uint64_t>(kFramesInFlight);  // the scene each slot drew
@@ -197,7 +202,8 @@ class Gallery {
 };
 
 Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist)
-    : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen),
+    : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen, options.monitor, options.span),
+      warp_(options.outputWarp.empty() ? std::nullopt : std::optional(readOutputWarp(options.outputWarp))),
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
@@ -228,6 +234,11 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     window_.setCursorHidden(true);
   }
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
+  if (!options.outputs.empty()) {
+    const std::vector<OutputPlacement> placements = readOutputs(options.outputs);
+    for (size_t i = 0; i < placements.size(); ++i)
+      outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
+  }
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
@@ -533,12 +544,12 @@ void Gallery::frame() {
   const bool compute = swapchain_.computeWrites();
   Crossfade fade;
   if (incoming_ && incoming_->hasScene()) {  // kiosk mode's cross-fade: both scenes run and draw
-    incoming_->recordTarget(cmd, slot, incomingShown_, swapchain_.extent());
+    incoming_->recordTarget(cmd, slot, incomingShown_, frameExtent(swapchain_.extent(), warp()));
     fade = {&incoming_->target(), fade_};
   }
   renderer_->record(cmd, slot, shown_,
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
-                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute},
+                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, warp()},
                     fade);
   if (screenshots_.requested() || capture_.active()) {
     recordWindowCopy(cmd);
@@ -546,11 +557,20 @@ void Gallery::frame() {
     screenshots_.record(cmd, slot, *windowCopy_, rendered, renderer_->info().name, &renderer_->timer());
     capture_.record(cmd, slot, *windowCopy_, rendered, &renderer_->timer());
   }
+  // The other outputs show the same frame, each through its own warp; one that is hidden or being
+  // rebuilt misses this frame.
+  std::vector<std::pair<VkSemaphore, VkSemaphore>> outputsDrawn;
+  for (auto& output : outputs_)
+    if (output->acquire(slot, vsync_)) {
+      renderer_->recordOutput(cmd, output->destination(kAcquireStage), fade);
+      outputsDrawn.emplace_back(output->acquired(slot), output->renderFinished());
+    }
   slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_->timer());
-  current.submit(kAcquireStage, swapchain_.renderFinished(*image));
+  current.submit(kAcquireStage, swapchain_.renderFinished(*image), outputsDrawn);
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
   swapchain_.present(*image);
+  for (auto& output : outputs_) output->present();
   ++frameCount_;
   pollShaders();
 }

@@ -9,6 +9,7 @@
 #include "host/input_script.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
+#include "host/output_warp_file.h"
 #include "core/output_path.h"
 
 #include <algorithm>
@@ -38,6 +39,7 @@ int runHeadless(const Options& options) {
                          parametersFor(options, options.scene, true)};
   config.presetFiles = presetFilesFor(options, options.scene);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
+  if (!options.outputWarp.empty()) config.warp = readOutputWarp(options.outputWarp);
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);
   const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);

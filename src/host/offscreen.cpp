@@ -14,7 +14,7 @@
 namespace vitrine::host {
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
     : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size),
-      startTime_(config.startTime), step_(config.step), live_(config.live), events_(config.events) {
+      startTime_(config.startTime), step_(config.step), live_(config.live), events_(config.events), warp_(config.warp) {
   if (!(step_ > 0.0) || !std::isfinite(step_)) throw Error("an offscreen run needs a finite, positive time step");
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
@@ -138,7 +138,8 @@ FrameTimes Offscreen::draw(std::chrono::steady_clock::time_point start) {
   VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
   output_.discard();  // every texel is written
   renderer_.record(cmd_, 0, input_,
-                   BlitDestination{output_.handle(), size_, output_.lastUse(), gpu::use::TransferSrc, output_.view()});
+                   BlitDestination{output_.handle(), size_, output_.lastUse(), gpu::use::TransferSrc, output_.view(),
+                                   false, warp_ ? &*warp_ : nullptr});
   output_.assumeUse(gpu::use::TransferSrc);
   VK_CHECK(vkEndCommandBuffer(cmd_));
   const uint64_t serial = device_.submit({cmd_, {}, {}});

@@ -32,6 +32,7 @@ struct OffscreenConfig {
   audio::AudioSink* audio = nullptr; // --audio-out: where the scene's sound goes (null: silence)
   double step = 1.0 / 60.0;          // seconds between frames; a recording's 1 / (fps x samples a frame)
   LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
+  std::optional<maths::OutputWarp> warp;  // --output-warp: how the output shows the frame (a projector's)
   std::vector<params::Preset> presetFiles;  // --preset-file: presets read from files, after the named ones
 };
 
@@ -91,6 +92,7 @@ class Offscreen {
   EventSink* events_ = nullptr;
   std::vector<ActionCall> extraActions_;
   std::optional<Pointer> extraPointer_;
+  std::optional<maths::OutputWarp> warp_;
   CursorTracker extraCursor_;
   bool rendered_ = false;
   void step();  // one simulation step: input_'s frame, its script input, the scene's update

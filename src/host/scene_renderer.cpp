@@ -7,6 +7,8 @@
 
 #include "gpu/check.h"
 #include "gpu/fault_injection.h"
+#include <glm/matrix.hpp>
+#include "shaders/host/output_warp.h"
 #include "shaders/host/present_push.h"
 
 namespace vitrine::host {
@@ -64,6 +66,26 @@ std::string SceneRenderer::applyPreset(std::string_view name) {
   return params::applyPreset(scene_->parameters(), name, [&scene] { return scene.checkParameters(); });
 }
 
+namespace {
+
+shader::HostOutputWarp warpBlock(const maths::OutputWarp& warp) {
+  const maths::WarpMatrices m = maths::warpMatrices(warp);
+  const glm::mat3 rows = glm::transpose(m.unpin);
+  const maths::EdgeBlend& b = warp.blend;
+  return {glm::vec4(rows[0], 0.0f), glm::vec4(rows[1], 0.0f), glm::vec4(rows[2], 0.0f), glm::vec4(m.sourceU, 0.0f),
+          glm::vec4(m.sourceV, 0.0f), {b.left, b.top, b.right, b.bottom}, {b.curve, b.gamma, 0.0f, 0.0f}};
+}
+
+}  // namespace
+
+VkExtent2D frameExtent(VkExtent2D output, const maths::OutputWarp* warp) {
+  if (!warp) return output;
+  const bool turned = warp->quarterTurns % 2 != 0;
+  const float width = float(turned ? output.height : output.width), height = float(turned ? output.width : output.height);
+  const glm::vec4& r = warp->region;
+  return {std::max(1u, uint32_t(std::lround(width / (r.z - r.x)))), std::max(1u, uint32_t(std::lround(height / (r.w - r.y))))};
+}
+
 void SceneRenderer::ensureTarget(VkExtent2D output) {
   const float scale = std::clamp(scene_->renderScale(), 0.1f, 1.0f);
   const VkExtent2D wanted{std::max(1u, static_cast<uint32_t>(std::lround(output.width * scale))),
@@ -94,7 +116,14 @@ void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const Frame
 
 void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
                            const Crossfade& fade) {
-  recordTarget(cmd, slot, input, dst.extent);
+  recordTarget(cmd, slot, input, frameExtent(dst.extent, dst.warp));
+  if (dst.storageView && device_.storageWriteWithoutFormat())
+    present(cmd, dst, fade);
+  else
+    blit(cmd, dst);
+}
+
+void SceneRenderer::recordOutput(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
   if (dst.storageView && device_.storageWriteWithoutFormat())
     present(cmd, dst, fade);
   else
@@ -118,13 +147,17 @@ void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, con
   if (fade.other) other.use(cmd, gpu::use::ComputeSample);
   gpu::transition(cmd, dst.image, dst.before, gpu::use::ComputeWrite);
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
+  const bool warped = dst.warp && !dst.warp->isIdentity();
+  const gpu::StreamSlice warp = stream_.writeValue(warpBlock(warped ? *dst.warp : maths::OutputWarp{}));
   present_.bind(cmd);
   present_.push(cmd, gpu::Bindings()
                          .sampledImage("source", target_.view(), linear, gpu::use::ComputeSample.layout)
                          .storageImage("destination", dst.storageView)
-                         .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout));
+                         .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout)
+                         .uniformBuffer("Warp", warp.buffer, warp.offset, sizeof(shader::HostOutputWarp)));
   present_.constants(cmd, shader::HostPresentPush{.encodeSrgb = dst.encodeSrgb ? 1u : 0u,
-                                                  .fade = fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f});
+                                                  .fade = fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f,
+                                                  .warp = warped ? 1u : 0u});
   present_.dispatchOver(cmd, dst.extent);
   gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);
 }

@@ -8,6 +8,7 @@
 #include "gpu/frame_resources.h"
 #include "gpu/resources.h"
 #include "gpu/stream.h"
+#include "maths/output_warp.h"
 #include "scenes/scene.h"
 
 #include <memory>
@@ -22,7 +23,14 @@ struct BlitDestination {
   gpu::ImageUse after;                   // how the caller uses it next
   VkImageView storageView = VK_NULL_HANDLE;  // set when the image has STORAGE usage: compute path
   bool encodeSrgb = false;               // a UNORM image shown as sRGB (compute path only)
+  // How this output shows the frame (a projector's turn, mirror, region, corner pin and soft edges; the
+  // compute path only). Null, or the identity: the whole frame, square-on.
+  const maths::OutputWarp* warp = nullptr;
 };
+
+// The frame a scene renders for an output of `output` pixels showing it through `warp`: a quarter turn
+// swaps its sides, and an output that shows a region of the frame shows it at its own size.
+VkExtent2D frameExtent(VkExtent2D output, const maths::OutputWarp* warp);
 
 // Another renderer's target mixed into the output (kiosk mode's cross-fade): `weight` of it over the
 // output, 0..1. The compute path only; a blit cuts instead.
@@ -66,6 +74,8 @@ class SceneRenderer {
               const Crossfade& fade = {});
   // The scene into its target only, sized for an output of `output` (the incoming scene of a fade).
   void recordTarget(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, VkExtent2D output);
+  // After record(): the same frame onto another output (a second projector), through its own warp.
+  void recordOutput(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade = {});
   // After record(): the target scaled onto `output` (an HDR image with storage or transfer-dst use)
   // as the present pass scaled it onto the window, left a transfer source. What F12 and F9 save.
   void recordScaled(VkCommandBuffer cmd, gpu::Image& output);

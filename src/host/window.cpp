@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <utility>
 
 namespace vitrine::host {
@@ -20,7 +22,49 @@ std::string glfwReason() {
 
 Window& owner(GLFWwindow* window) { return *static_cast<Window*>(glfwGetWindowUserPointer(window)); }
 
+std::vector<GLFWmonitor*> monitors() {
+  int count = 0;
+  GLFWmonitor** list = glfwGetMonitors(&count);
+  return {list, list + std::max(count, 0)};
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+std::string describeMonitors() {
+  std::string text;
+  const std::vector<GLFWmonitor*> all = monitors();
+  for (size_t i = 0; i < all.size(); ++i) {
+    int x = 0, y = 0;
+    glfwGetMonitorPos(all[i], &x, &y);
+    const GLFWvidmode* mode = glfwGetVideoMode(all[i]);
+    text += fmt::format("{} {} {}  {}x{} at {},{}  {} Hz\n", all[i] == glfwGetPrimaryMonitor() ? '*' : ' ', i,
+                        glfwGetMonitorName(all[i]), mode ? mode->width : 0, mode ? mode->height : 0, x, y,
+                        mode ? mode->refreshRate : 0);
+  }
+  return text.empty() ? "(no monitors)\n" : text;
+}
+
 }  // namespace
+
+// The monitor `wanted` names: its index, or a part of its name (any case); empty: the primary.
+GLFWmonitor* findMonitor(std::string_view wanted) {
+  if (wanted.empty()) return glfwGetPrimaryMonitor();
+  const std::vector<GLFWmonitor*> all = monitors();
+  size_t index = 0;
+  const auto [end, ec] = std::from_chars(wanted.data(), wanted.data() + wanted.size(), index);
+  if (ec == std::errc() && end == wanted.data() + wanted.size()) {
+    if (index < all.size()) return all[index];
+  } else {
+    for (GLFWmonitor* monitor : all)
+      if (lowercase(glfwGetMonitorName(monitor)).find(lowercase(std::string(wanted))) != std::string::npos) return monitor;
+  }
+  throw Error(fmt::format("No monitor '{}'; there are:\n{}", wanted, describeMonitors()));
+}
+
+
 
 Surface::Surface(Surface&& other) noexcept
     : instance_(other.instance_), surface_(std::exchange(other.surface_, VK_NULL_HANDLE)) {}
@@ -37,12 +81,30 @@ Window::Glfw::Glfw() {
 
 Window::Glfw::~Glfw() { glfwTerminate(); }
 
-Window::Window(VkExtent2D size, bool fullscreen) {
+std::string Window::listMonitors() {
+  const Glfw glfw;  // no window is open in this mode
+  return describeMonitors();
+}
+
+Window::Window(VkExtent2D size, bool fullscreen, std::string_view monitor, bool span) : monitor_(findMonitor(monitor)) {
   if (!glfwVulkanSupported())
     throw Error("GLFW found no Vulkan loader for windows; install libvulkan1, or use --headless.");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  int left = 0, top = 0, right = 0, bottom = 0;  // every monitor's area, for --span
+  for (GLFWmonitor* each : monitors()) {
+    int x = 0, y = 0;
+    glfwGetMonitorPos(each, &x, &y);
+    const GLFWvidmode* mode = glfwGetVideoMode(each);
+    left = std::min(left, x), top = std::min(top, y);
+    right = std::max(right, x + mode->width), bottom = std::max(bottom, y + mode->height);
+  }
+  if (span) {
+    glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);
+    size = {uint32_t(std::max(right - left, 1)), uint32_t(std::max(bottom - top, 1))};
+  }
   window_ = glfwCreateWindow(int(size.width), int(size.height), "Vitrine", nullptr, nullptr);
+  glfwDefaultWindowHints();
   if (!window_) throw Error(fmt::format("Cannot create the gallery window: {}.", glfwReason()));
   // Set before Dear ImGui installs its callbacks, which then forward every event here as well.
   glfwSetWindowUserPointer(window_, this);
@@ -50,7 +112,13 @@ Window::Window(VkExtent2D size, bool fullscreen) {
   glfwSetMouseButtonCallback(window_, &Window::onMouseButton);
   glfwSetScrollCallback(window_, &Window::onScroll);
   glfwSetDropCallback(window_, &Window::onDrop);
-  if (fullscreen) toggleFullscreen();
+  if (span) glfwSetWindowPos(window_, left, top);
+  if (monitor_ && !monitor.empty()) {  // windowed, centred on the chosen monitor
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetMonitorWorkarea(monitor_, &x, &y, &width, &height);
+    glfwSetWindowPos(window_, x + std::max(0, (width - int(size.width)) / 2), y + std::max(0, (height - int(size.height)) / 2));
+  }
+  if (fullscreen && !span) toggleFullscreen();  // a span is already the whole desktop, kiosk or not
 }
 
 Window::~Window() { glfwDestroyWindow(window_); }
@@ -98,12 +166,17 @@ void Window::toggleFullscreen() {
     glfwSetWindowMonitor(window_, nullptr, windowedX_, windowedY_, windowedWidth_, windowedHeight_, GLFW_DONT_CARE);
     return;
   }
-  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  GLFWmonitor* monitor = monitor_ ? monitor_ : glfwGetPrimaryMonitor();
   if (!monitor) return;
   glfwGetWindowPos(window_, &windowedX_, &windowedY_);
   glfwGetWindowSize(window_, &windowedWidth_, &windowedHeight_);
   const GLFWvidmode* mode = glfwGetVideoMode(monitor);
   glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
+std::string Window::monitorName() const {
+  GLFWmonitor* monitor = monitor_ ? monitor_ : glfwGetPrimaryMonitor();
+  return monitor ? glfwGetMonitorName(monitor) : "";
 }
 
 std::vector<int> Window::takeKeys() { return std::exchange(keys_, {}); }

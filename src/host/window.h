@@ -4,11 +4,13 @@
 #include <vulkan/vulkan.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "host/pointer.h"
 
 struct GLFWwindow;
+struct GLFWmonitor;
 
 namespace vitrine::host {
 
@@ -27,10 +29,18 @@ class Surface {
   VkSurfaceKHR surface_;
 };
 
+// The monitor `wanted` names: its index in --list-monitors, or a part of its name (any case); empty:
+// the primary. GLFW must be up (a Window open). Throws vitrine::Error listing the monitors there are.
+GLFWmonitor* findMonitor(std::string_view wanted);
+
 class Window {
  public:
-  // Throws vitrine::Error, naming the reason, when there is no display to open a window on.
-  Window(VkExtent2D size, bool fullscreen);
+  // Throws vitrine::Error, naming the reason, when there is no display to open a window on, or no
+  // monitor `monitor` names (an index from --list-monitors, or part of a name; empty: the primary).
+  // `span`: one window without a frame over every monitor's area (a projector pair as one desktop).
+  Window(VkExtent2D size, bool fullscreen, std::string_view monitor = {}, bool span = false);
+  // The monitors, one a line: index, name, position and mode, the primary marked (--list-monitors).
+  static std::string listMonitors();
   ~Window();
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
@@ -48,7 +58,8 @@ class Window {
   VkExtent2D framebufferSize() const;
   void setTitle(const std::string& title);
   void setCursorHidden(bool hidden);  // kiosk mode: no arrow over the pieces
-  void toggleFullscreen();  // on the primary monitor; back to the windowed position and size
+  void toggleFullscreen();  // on the chosen monitor; back to the windowed position and size
+  std::string monitorName() const;  // the chosen monitor's, for the settings it keeps per output
 
   std::vector<int> takeKeys();  // GLFW key codes pressed since the last take, in order
   const std::vector<int>& keysHeld() const { return held_; }  // GLFW key codes down now
@@ -66,6 +77,7 @@ class Window {
   static void onDrop(GLFWwindow* window, int count, const char** paths);
 
   GLFWwindow* window_ = nullptr;
+  GLFWmonitor* monitor_ = nullptr;  // where the window opens and goes fullscreen
   int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
   std::vector<int> keys_;
   std::vector<int> held_;

@@ -2,7 +2,8 @@
 """xtest.py DISPLAY ACTION...: presses keys and moves or clicks the mouse on an X display through the
 XTEST extension, speaking the X11 protocol over the display's local socket (no xdotool on the test
 machine). Actions: key:NAME (a keysym name: F12, Tab, bracketright, 3 ...), move:X,Y, click:X,Y,
-ctrlclick:X,Y, wheel:X,Y,NOTCHES, sleep:SECONDS. For the gallery's checks under Xvfb (started without access control)."""
+ctrlclick:X,Y, wheel:X,Y,NOTCHES, sleep:SECONDS, and shot:X,Y,W,H,FILE.ppm, which saves that part of the
+root window (what every window on the screen shows) as a binary PPM. For the gallery's checks under Xvfb (started without access control)."""
 import os
 import socket
 import struct
@@ -37,7 +38,10 @@ def connect(display):
     extra = struct.unpack("<H", head[6:8])[0] * 4
     setup = recv(sock, extra)
     min_keycode, max_keycode = setup[26], setup[27]
-    return sock, min_keycode, max_keycode
+    vendor, formats = struct.unpack("<H", setup[16:18])[0], setup[21]
+    screen = 32 + (vendor + 3) // 4 * 4 + 8 * formats  # the first screen, whose first field is its root window
+    root = struct.unpack("<I", setup[screen:screen + 4])[0]
+    return sock, min_keycode, max_keycode, root
 
 
 def request(sock, data, reply=False):
@@ -56,7 +60,7 @@ def request(sock, data, reply=False):
 
 def main():
     display, actions = sys.argv[1], sys.argv[2:]
-    sock, lo, hi = connect(display)
+    sock, lo, hi, root = connect(display)
     name = b"XTEST"
     pad = (4 - len(name) % 4) % 4
     ext = request(sock, struct.pack("<BxHHxx", 98, 2 + (len(name) + pad) // 4, len(name)) + name + b"\0" * pad, True)
@@ -102,6 +106,17 @@ def main():
                 fake(4, 5 if n > 0 else 4)
                 fake(5, 5 if n > 0 else 4)
                 time.sleep(0.05)
+        elif verb == "shot":  # GetImage (ZPixmap) in bands that fit a reply, written as RGB
+            x, y, w, h, path = arg.split(",", 4)
+            x, y, w, h = int(x), int(y), int(w), int(h)
+            pixels = b""
+            for top in range(0, h, 64):
+                rows = min(64, h - top)
+                reply = request(sock, struct.pack("<BBHIhhHHI", 73, 2, 5, root, x, y + top, w, rows, 0xFFFFFFFF), True)
+                data = reply[32:32 + w * rows * 4]  # 32-bit BGRX on a 24-bit TrueColor screen
+                pixels += b"".join(bytes((data[i + 2], data[i + 1], data[i])) for i in range(0, len(data), 4))
+            with open(path, "wb") as out:
+                out.write(b"P6\n%d %d\n255\n" % (w, h) + pixels)
         elif verb == "sleep":
             time.sleep(float(arg))
         else:

@@ -1,0 +1,64 @@
+#pragma once
+// Another output of the gallery (a second projector, a monitor beside the one with the menu): a window
+// with no frame, fullscreen on its monitor or at a place given in pixels, showing the frame the scene
+// rendered once for the main window through this output's own warp (its region, turn, pin and soft
+// edges). It takes no input: the main window has the menu, the keys and the cursor.
+#include "gpu/device.h"
+#include "host/scene_renderer.h"
+#include "host/swapchain.h"
+#include "host/window.h"
+#include "maths/output_warp.h"
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace vitrine::host {
+
+// Where an output goes and how it shows the frame: one entry of --outputs FILE.json,
+//   [{"monitor": "1", "warp": {"region": [0.5, 0, 1, 1]}}, {"window": [1280, 0, 640, 360]}]
+// "monitor" (an index or part of a name): fullscreen there; "window": [x, y, width, height] on the
+// desktop, without a frame. One of the two; "warp" as in --output-warp.
+struct OutputPlacement {
+  std::string monitor;
+  std::optional<std::array<int, 4>> window;
+  maths::OutputWarp warp;
+};
+// Throws vitrine::Error naming the file and the entry.
+std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file);
+
+class OutputWindow {
+ public:
+  // GLFW is up (the main window's); the device presents from its queue to this window's surface, or
+  // this throws vitrine::Error saying so.
+  OutputWindow(const gpu::Instance& instance, const gpu::Device& device, const OutputPlacement& placement, bool vsync,
+               uint32_t framesInFlight, int index);
+  ~OutputWindow();
+  OutputWindow(const OutputWindow&) = delete;
+  OutputWindow& operator=(const OutputWindow&) = delete;
+
+  // The next image, for frame slot `slot`: false when the window is hidden or its swapchain out of date
+  // (rebuilt for the next frame), and then nothing is drawn to it this frame.
+  bool acquire(uint32_t slot, bool vsync);
+  VkSemaphore acquired(uint32_t slot) const { return acquired_[slot]; }
+  VkSemaphore renderFinished() const { return swapchain_->renderFinished(*image_); }
+  // The acquired image as the present pass's destination, first used at `acquireStage`.
+  BlitDestination destination(VkPipelineStageFlags2 acquireStage) const;
+  void present();
+  const maths::OutputWarp& warp() const { return warp_; }
+
+ private:
+  const gpu::Device& device_;
+  GLFWwindow* window_ = nullptr;
+  std::optional<Surface> surface_;
+  std::optional<Swapchain> swapchain_;
+  std::vector<gpu::Unique<VkSemaphore>> acquired_;  // one a frame slot
+  std::optional<uint32_t> image_;
+  maths::OutputWarp warp_;
+};
+
+}  // namespace vitrine::host

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# outputs.sh VITRINE OUTDIR: a projector pair from one render. The gallery on a virtual X display
+# 1280x360: the main window (640x360 at the left) shows the left half of the frame (--output-warp with a
+# region), and a second output (--outputs: a window without a frame at 640,0) the right half. What the
+# screen shows, grabbed through X11, is a headless render of the whole 1280x360 frame to within 8-bit
+# rounding: the scene rendered once at the frame's size and each output drew its own half. kifs under
+# --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
+# whole desktop shows the same frame. --list-monitors lists the display's monitor, and a monitor that is
+# not there, or a bad outputs file, is refused.
+set -u
+vitrine=$1; out=$2
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$out"; mkdir -p "$out/config" "$out/work"
+log=$out/gallery.log
+fail() { echo "FAIL: $*"; cat "$log"; exit 1; }
+echo '{"region": [0, 0, 0.5, 1]}' >"$out/left.json"
+echo '[{"window": [640, 0, 640, 360], "warp": {"region": [0.5, 0, 1, 1]}}]' >"$out/outputs.json"
+
+. "$here/virtual_display.sh"
+app=
+trap 'kill $app $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
+start_display 1280x360
+
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
+   --set tier=high --size 640x360 --no-vsync --validate --output-warp "$out/left.json" --outputs "$out/outputs.json") \
+   >"$log" 2>&1 &
+app=$!
+keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
+sleep 12
+keys key:Tab sleep:3 shot:0,0,1280,360,"$out/screen.ppm"
+oiiotool "$out/screen.ppm" --colorconvert sRGB linear -o "$out/screen.exr" || fail "cannot read the grab"
+"$vitrine" --headless --scene kifs --reduced-motion --set tier=high --size 1280x360 --out "$out/frame.exr" >/dev/null
+"$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/screen.exr" | tee "$out/compare.txt" |
+  grep -q "^pass" || fail "the two outputs do not show the frame's halves: $(cat "$out/compare.txt")"
+keys key:Escape
+for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+wait $app; code=$?
+grep -q "validation messages" "$log" && fail "validation messages"
+[ "$code" = 0 ] || fail "exit $code"
+
+# One window spanning the desktop (its one monitor here) shows the whole frame.
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
+   --set tier=high --span --no-vsync --validate) >"$log" 2>&1 &
+app=$!
+sleep 12
+keys key:Tab sleep:3 shot:0,0,1280,360,"$out/span.ppm" key:Escape
+oiiotool "$out/span.ppm" --colorconvert sRGB linear -o "$out/span.exr" || fail "cannot read the grab"
+"$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/span.exr" | tee "$out/compare.txt" |
+  grep -q "^pass" || fail "the spanning window does not show the frame: $(cat "$out/compare.txt")"
+for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+wait $app || fail "the spanning gallery failed"
+
+DISPLAY=$display "$vitrine" --list-monitors | grep -q '^\* 0 .* 1280x360 at 0,0' || fail "--list-monitors"
+if DISPLAY=$display "$vitrine" --monitor projector 2>"$out/err.txt"; then fail "a monitor that is not there"; fi
+grep -q "No monitor 'projector'; there are:" "$out/err.txt" || fail "$(cat "$out/err.txt")"
+echo '[{"window": [0, 0, 640, 360], "monitor": "0"}]' >"$out/both.json"
+if DISPLAY=$display "$vitrine" --outputs "$out/both.json" 2>"$out/err.txt"; then fail "both a window and a monitor"; fi
+grep -q "both.json, output 1: an output is fullscreen on a monitor or a window at a place, not both" "$out/err.txt" ||
+  fail "$(cat "$out/err.txt")"
+echo "outputs ok"
