@@ -245,7 +245,7 @@ const char* usage() {
   vitrine --list-devices | --list-monitors | --list-scenes | --help | --version
 
 Gallery keys: 1-9 switch scene, Tab hides the UI, F1 or ? shows help, V toggles vsync, P pauses, . steps while paused, F5
-restarts the scene, M mutes, F9 live capture, F11 fullscreen, F12 screenshot, Esc quits.
+restarts the scene, M mutes, F7 projector setup, F9 live capture, F11 fullscreen, F12 screenshot, Esc quits.
 Headless frame k shows time SECONDS + k/60; the last frame is written.
 record renders frame_000000.exr ... at a fixed 1/F s a frame, each the average of K samples spread over
 its interval (motion blur, anti-aliasing), skipping frames already in FOLDER; --range A:B renders frames

@@ -27,6 +27,9 @@
 #include "host/gallery_live.h"
 #include "host/output_warp_file.h"
 #include "host/output_window.h"
+#include "host/projector_setup.h"
+#include "core/atomic_file.h"
+#include <nlohmann/json.hpp>
 #include "host/gallery_settings.h"
 #include "host/kiosk.h"
 #include "host/live_capture.h"
@@ -103,6 +106,8 @@ class Gallery {
  private:
   void frame();
   void handleKeys();
+  void startSetup();
+  void endSetup(ProjectorSetup::Key how);
   void switchScene(const SceneInfo& info);
   void simulate();
   void collect(uint32_t slot);
@@ -161,6 +166,9 @@ class Gallery {
   // The picture as the window shows it, at the window's size: what F12 and F9 save.
   std::optional<gpu::Image> windowCopy_;
   bool helpShown_ = false;
+  ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
+  std::string warpFile_;                    // --output-warp's file, where a kept pin is written
+  const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
@@ -221,6 +229,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       capture_(device_, kFramesInFlight, "captures"),
       steps_(input_.dt),
       vsync_(options.vsync),
+      warpFile_(options.outputWarp),
       playlist_(std::move(playlist)) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
@@ -317,8 +326,18 @@ bool kioskAllows(int key) { return key == GLFW_KEY_ESCAPE || sceneForKey(key) !=
 void Gallery::handleKeys() {
   const std::vector<int> keys = window_.takeKeys();
   if (overlay_.wantsKeyboard()) return;  // typed into a field, not commands
+  const auto& held = window_.keysHeld();
+  const bool shift = std::find(held.begin(), held.end(), GLFW_KEY_LEFT_SHIFT) != held.end() ||
+                     std::find(held.begin(), held.end(), GLFW_KEY_RIGHT_SHIFT) != held.end();
   for (int key : keys) {
     if (kiosk_ && !kioskAllows(key)) continue;
+    if (setup_.active()) {  // its keys are setup's: Esc undoes the pin rather than closing the gallery
+      const ProjectorSetup::Key used = setup_.key(key, shift, swapchain_.extent(), *warp_);
+      if (used != ProjectorSetup::Key::Ignored) {
+        if (used != ProjectorSetup::Key::Used) endSetup(used);
+        continue;
+      }
+    }
     switch (key) {
       case GLFW_KEY_ESCAPE:
         window_.close();
@@ -360,6 +379,9 @@ void Gallery::handleKeys() {
         break;
       case GLFW_KEY_BACKSLASH:
         time_.normal();
+        break;
+      case GLFW_KEY_F7:
+        startSetup();
         break;
       case GLFW_KEY_F5:  // the scene from its first frame, its parameters kept
         nextScene_ = &renderer_->info();
@@ -539,6 +561,7 @@ void Gallery::frame() {
   simulate();
   showMenu();
   showToast();
+  setup_.draw(warp_ ? *warp_ : maths::OutputWarp{}, swapchain_.extent());
   handleKeys();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
@@ -611,7 +634,8 @@ void Gallery::simulate() {
     remote_->publish(*renderer_);
   }
   if (kiosk_) kioskStep(elapsed, touched);
-  cursor_.observe(pointer, !uiHidden_ && overlay_.wantsMouse());
+  if (setup_.active()) setup_.pointer(pointer, *warp_);
+  cursor_.observe(pointer, setup_.active() || (!uiHidden_ && overlay_.wantsMouse()));  // setup's mouse is not the scene's
   // Every step that is due, unless a step costs more than the time it stands for (StepCost).
   const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed), renderer_->scene().takeGivenUpSeconds());
   const bool firstSteps = input_.frame == 0;  // a scene's first update builds things: not its cost
@@ -677,6 +701,30 @@ void Gallery::showMenu() {
 
 // With the UI hidden (Tab), where a screenshot went and a clock that falls behind still show, briefly
 // and small, in a corner. A kiosk shows nothing.
+// Projector setup shows the calibration card, when this build has one, and the UI it needs.
+void Gallery::startSetup() {
+  if (setup_.active()) return;
+  if (!warp_) warp_.emplace();
+  setup_.start(*warp_);
+  if (const SceneInfo* card = findScene("calibrate"); card && card != &renderer_->info())
+    beforeSetup_ = &renderer_->info(), nextScene_ = card;
+  note_ = "projector setup";
+  noted_ = Clock::now();
+}
+
+void Gallery::endSetup(ProjectorSetup::Key how) {
+  if (how == ProjectorSetup::Key::Kept && !warpFile_.empty()) {
+    const std::string text = outputWarpToJson(*warp_).dump(2) + "\n";
+    writeFileAtomically(warpFile_, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+    note_ = fmt::format("projector setup kept in {}", warpFile_);
+  } else {
+    note_ = how == ProjectorSetup::Key::Kept ? "projector setup kept for this run (--output-warp FILE keeps it)"
+                                             : "projector setup undone";
+  }
+  noted_ = Clock::now();
+  if (beforeSetup_) nextScene_ = std::exchange(beforeSetup_, nullptr);
+}
+
 void Gallery::showToast() {
   if (!uiHidden_ || kiosk_) return;
   std::string text;

@@ -115,6 +115,7 @@ std::span<const std::pair<std::string_view, std::string_view>> galleryKeys() {
       {"V", "vsync on or off"},
       {"M", "sound on or off"},
       {"F11", "fullscreen"},
+      {"F7", "projector setup: drag the corners, Enter keeps"},
       {"F9", "capture every frame to an EXR sequence, or stop"},
       {"F12", "screenshot (EXR and PNG)"},
       {"Esc", "quit"},

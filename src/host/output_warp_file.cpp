@@ -1,6 +1,7 @@
 #include "host/output_warp_file.h"
 
 #include "core/error.h"
+#include "params/schema.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -72,15 +73,17 @@ maths::OutputWarp outputWarpFromJson(const json& in, std::string_view where) {
 }
 
 json outputWarpToJson(const maths::OutputWarp& warp) {
+  // Each float as the shortest decimal that reads back to it ("2.2", not 2.200000047683716).
+  const auto n = [](float value) { return std::stod(params::formatFloat(value)); };
   const maths::EdgeBlend& b = warp.blend;
   json corners = json::array();
-  for (const glm::vec2& c : warp.corners) corners.push_back({c.x, c.y});
+  for (const glm::vec2& c : warp.corners) corners.push_back({n(c.x), n(c.y)});
   return {{"turn", warp.quarterTurns * 90},
           {"mirror", warp.mirror},
-          {"region", {warp.region.x, warp.region.y, warp.region.z, warp.region.w}},
+          {"region", {n(warp.region.x), n(warp.region.y), n(warp.region.z), n(warp.region.w)}},
           {"corners", corners},
-          {"blend", {{"left", b.left}, {"top", b.top}, {"right", b.right}, {"bottom", b.bottom}, {"curve", b.curve},
-                     {"gamma", b.gamma}}}};
+          {"blend", {{"left", n(b.left)}, {"top", n(b.top)}, {"right", n(b.right)}, {"bottom", n(b.bottom)},
+                     {"curve", n(b.curve)}, {"gamma", n(b.gamma)}}}};
 }
 
 maths::OutputWarp readOutputWarp(const std::filesystem::path& file) {

@@ -3,7 +3,8 @@
 # 1280x360: the main window (640x360 at the left) shows the left half of the frame (--output-warp with a
 # region), and a second output (--outputs: a window without a frame at 640,0) the right half. What the
 # screen shows, grabbed through X11, is a headless render of the whole 1280x360 frame to within 8-bit
-# rounding: the scene rendered once at the frame's size and each output drew its own half. kifs under
+# rounding: the scene rendered once at the frame's size and each output drew its own half. Projector setup
+# (F7) drags a corner and keeps the pin in the warp file. kifs under
 # --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
 # whole desktop shows the same frame. --list-monitors lists the display's monitor, and a monitor that is
 # not there, or a bad outputs file, is refused.
@@ -37,6 +38,21 @@ for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
 grep -q "validation messages" "$log" && fail "validation messages"
 [ "$code" = 0 ] || fail "exit $code"
+
+# Projector setup (F7): the top-left corner dragged in by a tenth, nudged one pixel right, kept with Enter:
+# written to the --output-warp file, and the screen's top-left corner is now black.
+echo '{}' >"$out/pin.json"
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
+   --size 640x360 --no-vsync --validate --output-warp "$out/pin.json") >"$log" 2>&1 &
+app=$!
+sleep 12
+keys key:Tab key:F7 sleep:1 drag:1,1,64,36 sleep:1 key:Right key:Return sleep:1 shot:0,0,16,8,"$out/pinned.ppm" key:Escape
+for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+wait $app || fail "the gallery in projector setup failed"
+python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["corners"]; assert c[0] == [0.1015625, 0.1] and c[2] == [1, 1], c' \
+  "$out/pin.json" || fail "the kept pin: $(cat "$out/pin.json")"
+python3 -c 'import sys; d = open(sys.argv[1], "rb").read(); assert max(d[d.index(b"255\n") + 4:]) == 0, "not black"' \
+  "$out/pinned.ppm" || fail "the pinned picture still reaches the screen's corner"
 
 # One window spanning the desktop (its one monitor here) shows the whole frame.
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \

@@ -2,7 +2,8 @@
 """xtest.py DISPLAY ACTION...: presses keys and moves or clicks the mouse on an X display through the
 XTEST extension, speaking the X11 protocol over the display's local socket (no xdotool on the test
 machine). Actions: key:NAME (a keysym name: F12, Tab, bracketright, 3 ...), move:X,Y, click:X,Y,
-ctrlclick:X,Y, wheel:X,Y,NOTCHES, sleep:SECONDS, and shot:X,Y,W,H,FILE.ppm, which saves that part of the
+ctrlclick:X,Y, drag:X,Y,TOX,TOY (pressed, moved there over half a second, released), wheel:X,Y,NOTCHES,
+sleep:SECONDS, and shot:X,Y,W,H,FILE.ppm, which saves that part of the
 root window (what every window on the screen shows) as a binary PPM. For the gallery's checks under Xvfb (started without access control)."""
 import os
 import socket
@@ -10,7 +11,8 @@ import struct
 import sys
 import time
 
-KEYSYMS = {"Tab": 0xFF09, "Escape": 0xFF1B, "Return": 0xFF0D, "Control_L": 0xFFE3, "bracketleft": 0x5B, "bracketright": 0x5D,
+KEYSYMS = {"Tab": 0xFF09, "Escape": 0xFF1B, "Return": 0xFF0D, "Control_L": 0xFFE3, "Left": 0xFF51, "Up": 0xFF52,
+           "Right": 0xFF53, "Down": 0xFF54, "bracketleft": 0x5B, "bracketright": 0x5D,
            "backslash": 0x5C, "period": 0x2E}
 KEYSYMS.update({f"F{n}": 0xFFBD + n for n in range(1, 13)})
 KEYSYMS.update({str(d): 0x30 + d for d in range(10)})
@@ -99,6 +101,16 @@ def main():
                 fake(5, 1)
             if verb == "ctrlclick":
                 fake(3, ctrl)
+        elif verb == "drag":
+            x, y, to_x, to_y = map(int, arg.split(","))
+            fake(6, 0, x, y)
+            time.sleep(0.1)
+            fake(4, 1)
+            for i in range(1, 11):  # a hand's pace: every frame sees the button held somewhere on the way
+                time.sleep(0.05)
+                fake(6, 0, x + (to_x - x) * i // 10, y + (to_y - y) * i // 10)
+            time.sleep(0.2)
+            fake(5, 1)
         elif verb == "wheel":  # wheel:X,Y,N: N notches down (negative: up)
             x, y, n = map(int, arg.split(","))
             fake(6, 0, x, y)

@@ -1,0 +1,63 @@
+// Projector setup: corners taken by a press near them, dragged, nudged by the arrows; a fold refused;
+// Enter keeps the pin and Esc puts back the one setup started with.
+#include <gtest/gtest.h>
+
+#include <GLFW/glfw3.h>
+
+#include "host/projector_setup.h"
+
+namespace vitrine::host {
+namespace {
+
+constexpr VkExtent2D kOutput{1000, 500};
+
+Pointer at(glm::vec2 pixels, bool held, bool pressed = false) { return {pixels, kOutput, held, pressed, 0.0f, true}; }
+
+TEST(ProjectorSetup, APressNearACornerTakesItAndDraggingMovesIt) {
+  ProjectorSetup setup;
+  maths::OutputWarp warp;
+  setup.start(warp);
+  setup.pointer(at({500.0f, 250.0f}, true, true), warp);  // the middle: no corner within reach
+  EXPECT_FALSE(setup.held());
+  setup.pointer(at({990.0f, 490.0f}, true, true), warp);  // near the bottom-right corner
+  ASSERT_EQ(setup.held(), 2);
+  setup.pointer(at({900.0f, 450.0f}, true), warp);
+  EXPECT_FLOAT_EQ(warp.corners[2].x, 0.9f);
+  EXPECT_FLOAT_EQ(warp.corners[2].y, 0.9f);
+  setup.pointer(at({800.0f, 400.0f}, false), warp);  // released: it stays where it was let go
+  EXPECT_FALSE(setup.held());
+  EXPECT_FLOAT_EQ(warp.corners[2].x, 0.9f);
+}
+
+TEST(ProjectorSetup, AFoldIsNotTaken) {
+  ProjectorSetup setup;
+  maths::OutputWarp warp;
+  setup.start(warp);
+  setup.pointer(at({0.0f, 0.0f}, true, true), warp);  // the top-left corner...
+  setup.pointer(at({1000.0f, 500.0f}, true), warp);   // ...dragged past the bottom-right: a fold
+  EXPECT_EQ(warp.corners[0], glm::vec2(0.0f));
+  EXPECT_EQ(maths::checkWarp(warp), "");
+}
+
+TEST(ProjectorSetup, ArrowsNudgeAndEnterKeepsAndEscapeUndoes) {
+  ProjectorSetup setup;
+  maths::OutputWarp warp;
+  EXPECT_EQ(setup.key(GLFW_KEY_LEFT, false, kOutput, warp), ProjectorSetup::Key::Ignored);  // not in setup
+  setup.start(warp);
+  EXPECT_EQ(setup.key(GLFW_KEY_TAB, false, kOutput, warp), ProjectorSetup::Key::Used);  // the top-right corner
+  setup.key(GLFW_KEY_LEFT, false, kOutput, warp);
+  setup.key(GLFW_KEY_DOWN, true, kOutput, warp);
+  EXPECT_FLOAT_EQ(warp.corners[1].x, 0.999f);
+  EXPECT_FLOAT_EQ(warp.corners[1].y, 0.02f);
+  maths::OutputWarp kept = warp;
+  EXPECT_EQ(setup.key(GLFW_KEY_ENTER, false, kOutput, warp), ProjectorSetup::Key::Kept);
+  EXPECT_FALSE(setup.active());
+  EXPECT_EQ(warp, kept);
+  setup.start(warp);
+  setup.key(GLFW_KEY_RIGHT, true, kOutput, warp);
+  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kOutput, warp), ProjectorSetup::Key::Undone);
+  EXPECT_EQ(warp, kept);
+}
+
+}  // namespace
+}  // namespace vitrine::host
