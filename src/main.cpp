@@ -4,6 +4,7 @@
 #include "gpu/check.h"
 #include "gpu/device.h"
 #include "host/modes.h"
+#include "host/user_presets.h"
 #include "host/window.h"
 #include "scenes/scene.h"
 
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
         std::fputs(gpu::listDevices(instance).c_str(), stdout);
         return 0;
       }
+      case Mode::ExportPreset: return host::runExportPreset(options);
       case Mode::Headless: return host::runHeadless(options);
       case Mode::Bench: return host::runBench(options);
       case Mode::Record: return host::runRecord(options);

@@ -127,6 +127,8 @@ constexpr FlagRule kFlagRules[] = {
     {"--size", kRuns},
     {"--set", kRuns, true},
     {"--preset", kRuns, true},
+    {"--preset-file", kRuns, true},
+    {"--save-preset", kHeadless},
     {"--frames", kHeadless | kBench},
     {"--time", kHeadless | kBench | kRecord},
     {"--out", kHeadless | kRecord | kEncode},
@@ -137,6 +139,7 @@ constexpr FlagRule kFlagRules[] = {
     {"--reset-settings", kGallery},
     {"--kiosk", kGallery},
     {"--dwell", kGallery},
+    {"--playlist", kGallery},
     {"--remote", kGallery | kHeadless},
     {"--remote-bind", kGallery | kHeadless},
     {"--remote-saves", kGallery},
@@ -219,13 +222,14 @@ const char* usage() {
 
   vitrine [--scene NAME] [--size WxH] [--fullscreen] [--no-vsync] [--device INDEX|NAME]
           [--reduced-motion] [--flash-guard on|off] [--seed S] [--set [SCENE.]KEY=VALUE]...
-          [--preset [SCENE.]NAME]... [--reset-settings] [--validate] [--kiosk [--dwell SECONDS]]
+          [--preset [SCENE.]NAME]... [--preset-file FILE]... [--reset-settings] [--validate]
+          [--kiosk [--dwell SECONDS | --playlist FILE]]
           [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]... [--remote-saves]]
           [--map FILE|SOURCE=[SCENE.]KEY[:LO:HI]]... [--audio-in FILE | --audio-in-device NAME|INDEX|default]
           [--monitor INDEX|NAME | --span] [--output-warp FILE.json] [--outputs FILE.json]
   vitrine --headless --scene NAME [--size WxH] [--frames N] [--time SECONDS] [--seed S]
-          [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--input FILE] [--events FILE]
-          [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
+          [--set [SCENE.]KEY=VALUE]... [--preset [SCENE.]NAME]... [--preset-file FILE]... [--save-preset NAME]
+          [--input FILE] [--events FILE] [--audio-out FILE.wav] [--remote [--remote-bind ADDR:PORT] [--remote-allow CIDR]...]
           [--map ...]... [--audio-in FILE] [--midi-in FILE.mid] [--output-warp FILE.json] --out FILE.exr|FILE.png
   vitrine record --scene NAME --seconds S --out FOLDER [--size WxH] [--fps F] [--spp K] [--range A:B]
           [--checkpoint-every N [--checkpoints-only]] [--format exr|png] [--time SECONDS] [--seed S]
@@ -239,6 +243,7 @@ const char* usage() {
           [--preset [SCENE.]NAME]... --json FILE
   vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
   vitrine --list-params [SCENE]
+  vitrine --export-preset [SCENE.]NAME --out FILE.json
   vitrine --list-devices | --list-monitors | --list-scenes | --help | --version
 
 Gallery keys: 1-9 switch scene, Tab hides the UI, F1 or ? shows help, V toggles vsync, P pauses, . steps while paused, F5
@@ -270,7 +275,10 @@ in headless and record runs, whose audio.wav then carries it) and turns on the s
 --flash-guard on holds back what would flash more than three times a second over a large area (WCAG 2.3.1, in
 every mode; docs/INSTALLATIONS.md); it is on by default with --kiosk and --reduced-motion, off otherwise.
 --set and --preset apply to whichever scene runs; SCENE.KEY=VALUE and SCENE.NAME (noodles.grid=32) only to
-that scene. --list-params shows each scene's parameters.
+that scene. --list-params shows each scene's parameters. --preset finds the scene's own presets, then yours (saved
+from the panel, a remote or --save-preset NAME, in the presets folder beside the settings file); --preset-file
+applies a preset's file (as --export-preset writes it) to its scene, in every mode. --playlist FILE gives the kiosk
+its lines of SCENE [PRESET] SECONDS.
 A flag outside its mode (--fps in --headless, --json for --out) is refused, as is one given twice, except
 --set, --preset and --map. record keeps the film's parameters in FOLDER/record.json and resumes only the same film.
 )";
@@ -338,7 +346,7 @@ Options parseOptions(int argc, const char* const* argv) {
     const std::string_view arg = argv[i];
     if (const FlagRule* rule = findFlagRule(arg)) {
       if (!rule->repeatable && std::find(given.begin(), given.end(), rule) != given.end())
-        throw Error(fmt::format("{} is given twice; only --set, --preset, --map and --remote-allow may be given more than once.", arg));
+        throw Error(fmt::format("{} is given twice; only --set, --preset, --preset-file, --map and --remote-allow may be given more than once.", arg));
       given.push_back(rule);
     }
     if (arg == "--headless") options.mode = Mode::Headless;
@@ -366,6 +374,13 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--no-vsync") options.vsync = false;
     else if (arg == "--set") options.parameters.push_back(parseSet(value(arg)));
     else if (arg == "--preset") options.presets.push_back(parsePreset(value(arg)));
+    else if (arg == "--preset-file") options.presetFiles.push_back(value(arg));
+    else if (arg == "--save-preset") options.savePreset = value(arg);
+    else if (arg == "--playlist") options.playlist = value(arg);
+    else if (arg == "--export-preset") {
+      options.mode = Mode::ExportPreset;
+      options.exportPreset = parsePreset(value(arg));
+    }
     else if (arg == "--input") options.input = value(arg);
     else if (arg == "--events") options.events = value(arg);
     else if (arg == "--audio-out") options.audioOut = value(arg);
@@ -478,6 +493,11 @@ Options parseOptions(int argc, const char* const* argv) {
   }
   if (!options.audioIn.empty() && !options.audioInDevice.empty())
     throw Error("--audio-in FILE and --audio-in-device both feed the audio sources: give one of them.");
+  if (options.mode == Mode::ExportPreset && options.out.empty())
+    throw Error("--export-preset needs --out FILE.json, where the preset's file is written.");
+  if (!options.playlist.empty() && !options.kiosk) throw Error("--playlist is the kiosk's: give --kiosk too.");
+  if (!options.playlist.empty() && isGiven("--dwell"))
+    throw Error("--dwell and --playlist both say how long a scene shows: the playlist gives each line's dwell.");
   if (options.kiosk && options.mode != Mode::Gallery) throw Error("--kiosk is for the gallery, not --headless, bench or record.");
   if (options.remote && options.mode != Mode::Gallery && options.mode != Mode::Headless)
     throw Error("--remote is for the gallery and --headless runs.");

@@ -15,7 +15,7 @@
 namespace vitrine {
 
 enum class Mode {
-  Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListMonitors, ListScenes, ListParams, Help, Version
+  Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListMonitors, ListScenes, ListParams, ExportPreset, Help, Version
 };
 
 // One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
@@ -43,6 +43,9 @@ struct Options {
   bool vsync = true;
   std::vector<SceneSetting> parameters;  // --set [SCENE.]KEY=VALUE, in command-line order
   std::vector<SceneSetting> presets;     // --preset [SCENE.]NAME, in command-line order
+  std::vector<std::string> presetFiles;  // --preset-file FILE: a preset's file, applied to its own scene
+  std::string savePreset;                // --save-preset NAME (headless): the run's values kept as the user's preset
+  SceneSetting exportPreset;             // --export-preset [SCENE.]NAME --out FILE: a user's preset written out
   std::vector<std::string> compare;  // compare REF CANDIDATE
   CompareThresholds compareThresholds;  // compare --fail-fraction F --hard-limit H --lowpass N
   std::string listParams;            // --list-params [SCENE]: empty for every scene
@@ -68,6 +71,7 @@ struct Options {
   // The gallery for installations.
   bool kiosk = false;                // --kiosk: fullscreen, no UI, cycling through the scenes
   double dwell = 45.0;               // --dwell SECONDS: how long each scene shows in kiosk mode
+  std::string playlist;              // --playlist FILE: the kiosk shows its entries instead (host/playlist.h)
   bool remote = false;               // --remote: OSC and the web control page (gallery and headless)
   std::string remoteBind = "127.0.0.1:8730";  // --remote-bind ADDR:PORT
   std::vector<std::string> remoteAllow;  // --remote-allow CIDR (repeatable): OSC senders needing no token

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/output_path.h"
 #include "core/stats.h"
+#include "host/user_presets.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "params/settings_file.h"
@@ -31,6 +32,7 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, scene, true), parametersFor(options, scene, true)};
   config.flashGuard = flashGuardOn(options);
+  config.presetFiles = presetFilesFor(options, scene);
   Offscreen offscreen(device, config);
   // Warm-up: pipeline compilation, clocks ramping, caches; not counted.
   for (uint32_t i = 0; i < options.warmup; ++i) offscreen.renderFrame();

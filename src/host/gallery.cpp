@@ -34,6 +34,8 @@
 #include "host/kiosk.h"
 #include "host/live_capture.h"
 #include "host/param_panel.h"
+#include "host/playlist.h"
+#include "host/user_presets.h"
 #include "host/remote_link.h"
 #include "host/menu.h"
 #include "host/modes.h"
@@ -56,6 +58,7 @@ constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
 constexpr auto kNoteSeconds = std::chrono::seconds(6);  // how long a screenshot's note stays
 constexpr auto kToastSeconds = std::chrono::seconds(4);  // and how long it shows with the UI hidden
 constexpr auto kReloadNoteSeconds = std::chrono::seconds(3);
+const std::filesystem::path kExportFolder = "presets-exported";  // the panel's "export", beside screenshots/
 // The scene renderer's present (compute) or blit (transfer) is the first use of an acquired image,
 // so that is where the acquire is waited for.
 constexpr VkPipelineStageFlags2 kAcquireStage =
@@ -92,7 +95,8 @@ double secondsBetween(Clock::time_point from, Clock::time_point to) {
 class Gallery {
  public:
   // `named`: the --scene the user asked for; null: the scene shown last time, else the first.
-  Gallery(const Options& options, const SceneInfo* named);
+  // `playlist`: the kiosk's (--playlist), checked before the window opens; empty: every scene in turn.
+  Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist = {});
   const SceneInfo& showing() const { return renderer_->info(); }
   ~Gallery() { vkDeviceWaitIdle(device_); }  // also when leaving by an exception, with frames in flight
   Gallery(const Gallery&) = delete;
@@ -117,8 +121,12 @@ class Gallery {
   void toggleCapture();
   double frameMs() const { return std::max(gpuMs_, frameSeconds_ * 1e3); }
   void applyEditNow(const PanelEdit& edit);
+  bool managePresets(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
+  const SceneInfo& entryScene(size_t entry) const;
+  size_t entryOf(const SceneInfo& info) const;
+  void startEntryPreset(SceneRenderer& renderer, size_t entry);
   void finishFade();
   void applyRemote();
   void nowShowing();
@@ -134,6 +142,7 @@ class Gallery {
   gpu::Device device_;
   gpu::ProgramLibrary programs_;
   GallerySettings settings_;
+  params::PresetStore presets_ = openUserPresets(params::LoadMode::MoveBadAside);  // the user's, beside the settings
   MenuLayout menuLayout_;  // before the overlay, whose layout file is written when it goes
   TierWatch tiers_;        // before the renderers, whose scenes report to it
   audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
@@ -160,13 +169,13 @@ class Gallery {
   std::optional<gpu::Image> windowCopy_;
   bool helpShown_ = false;
   ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
-  std::string warpFile_;                    // --output-warp's file, where a kept pin is written
   const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
 
   bool vsync_;
+  std::string warpFile_;  // --output-warp's file, where projector setup writes a kept pin
   bool uiHidden_ = false;
   bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;
@@ -187,6 +196,9 @@ class Gallery {
 
   // Kiosk mode (--kiosk).
   std::optional<KioskSchedule> kiosk_;
+  // --playlist: the kiosk's entries. Their presets apply over the saved values and are not remembered,
+  // so that a line without a preset shows the scene as saved, whatever an earlier line set.
+  std::vector<PlaylistEntry> playlist_;
   FrameInput incomingInput_, incomingShown_;  // the incoming scene's steps during a fade
   float fade_ = 0.0f;                         // its weight in the output
   Pointer lastPointer_;                       // to tell a moved mouse
@@ -199,7 +211,7 @@ class Gallery {
   std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
 };
 
-Gallery::Gallery(const Options& options, const SceneInfo* named)
+Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist)
     : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen, options.monitor, options.span),
       warp_(options.outputWarp.empty() ? std::nullopt : std::optional(readOutputWarp(options.outputWarp))),
       instance_({options.validation, window_.vulkanExtensions()}),
@@ -221,14 +233,15 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
       capture_(device_, kFramesInFlight, "captures"),
       steps_(input_.dt),
       vsync_(options.vsync),
-      warpFile_(options.outputWarp) {
+      warpFile_(options.outputWarp),
+      playlist_(std::move(playlist)) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
   renderer_->setEventSink(&tiers_);
   renderer_->setAudioSink(&audio_);
   renderer_->setRealtime(true);
   remoteSaves_ = options.remoteSaves;
-  if (options.remote) remote_.emplace(options.remoteBind, options.remoteAllow);
+  if (options.remote) remote_.emplace(options.remoteBind, options.remoteAllow), remote_->setPresets(&presets_);
   if (options.kiosk) {
     uiHidden_ = true;
     window_.setCursorHidden(true);
@@ -244,19 +257,20 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
   for (const auto& line : overlay_.fontProblems()) assets_.reportMissing(line);  // printed as reported
   for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
+  for (const auto& line : presets_.warnings()) std::fprintf(stderr, "vitrine: presets: %s\n", line.c_str());
   const SceneInfo* last = findScene(settings_.lastScene());
-  const SceneInfo& firstScene = named ? *named : last ? *last : sceneRegistry().front();
+  const SceneInfo& firstScene = !playlist_.empty() ? namedScene(playlist_.front().scene)
+                                : named          ? *named
+                                : last           ? *last
+                                                 : sceneRegistry().front();
   // --preset and --set apply over the saved values of the scenes they name, checked before a window
   // shows anything; like edits in the panel, they are remembered.
   for (const SceneInfo& info : sceneRegistry()) {
     const std::string_view first = firstScene.name;
     params::KeyValues values = settings_.valuesFor(info.name);
     bool given = false;  // the command line names values for this scene
-    for (const auto& preset : presetsFor(options, info.name, info.name == first)) {
-      const params::Preset* found = info.schema().findPreset(preset);
-      if (!found) throw Error(fmt::format("Scene {} has no preset '{}'; vitrine --list-params {} lists them.",
-                                          info.name, preset, info.name));
-      values.insert(values.end(), found->values.begin(), found->values.end());
+    for (const params::Preset& preset : presetsForRun(options, info.name, info.name == first)) {
+      values.insert(values.end(), preset.values.begin(), preset.values.end());
       given = true;
     }
     for (auto& kv : parametersFor(options, info.name, info.name == first)) values.push_back(std::move(kv)), given = true;
@@ -269,8 +283,15 @@ Gallery::Gallery(const Options& options, const SceneInfo* named)
   if (options.kiosk) {
     const auto scenes = sceneRegistry();
     // Cycling resumes after 30 s alone, or the dwell when shorter (but 10 s at least).
-    kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()),
-                   KioskTiming{options.dwell, 2.0, std::clamp(options.dwell, 10.0, 30.0)});
+    if (playlist_.empty()) {
+      kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()),
+                     KioskTiming{options.dwell, 2.0, std::clamp(options.dwell, 10.0, 30.0)});
+    } else {
+      std::vector<double> dwells;
+      for (const PlaylistEntry& entry : playlist_) dwells.push_back(entry.dwell);
+      const double shortest = *std::min_element(dwells.begin(), dwells.end());
+      kiosk_.emplace(std::move(dwells), 0, KioskTiming{shortest, 2.0, std::clamp(shortest, 10.0, 30.0)});
+    }
     lastPointer_ = window_.takePointer();  // where the cursor rests is not a touch
   }
   switchScene(firstScene);
@@ -410,7 +431,7 @@ std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) 
 size_t registryIndex(const SceneInfo& info) { return size_t(&info - sceneRegistry().data()); }
 
 void Gallery::switchScene(const SceneInfo& info) {
-  if (hasScene_) rememberValues();  // switching back restores them
+  if (hasScene_ && playlist_.empty()) rememberValues();  // switching back restores them
   if (incoming_) incoming_->clear();  // a number key during a fade: that scene, no fade
   fade_ = 0.0f;
   const SceneInfo* chosen = &info;
@@ -419,12 +440,18 @@ void Gallery::switchScene(const SceneInfo& info) {
   for (std::string failed; !(failed = startScene(*renderer_, *chosen)).empty();) {
     std::fprintf(stderr, "vitrine: kiosk: skipping %.*s: %s\n", int(chosen->name.size()), chosen->name.data(),
                  failed.c_str());
-    kiosk_->failed(registryIndex(*chosen));
-    const SceneInfo& next = sceneRegistry()[kiosk_->current()];
+    for (size_t entry = 0; entry < (playlist_.empty() ? sceneRegistry().size() : playlist_.size()); ++entry)
+      if (&entryScene(entry) == chosen) kiosk_->failed(entry);
+    const SceneInfo& next = entryScene(kiosk_->current());
     if (&next == chosen) throw Error("kiosk: no scene starts on this device");
     chosen = &next;
   }
-  if (kiosk_) kiosk_->jumpTo(registryIndex(*chosen));
+  if (kiosk_) {
+    // A playlist shows the entry showing, if it is this scene's, else the scene's first entry.
+    const size_t entry = &entryScene(kiosk_->current()) == chosen ? kiosk_->current() : entryOf(*chosen);
+    kiosk_->jumpTo(entry);
+    startEntryPreset(*renderer_, entry);
+  }
   missingAssets_ = assets_.missing();  // with what the scene could not find
   hasScene_ = true;
   ++sceneSerial_;
@@ -449,12 +476,37 @@ void Gallery::nowShowing() {
   remote_->publish(*renderer_, true);
 }
 
+// The scene of a kiosk entry: a playlist's line, else the registry's scene of that index.
+const SceneInfo& Gallery::entryScene(size_t entry) const {
+  return playlist_.empty() ? sceneRegistry()[entry] : namedScene(playlist_[entry].scene);
+}
+
+// The kiosk entry that shows `info`: its first line in a playlist (the line showing when none does).
+size_t Gallery::entryOf(const SceneInfo& info) const {
+  if (playlist_.empty()) return registryIndex(info);
+  for (size_t entry = 0; entry < playlist_.size(); ++entry)
+    if (playlist_[entry].scene == info.name) return entry;
+  return kiosk_->current();
+}
+
+// A playlist line's preset over the scene's saved values, just after it started; a preset the scene
+// refuses on this device (each value was checked when the playlist was read) is said and skipped.
+void Gallery::startEntryPreset(SceneRenderer& renderer, size_t entry) {
+  if (playlist_.empty() || playlist_[entry].preset.empty() || playlist_[entry].scene != renderer.info().name) return;
+  const PlaylistEntry& line = playlist_[entry];
+  FoundPreset found = findPreset(line.scene, line.preset, &presets_);
+  std::string why = found.preset ? renderer.applyParameters(found.preset->values) : found.why;
+  if (!why.empty())
+    std::fprintf(stderr, "vitrine: kiosk: %s without preset '%s': %s\n", line.scene.c_str(), line.preset.c_str(),
+                 why.c_str());
+}
+
 // Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
 // on, or ends (the renderers swap places).
 void Gallery::kioskStep(double elapsed, bool touched) {
   const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched);
   if (plan.begin) {
-    const SceneInfo& info = sceneRegistry()[*plan.begin];
+    const SceneInfo& info = entryScene(*plan.begin);
     if (!incoming_) {
       incoming_ = std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight);
       incoming_->setAudioSink(&audio_);
@@ -468,6 +520,7 @@ void Gallery::kioskStep(double elapsed, bool touched) {
       fade_ = 0.0f;
       return;
     }
+    startEntryPreset(*incoming_, *plan.begin);
     incomingInput_ = FrameInput{};
     incomingInput_.seed = input_.seed;
     incomingInput_.reducedMotion = input_.reducedMotion;
@@ -479,7 +532,7 @@ void Gallery::kioskStep(double elapsed, bool touched) {
 
 void Gallery::finishFade() {
   if (!incoming_ || !incoming_->hasScene()) return;
-  rememberValues();
+  if (playlist_.empty()) rememberValues();
   std::swap(renderer_, incoming_);
   incoming_->clear();  // the scene that faded out
   input_ = incomingInput_;
@@ -633,6 +686,7 @@ void Gallery::showMenu() {
                   remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string(),
                   tiers_.describe(renderer_->info().name, params::snapshot(renderer_->parameters())),
                   clockNote(), &menuLayout_};
+  state.userPresets = presets_.presetsOf(renderer_->info().name);
   state.livePanel = &live_->panel();
   state.live = live_->panelState();
   state.flashGuard = flashGuard_;
@@ -717,9 +771,11 @@ void Gallery::toggleCapture() {
 // Every panel edit goes through the same validation as --set; a refused one leaves every value as it
 // was. One that would freeze the window for seconds is asked about first.
 void Gallery::applyEdit(const PanelEdit& edit) {
+  if (managePresets(edit)) return;
   params::KeyValues change = edit.values;
   if (edit.what == PanelEdit::What::Preset)
-    if (const params::Preset* preset = renderer_->info().schema().findPreset(edit.preset)) change = preset->values;
+    if (FoundPreset found = findPreset(renderer_->info().name, edit.preset, &presets_); found.preset)
+      change = found.preset->values;
   if (edit.what != PanelEdit::What::ResetAll)
     if (std::string why = freezeWarning(renderer_->costRatio(change), frameMs()); !why.empty()) {
       costlyEdit_ = edit;
@@ -737,14 +793,57 @@ void Gallery::applyEditNow(const PanelEdit& edit) {
     remoteKeys.clear();
   switch (edit.what) {
     case PanelEdit::What::Values: panelError_ = renderer_->applyParameters(edit.values); break;
-    case PanelEdit::What::Preset: panelError_ = renderer_->applyPreset(edit.preset); break;
+    case PanelEdit::What::Preset: {
+      FoundPreset found = findPreset(renderer_->info().name, edit.preset, &presets_);
+      panelError_ = found.preset ? renderer_->applyParameters(found.preset->values) : found.why;
+      break;
+    }
     case PanelEdit::What::ResetAll:
       params::resetToDefaults(renderer_->parameters());
       panelError_.clear();
       break;
+    default: break;  // the user's presets: managePresets
   }
   rememberValues();
   if (remote_) remote_->publish(*renderer_, true);
+}
+
+// Saving, renaming, deleting or exporting one of the user's presets of the scene showing (true), said in
+// the note or, when refused, where the panel shows refusals. The values themselves do not change.
+bool Gallery::managePresets(const PanelEdit& edit) {
+  const std::string scene(renderer_->info().name);
+  std::string why, done;
+  switch (edit.what) {
+    case PanelEdit::What::SavePreset:
+      why = presets_.save({scene, edit.preset, params::snapshot(renderer_->parameters(), /*includeTransient=*/false)});
+      done = fmt::format("saved preset '{}'", edit.preset);
+      break;
+    case PanelEdit::What::RenamePreset:
+      why = presets_.rename(scene, edit.preset, edit.newName);
+      done = fmt::format("renamed preset '{}' to '{}'", edit.preset, edit.newName);
+      break;
+    case PanelEdit::What::DeletePreset:
+      why = presets_.remove(scene, edit.preset);
+      done = fmt::format("deleted preset '{}'", edit.preset);
+      break;
+    case PanelEdit::What::ExportPreset: {
+      // Into the working folder, as screenshots are: a file to hand on, read back by --preset-file.
+      const std::filesystem::path file = kExportFolder / presets_.fileOf(scene, edit.preset).filename();
+      why = presets_.exportTo(scene, edit.preset, file);
+      done = fmt::format("wrote preset '{}' to {}", edit.preset, std::filesystem::absolute(file).string());
+      break;
+    }
+    default: return false;
+  }
+  panelError_ = why;
+  if (why.empty()) {
+    note_ = done;
+    noted_ = Clock::now();
+    std::printf("vitrine: %s\n", done.c_str());
+    std::fflush(stdout);
+    if (remote_) remote_->publish(*renderer_, true);
+  }
+  return true;
 }
 
 // What a client changed is kept out of the settings file (unless --remote-saves): those keys keep
@@ -790,6 +889,16 @@ int runGallery(const Options& options) {
   std::signal(SIGTERM, [](int) { stopRequested = 1; });
   std::signal(SIGINT, [](int) { stopRequested = 1; });
   if (!options.kiosk) return Gallery(options, named).run();
+  // A bad playlist is refused here, naming its line, before a window opens.
+  std::vector<PlaylistEntry> playlist;
+  if (!options.playlist.empty()) {
+    params::PresetStore presets = openUserPresets();
+    playlist = loadPlaylist(options.playlist,
+                            {[](std::string_view scene) { return findScene(scene) != nullptr; },
+                             [&](std::string_view scene, std::string_view name) {
+                               return findPreset(scene, name, &presets).why;
+                             }});
+  }
 
   // The kiosk never stops: whatever ends a gallery once it has shown a frame (a lost device, memory
   // running out) is logged, and a fresh one starts with the next scene, after a pause that grows while
@@ -799,7 +908,7 @@ int runGallery(const Options& options) {
     std::optional<Gallery> gallery;
     const SceneInfo* failing = named;
     try {
-      gallery.emplace(options, named);
+      gallery.emplace(options, named, playlist);
       return gallery->run();
     } catch (const Error& e) {
       if (first && !gallery) throw;

@@ -4,6 +4,7 @@
 #include "image/image_compare.h"
 #include "audio/engine.h"
 #include "audio/wav.h"
+#include "host/user_presets.h"
 #include "host/event_log.h"
 #include "host/input_script.h"
 #include "host/modes.h"
@@ -37,6 +38,7 @@ int runHeadless(const Options& options) {
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
   config.flashGuard = flashGuardOn(options);
+  config.presetFiles = presetFilesFor(options, options.scene);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   if (!options.outputWarp.empty()) config.warp = readOutputWarp(options.outputWarp);
   std::optional<JsonLinesEventLog> events;
@@ -50,10 +52,12 @@ int runHeadless(const Options& options) {
   {
     Offscreen offscreen(device, config);
     std::optional<RemoteLink> remote;
+    std::optional<params::PresetStore> presets;  // a client may save, apply and delete presets
     if (options.remote) {
       // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
       // SIGTERM ends the run early (the last frame is still written).
       remote.emplace(options.remoteBind, options.remoteAllow);
+      remote->setPresets(&presets.emplace(openUserPresets()));
       if (live) remote->setMappings(live->mappingLines());
       std::signal(SIGTERM, [](int) { stopHeadless = 1; });
       std::signal(SIGINT, [](int) { stopHeadless = 1; });
@@ -75,6 +79,7 @@ int runHeadless(const Options& options) {
       offscreen.renderFrame();
     }
     image = offscreen.readback();
+    if (!options.savePreset.empty()) saveRunPreset(options, offscreen.parameters());  // the values it ended with
     const gpu::MemoryTally end = gpu::liveDeviceMemory();
     if (rendered > warmFrames)
       std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",

@@ -5,8 +5,12 @@
 
 namespace vitrine::host {
 
-KioskSchedule::KioskSchedule(size_t scenes, size_t first, KioskTiming timing)
-    : timing_(timing), failed_(std::max<size_t>(scenes, 1), false), current_(std::min(first, failed_.size() - 1)) {}
+KioskSchedule::KioskSchedule(size_t entries, size_t first, KioskTiming timing)
+    : KioskSchedule(std::vector<double>(std::max<size_t>(entries, 1), timing.dwell), first, timing) {}
+
+KioskSchedule::KioskSchedule(std::vector<double> dwells, size_t first, KioskTiming timing)
+    : timing_(timing), dwells_(dwells.empty() ? std::vector<double>{timing.dwell} : std::move(dwells)),
+      failed_(dwells_.size(), false), current_(std::min(first, failed_.size() - 1)) {}
 
 size_t KioskSchedule::nextAfter(size_t index) const {
   for (size_t step = 1; step <= failed_.size(); ++step) {
@@ -36,7 +40,7 @@ KioskSchedule::Plan KioskSchedule::advance(double elapsed, bool touched) {
   }
   shown_ += elapsed;
   const size_t next = nextAfter(current_);
-  if (shown_ >= timing_.dwell && next != current_) {
+  if (shown_ >= dwells_[current_] && next != current_) {
     incoming_ = next;
     fading_ = 0.0;
     plan.begin = next;

@@ -3,6 +3,10 @@
 // over a couple of seconds while both run. A person touching anything holds the current scene (a fade
 // under way completes at once); cycling resumes once nobody has touched anything for the idle time.
 // A scene that fails is skipped. Pure logic in real seconds: the frame loop asks it what to do.
+//
+// What it cycles through are entries: the registry's scenes, each for the same dwell, or the lines of a
+// playlist (--playlist, host/playlist.h), each with its own dwell; the gallery knows which scene and
+// preset an entry shows.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -17,7 +21,10 @@ struct KioskTiming {
 
 class KioskSchedule {
  public:
-  KioskSchedule(size_t scenes, size_t first, KioskTiming timing);
+  // `entries` each shown for timing.dwell.
+  KioskSchedule(size_t entries, size_t first, KioskTiming timing);
+  // One entry per dwell (seconds, above 0), each shown for its own; timing.dwell is not used.
+  KioskSchedule(std::vector<double> dwells, size_t first, KioskTiming timing);
 
   struct Plan {
     std::optional<size_t> begin;  // start this scene as the incoming one (a fade begins)
@@ -26,17 +33,18 @@ class KioskSchedule {
   };
   // After `elapsed` more seconds; `touched`: a person used a key, the mouse or a remote this frame.
   Plan advance(double elapsed, bool touched);
-  // The scene at `index` failed (to start, or while running): it is skipped from now on, until every
+  // The entry at `index` failed (to start, or while running): it is skipped from now on, until every
   // scene has failed, when all are tried again. A failed incoming scene ends its fade.
   void failed(size_t index);
   size_t current() const { return current_; }
   std::optional<size_t> incoming() const { return incoming_; }
-  // Someone chose a scene directly (a number key, a phone): it becomes current with no fade.
+  // Someone chose an entry directly (a number key, a phone): it becomes current with no fade.
   void jumpTo(size_t index);
 
  private:
   size_t nextAfter(size_t index) const;
   KioskTiming timing_;
+  std::vector<double> dwells_;  // per entry
   std::vector<bool> failed_;
   size_t current_;
   std::optional<size_t> incoming_;

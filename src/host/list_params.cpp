@@ -6,12 +6,15 @@
 
 #include "core/error.h"
 #include "host/modes.h"
+#include "host/user_presets.h"
 #include "params/listing.h"
 #include "scenes/scene.h"
 
 namespace vitrine::host {
 
 int runListParams(const Options& options) {
+  const params::PresetStore mine = openUserPresets();
+  for (const std::string& warning : mine.warnings()) std::fprintf(stderr, "vitrine: presets: %s\n", warning.c_str());
   bool first = true;
   for (const auto& info : sceneRegistry()) {
     if (!options.listParams.empty() && info.name != options.listParams) continue;
@@ -19,6 +22,14 @@ int runListParams(const Options& options) {
     for (const SceneAction& action : info.actions)  // what --input's "action" verb and remote control trigger
       std::printf("  action %s  %s\n", fmt::format("{} {}", action.name, fmt::join(action.args, " ")).c_str(),
                   std::string(action.help).c_str());
+    if (const auto own = mine.presetsOf(info.name); !own.empty()) {  // beside the scene's own, marked
+      std::printf("presets of yours (--preset NAME, in %s):\n", mine.folder().string().c_str());
+      for (const params::UserPreset* preset : own) {
+        std::vector<std::string> pairs;
+        for (const auto& [key, value] : preset->values) pairs.push_back(key + "=" + value);
+        std::printf("  %s  (yours)  %s\n", preset->name.c_str(), fmt::format("{}", fmt::join(pairs, " ")).c_str());
+      }
+    }
     first = false;
   }
   if (first)

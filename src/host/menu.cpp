@@ -257,7 +257,7 @@ MenuChoice drawMenu(const MenuState& state) {
     }
     const std::string header = fmt::format("{}###scene panel", state.current.title);
     if (section(header.c_str(), layout.panel)) {
-      if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), state.tierInUse);
+      if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), state.tierInUse, state.userPresets);
       state.scene.drawPanel();
     }
     if (state.livePanel && section("live input###live", layout.live)) choice.live = state.livePanel->draw(state.live);

@@ -56,6 +56,7 @@ struct MenuState {
   LivePanel* livePanel = nullptr;              // live input: audio, MIDI, gamepads, mappings
   LivePanelState live;
   bool flashGuard = false;                     // frames go through the flash guard
+  UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
 };
 
 struct MenuChoice {

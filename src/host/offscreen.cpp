@@ -9,6 +9,7 @@
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
+#include "host/user_presets.h"
 
 namespace vitrine::host {
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
@@ -30,9 +31,14 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
           throw Error(whereInScript(*config.input, event, fmt::format("at t={} s: {}", event.time, why)));
     player_.emplace(*config.input);
   }
-  for (const std::string& preset : config.presets)
-    if (auto why = renderer_.applyPreset(preset); !why.empty())
-      throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, preset, why));
+  for (const std::string& name : config.presets) {
+    const FoundPreset found = findPreset(config.scene, name);
+    const std::string why = found.preset ? renderer_.applyParameters(found.preset->values) : found.why;
+    if (!why.empty()) throw Error(fmt::format("Scene {} rejects preset {}: {}", config.scene, name, why));
+  }
+  for (const params::Preset& preset : config.presetFiles)
+    if (auto why = renderer_.applyParameters(preset.values); !why.empty())
+      throw Error(fmt::format("Scene {} rejects the preset file's '{}': {}", config.scene, preset.name, why));
   if (auto why = renderer_.applyParameters(config.parameters); !why.empty())
     throw Error(fmt::format("Scene {} rejects {}", config.scene, why));
   if (live_) live_->setScene(*info);

@@ -24,7 +24,9 @@ struct OffscreenConfig {
   double startTime = 0.0;
   uint32_t seed = 0;
   bool reducedMotion = false;
-  std::vector<std::string> presets;  // applied in order after creation, before the parameters
+  // Applied in order after creation, before the parameters: presets by name (the scene's own, then the
+  // user's: host/user_presets.h), then presetFiles.
+  std::vector<std::string> presets;
   params::KeyValues parameters;      // applied together after the presets
   std::optional<InputScript> input;  // --input: the cursor and keys, as a person would use them
   EventSink* events = nullptr;       // --events: where the scene's events go
@@ -33,6 +35,7 @@ struct OffscreenConfig {
   LiveLink* live = nullptr;          // --map, --audio-in, --midi-in: mapped values and actions each step
   std::optional<maths::OutputWarp> warp;  // --output-warp: how the output shows the frame (a projector's)
   bool flashGuard = false;           // --flash-guard (on with --reduced-motion): frames shown through it
+  std::vector<params::Preset> presetFiles;  // --preset-file: presets read from files, after the named ones
 };
 
 struct FrameTimes {

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace vitrine::host {
@@ -20,47 +21,111 @@ std::string numberText(const params::Param& param, double value) {
                                          : params::formatFloat(float(value));
 }
 
+// Whether the current values are `values` applied over themselves: every value a preset sets is the
+// value now, in canonical form.
+bool matches(const params::Bound& bound, const params::KeyValues& now, const params::KeyValues& values) {
+  const auto scratch = bound.schema->makeDefaults();
+  const params::Bound copy{bound.schema, scratch.get()};
+  if (!params::applyValues(copy, now).empty() || !params::applyValues(copy, values).empty()) return false;
+  return params::snapshot(copy) == now;
+}
+
+std::string yours(const std::string& name) { return name + " (yours)"; }
+
 }  // namespace
 
 const params::Preset* matchingPreset(const params::Bound& bound) {
   const params::KeyValues now = params::snapshot(bound);
-  for (const params::Preset& preset : bound.schema->presets()) {
-    // The preset's values in canonical form: applied over a copy of the current ones.
-    const auto scratch = bound.schema->makeDefaults();
-    const params::Bound copy{bound.schema, scratch.get()};
-    if (!params::applyValues(copy, now).empty() || !params::applyValues(copy, preset.values).empty()) continue;
-    if (params::snapshot(copy) == now) return &preset;
-  }
+  for (const params::Preset& preset : bound.schema->presets())
+    if (matches(bound, now, preset.values)) return &preset;
   return nullptr;
 }
 
-std::string presetLabel(const params::Bound& bound) {
+const params::UserPreset* matchingUserPreset(const params::Bound& bound, const UserPresets& mine) {
+  const params::KeyValues now = params::snapshot(bound);
+  for (const params::UserPreset* preset : mine)
+    if (matches(bound, now, preset->values)) return preset;
+  return nullptr;
+}
+
+std::string presetLabel(const params::Bound& bound, const UserPresets& mine) {
   if (const params::Preset* preset = matchingPreset(bound)) return preset->name;
+  if (const params::UserPreset* preset = matchingUserPreset(bound, mine)) return yours(preset->name);
   const auto defaults = bound.schema->makeDefaults();
   return params::snapshot({bound.schema, defaults.get()}) == params::snapshot(bound) ? "defaults" : "custom";
 }
 
-std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, std::string_view tierInUse) {
+// Save the current values as a new preset; rename, delete or export the user's preset they match.
+std::optional<PanelEdit> ParamPanel::drawUserPresetActions(const params::Bound& bound, const UserPresets& mine) {
+  std::optional<PanelEdit> edit;
+  const params::UserPreset* current = matchingUserPreset(bound, mine);
+  if (naming_ == Naming::None) {
+    if (ImGui::SmallButton("save as...")) naming_ = Naming::SaveAs, name_[0] = '\0', focusName_ = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the current values as a preset of your own.");
+    if (current) {
+      const auto& name = current->name;
+      ImGui::SameLine();
+      if (ImGui::SmallButton("rename")) {
+        naming_ = Naming::Rename;
+        focusName_ = true;
+        renaming_ = name;
+        std::snprintf(name_, sizeof name_, "%s", name.c_str());
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rename your preset '%s'.", name.c_str());
+      ImGui::SameLine();
+      if (ImGui::SmallButton("delete")) edit = PanelEdit{PanelEdit::What::DeletePreset, {}, name, {}};
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Delete your preset '%s'.", name.c_str());
+      ImGui::SameLine();
+      if (ImGui::SmallButton("export")) edit = PanelEdit{PanelEdit::What::ExportPreset, {}, name, {}};
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write '%s' as a file to share (--preset-file FILE reads it).", name.c_str());
+    }
+    return edit;
+  }
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+  if (std::exchange(focusName_, false)) ImGui::SetKeyboardFocusHere();  // typed into at once
+  const bool entered = ImGui::InputText(naming_ == Naming::SaveAs ? "name###preset name" : "new name###preset name", name_,
+                                        sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("ok") || entered) {
+    edit = naming_ == Naming::SaveAs ? PanelEdit{PanelEdit::What::SavePreset, {}, name_, {}}
+                                     : PanelEdit{PanelEdit::What::RenamePreset, {}, renaming_, name_};
+    naming_ = Naming::None;
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("cancel")) naming_ = Naming::None;
+  return edit;
+}
+
+std::optional<PanelEdit> ParamPanel::draw(const params::Bound& bound, std::string_view tierInUse, const UserPresets& mine) {
   std::optional<PanelEdit> edit;
   auto set = [&](const std::string& key, std::string value) {
     edit = PanelEdit{PanelEdit::What::Values, {{key, std::move(value)}}, {}};
   };
   const params::Schema& schema = *bound.schema;
 
-  if (!schema.presets().empty()) {
+  if (!schema.presets().empty() || !mine.empty()) {
     const params::Preset* matching = matchingPreset(bound);
-    const std::string label = presetLabel(bound);
+    const params::UserPreset* matchingMine = matching ? nullptr : matchingUserPreset(bound, mine);
+    const std::string label = presetLabel(bound, mine);
     if (ImGui::BeginCombo("preset", label.c_str())) {
       for (const auto& preset : schema.presets()) {
         if (ImGui::Selectable(preset.name.c_str(), &preset == matching))
           edit = PanelEdit{PanelEdit::What::Preset, {}, preset.name};
         if (ImGui::IsItemHovered() && !preset.help.empty()) ImGui::SetTooltip("%s", preset.help.c_str());
       }
+      if (!mine.empty() && !schema.presets().empty()) ImGui::Separator();
+      for (const params::UserPreset* preset : mine) {  // marked as the user's own
+        const std::string item = yours(preset->name);
+        if (ImGui::Selectable(item.c_str(), preset == matchingMine))
+          edit = PanelEdit{PanelEdit::What::Preset, {}, preset->name};
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Saved by you: %zu values.", preset->values.size());
+      }
       ImGui::EndCombo();
     }
     ImGui::SameLine();
   }
   if (ImGui::SmallButton("reset all")) edit = PanelEdit{PanelEdit::What::ResetAll, {}, {}};
+  if (auto action = drawUserPresetActions(bound, mine)) edit = std::move(action);
 
   // Sections fold (the first starts open), so a scene with many parameters fits a small window.
   std::string group;

@@ -1,4 +1,5 @@
 #include "host/record_shared.h"
+#include "host/user_presets.h"
 
 #include "host/modes.h"
 
@@ -19,6 +20,7 @@ OffscreenConfig recordConfig(const Options& options) {
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
   config.flashGuard = flashGuardOn(options);
+  config.presetFiles = presetFilesFor(options, options.scene);
   config.step = 1.0 / (options.fps * double(options.spp));
   return config;
 }

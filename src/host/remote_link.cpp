@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "host/cost_guard.h"
+#include "host/user_presets.h"
 
 namespace vitrine::host {
 namespace {
@@ -83,6 +84,11 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
       case remote::RemoteCommand::Kind::Modulation:
         applied.sources.emplace_back("osc." + command.key, command.args[0]);
         break;
+      case remote::RemoteCommand::Kind::Preset:
+        refused = preset(renderer, command, applied, frameMs);
+        if (refused.empty() && events)
+          events->emit(time, showing, {"remote_preset", {{"op", command.key}, {"scene", command.scene}, {"name", command.value}}});
+        break;
       case remote::RemoteCommand::Kind::Pointer:
         pressed_ = pressed_ || (command.down && !down_);
         down_ = command.down;
@@ -96,6 +102,34 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
   }
   if (!applied.values.empty() || applied.scene) publish(renderer, true);
   return applied;
+}
+
+// A client's preset command: save the values of the scene showing, delete one of the user's, or apply
+// one (the scene's own or the user's) as one batch through the panel's checks; for a scene not showing
+// its values wait like any others. Why it was refused, or empty.
+std::string RemoteLink::preset(SceneRenderer& renderer, const remote::RemoteCommand& command, RemoteApplied& applied,
+                               double frameMs) {
+  const std::string_view showing = renderer.info().name;
+  if (!presets_) return "this run keeps no presets";
+  if (command.key == "delete") return presets_->remove(command.scene, command.value);
+  if (command.key == "save") {
+    if (command.scene != showing)
+      return fmt::format("{} is not showing; only the values of the scene showing ({}) can be saved", command.scene, showing);
+    return presets_->save({command.scene, command.value, params::snapshot(renderer.parameters(), /*includeTransient=*/false)});
+  }
+  FoundPreset found = findPreset(command.scene, command.value, presets_);
+  if (!found.preset) return found.why;
+  const params::KeyValues& values = found.preset->values;
+  if (command.scene != showing) {
+    for (const auto& [key, value] : values)
+      if (!waiting_.put(command.client, command.scene, key, value))
+        return fmt::format("{}: too many values waiting for scenes that are not showing", command.scene);
+    return {};
+  }
+  std::string refused = freezeWarning(renderer.costRatio(values), frameMs);
+  if (refused.empty()) refused = renderer.applyParameters(values);
+  if (refused.empty()) applied.values.insert(applied.values.end(), values.begin(), values.end());
+  return refused;
 }
 
 params::KeyValues RemoteLink::applyWaiting(SceneRenderer& renderer, double frameMs) {

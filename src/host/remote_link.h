@@ -6,6 +6,7 @@
 // scene opens; actions and the pointer become the next step's input.
 #include "host/pointer.h"
 #include "host/scene_renderer.h"
+#include "params/preset_store.h"
 #include "remote/remote_control.h"
 #include "remote/waiting_values.h"
 
@@ -46,11 +47,17 @@ class RemoteLink {
   void publish(SceneRenderer& renderer, bool now = false);
   // The live mapping lines playing the scene showing, shown on every page from the next publish.
   void setMappings(std::vector<std::string> lines) { mappings_ = std::move(lines); }
+  // Where clients' preset commands (save, apply, delete) go; without one they are refused. Applying
+  // finds the scene's own presets too.
+  void setPresets(params::PresetStore* presets) { presets_ = presets; }
   // For the menu: "remote 127.0.0.1:8730: 2 pages, 1520 messages, 3 ignored".
   std::string status() const;
 
  private:
+  std::string preset(SceneRenderer& renderer, const remote::RemoteCommand& command, RemoteApplied& applied,
+                     double frameMs);
   remote::RemoteControl control_;
+  params::PresetStore* presets_ = nullptr;
   remote::WaitingValues waiting_;  // bounded: last value per key, capped per client and in all
   std::optional<glm::vec2> touch_;  // the latest pointer position from a phone
   bool down_ = false, pressed_ = false;

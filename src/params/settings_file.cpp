@@ -23,27 +23,25 @@ namespace {
 // structure that later recursion (dump, destruction) could overflow the stack on.
 constexpr int kMaxDepth = 32;
 
-struct NotSettings {
-  std::string why;
-};
-
 Json parseLimited(const std::string& text) {
   const auto limitDepth = [](int depth, Json::parse_event_t event, Json&) {
     if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) && depth >= kMaxDepth)
-      throw NotSettings{fmt::format("nested deeper than {} levels", kMaxDepth)};
+      throw FileRefused{fmt::format("nested deeper than {} levels", kMaxDepth)};
     return true;
   };
   try {
     return Json::parse(text, limitDepth);
   } catch (const Json::parse_error& e) {
     // Not e.what(): it quotes the bytes it stopped at, and those may be binary.
-    throw NotSettings{e.byte > text.size() ? "not JSON: it ends too early" : fmt::format("not JSON at byte {}", e.byte)};
+    throw FileRefused{e.byte > text.size() ? "not JSON: it ends too early" : fmt::format("not JSON at byte {}", e.byte)};
   } catch (const Json::out_of_range&) {  // a number no double holds (1e400), anywhere in the file
-    throw NotSettings{"a number out of range"};
+    throw FileRefused{"a number out of range"};
   } catch (const Json::exception& e) {  // any other refusal of the parser is the same: not settings
-    throw NotSettings{fmt::format("not JSON (error {})", e.id)};
+    throw FileRefused{fmt::format("not JSON (error {})", e.id)};
   }
 }
+
+}  // namespace
 
 // "settings.json" → "settings.json.bad-20250101-120000" (then "-2", "-3" if taken): the user's file is
 // kept for a look, out of the way of the next save.
@@ -58,9 +56,11 @@ std::string moveAside(const fs::path& path) {
   std::error_code ec;
   for (int n = 2; fs::exists(fs::symlink_status(target, ec)); ++n) target = fmt::format("{}-{}", base, n);
   fs::rename(path, target, ec);
-  if (ec) return fmt::format("could not be moved aside ({}); starting from the defaults", ec.message());
-  return fmt::format("moved it to {} and started from the defaults", target.string());
+  if (ec) return fmt::format("could not be moved aside ({})", ec.message());
+  return fmt::format("moved it to {}", target.string());
 }
+
+namespace {
 
 std::string_view expected(Kind kind) {
   switch (kind) {
@@ -117,6 +117,25 @@ Json typedValue(const Param* param, const std::string& text) {
   return text;
 }
 
+std::vector<ValueProblem> checkSceneValues(const Json& values, const Schema& schema, KeyValues& kept, Json& unknown) {
+  std::vector<ValueProblem> problems;
+  const auto scratch = schema.makeDefaults();  // each parse writes only its own field
+  for (const auto& [key, value] : values.items()) {
+    const Param* param = schema.find(key);
+    if (!param) {  // from another version: the caller decides whether it is kept
+      unknown[key] = value;
+      continue;
+    }
+    std::string text, why;
+    if (param->has(kTransient))
+      why = "not kept between runs";
+    else if (textOf(value, param->kind, text, why) && param->parse(scratch.get(), text, &why))
+      kept.emplace_back(key, param->format(scratch.get()));  // canonical: "1" for 1, "0.05" for 0.05000001
+    if (!why.empty()) problems.push_back({key, shortText(value), why});
+  }
+  return problems;
+}
+
 namespace {
 
 void loadScene(const std::string& where, const std::string& name, const Json& values, const Schema& schema,
@@ -125,22 +144,10 @@ void loadScene(const std::string& where, const std::string& name, const Json& va
     result.warnings.push_back(fmt::format("{}: scenes.{} is {}, not an object; using its defaults", where, name, values.type_name()));
     return;
   }
-  KeyValues& kept = result.settings.scenes[name];
-  const auto scratch = schema.makeDefaults();  // each parse writes only its own field
-  for (const auto& [key, value] : values.items()) {
-    const Param* param = schema.find(key);
-    if (!param) {  // from another version: kept for the save, not applied
-      result.settings.unknown["scenes"][name][key] = value;
-      continue;
-    }
-    std::string text, why;
-    if (param->has(kTransient))
-      why = "not kept between runs";
-    else if (textOf(value, param->kind, text, why) && param->parse(scratch.get(), text, &why))
-      kept.emplace_back(key, param->format(scratch.get()));  // canonical: "1" for 1, "0.05" for 0.05000001
-    if (!why.empty())
-      result.warnings.push_back(fmt::format("{}: {}.{}={}: {}; using the default", where, name, key, shortText(value), why));
-  }
+  Json unknown = Json::object();
+  for (const ValueProblem& problem : checkSceneValues(values, schema, result.settings.scenes[name], unknown))
+    result.warnings.push_back(fmt::format("{}: {}.{}={}: {}; using the default", where, name, problem.key, problem.value, problem.why));
+  for (const auto& [key, value] : unknown.items()) result.settings.unknown["scenes"][name][key] = value;
 }
 
 }  // namespace
@@ -151,6 +158,20 @@ fs::path defaultSettingsPath() {
   const char* home = std::getenv("HOME");
   if (home && *home) return fs::path(home) / ".config" / "vitrine" / "settings.json";
   return {};
+}
+
+Json readJsonFile(const fs::path& path, uintmax_t maxBytes) {
+  std::error_code ec;
+  if (fs::file_size(path, ec) > maxBytes && !ec) throw FileRefused{fmt::format("larger than {} bytes", maxBytes)};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileRefused{fmt::format("cannot open it: {}", std::strerror(errno))};
+  // Read one byte past the limit, in case the file grew since file_size.
+  std::string text(size_t(maxBytes) + 1, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  if (in.bad()) throw FileRefused{"cannot read it"};
+  text.resize(size_t(in.gcount()));
+  if (text.size() > maxBytes) throw FileRefused{fmt::format("larger than {} bytes", maxBytes)};
+  return parseLimited(text);
 }
 
 namespace {
@@ -171,26 +192,15 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
     return result;
   }
 
-  std::string text;
   Json root;
   try {
-    if (fs::file_size(path, ec) > kMaxSettingsBytes && !ec)
-      throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw NotSettings{fmt::format("cannot open it: {}", std::strerror(errno))};
-    // Read one byte past the limit, in case the file grew since file_size.
-    text.resize(kMaxSettingsBytes + 1);
-    in.read(text.data(), std::streamsize(text.size()));
-    if (in.bad()) throw NotSettings{"cannot read it"};
-    text.resize(size_t(in.gcount()));
-    if (text.size() > kMaxSettingsBytes) throw NotSettings{fmt::format("larger than {} bytes", kMaxSettingsBytes)};
-    root = parseLimited(text);
-    if (!root.is_object()) throw NotSettings{fmt::format("{} at the top, not an object", root.type_name())};
+    root = readJsonFile(path, kMaxSettingsBytes);
+    if (!root.is_object()) throw FileRefused{fmt::format("{} at the top, not an object", root.type_name())};
     if (root.contains("version") && root["version"] != kSettingsVersion)
-      throw NotSettings{fmt::format("version {}, this build reads version {}", root["version"].dump(), kSettingsVersion)};
-  } catch (const NotSettings& bad) {
+      throw FileRefused{fmt::format("version {}, this build reads version {}", root["version"].dump(), kSettingsVersion)};
+  } catch (const FileRefused& bad) {
     result.readable = false;
-    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) : "left as it is";
+    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) + "; starting from the defaults" : "left as it is";
     result.warnings.push_back(fmt::format("{} is not a settings file ({}); {}", where, bad.why, fallback));
     return result;
   }
@@ -250,7 +260,7 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor, Loa
     // not parse: the gallery, and above all the kiosk, must never be stopped by its own saved state.
     LoadResult result;
     result.readable = false;
-    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) : "left as it is";
+    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) + "; starting from the defaults" : "left as it is";
     result.warnings.push_back(fmt::format("{} could not be read ({}); {}", path.string(), e.what(), fallback));
     return result;
   }
@@ -295,6 +305,10 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
     if (!settings.audioDevice.empty()) live["audio_device"] = settings.audioDevice;
   }
 
+  writeJsonFile(path, out);
+}
+
+void writeJsonFile(const fs::path& path, const Json& out) {
   if (const fs::path folder = path.parent_path(); !folder.empty()) {
     std::error_code ec;
     fs::create_directories(folder, ec);

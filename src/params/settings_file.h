@@ -99,6 +99,35 @@ struct SettingsChanges {
 // left it, unknown keys included.
 Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChanges& changed);
 
+// What every reader of the user's own JSON files (settings, user presets) shares, so that each file is
+// judged by one set of rules.
+//
+// Why a file is not one of ours (not JSON, too large, nested too deep, the wrong shape): thrown by
+// readJsonFile and by the callers' own shape checks, caught where the file is judged.
+struct FileRefused {
+  std::string why;
+};
+// The JSON in `path`, at most `maxBytes` long and nested no deeper than any of our files; throws
+// FileRefused with the reason (never quoting the file's bytes, which may be binary).
+nlohmann::ordered_json readJsonFile(const std::filesystem::path& path, uintmax_t maxBytes);
+// Renames a refused file to "NAME.bad-YYYYMMDD-HHMMSS" beside it (then "-2", "-3" if taken), kept for a
+// look; returns what happened, as a clause ("moved it to ...", "could not be moved aside (...)").
+std::string moveAside(const std::filesystem::path& path);
+// Writes `json` (indented, one trailing newline) atomically, creating the folder; a symbolic link
+// stays one. Throws vitrine::Error.
+void writeJsonFile(const std::filesystem::path& path, const nlohmann::ordered_json& json);
+
+// One value that a scene's schema refused: its key, its JSON (cut short) and why.
+struct ValueProblem {
+  std::string key, value, why;
+};
+// One scene's values as the settings file holds them (an object of typed values), each checked by its
+// parameter's own parse on a default struct exactly as "--set key=text" is: the canonical text of each
+// good value is appended to `kept`, keys the schema does not know are copied into `unknown`, and every
+// refused value (a wrong JSON type, out of range, transient) is returned.
+std::vector<ValueProblem> checkSceneValues(const nlohmann::ordered_json& values, const Schema& schema,
+                                           KeyValues& kept, nlohmann::ordered_json& unknown);
+
 // A value as the settings file and the benchmark's JSON write it: Float/Int as numbers, Bool as
 // true/false, the rest (and a key no schema knows: param null) as its text.
 nlohmann::ordered_json typedValue(const Param* param, const std::string& text);

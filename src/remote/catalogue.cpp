@@ -1,5 +1,6 @@
 #include "remote/catalogue.h"
 
+#include "params/preset_store.h"
 #include "params/schema.h"
 #include "scenes/scene.h"
 
@@ -44,6 +45,13 @@ nlohmann::json paramJson(const params::Param& param) {
   return out;
 }
 
+// The scene's own presets, for the page's list (the user's are typed by name: they change while it runs).
+std::vector<std::string> presetNames(const params::Schema& schema) {
+  std::vector<std::string> names;
+  for (const params::Preset& preset : schema.presets()) names.push_back(preset.name);
+  return names;
+}
+
 std::string makeJson(const std::vector<const SceneInfo*>& scenes) {
   nlohmann::json list = nlohmann::json::array();
   for (const SceneInfo* scene : scenes) {
@@ -58,6 +66,7 @@ std::string makeJson(const std::vector<const SceneInfo*>& scenes) {
                     {"title", scene->title},
                     {"input", scene->input},
                     {"params", std::move(params)},
+                    {"presets", presetNames(scene->schema())},
                     {"actions", std::move(actions)}});
   }
   return nlohmann::json{{"scenes", std::move(list)}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -119,6 +128,12 @@ std::string Catalogue::check(const RemoteCommand& command) const {
     case Kind::Action:
       if (command.key.size() > kMaxNameLength) return fmt::format("{}: unknown action", scene->name);
       return checkAction(*scene, ActionCall{command.key, command.args});
+    case Kind::Preset:
+      // A new name must be one a preset may take; whether a named one exists is the host's to say.
+      if (command.key == "save")
+        if (std::string why = params::presetNameProblem(command.value, schema); !why.empty())
+          return fmt::format("{}: {}", scene->name, why);
+      return {};
     case Kind::Pointer:
     case Kind::Modulation: break;
   }

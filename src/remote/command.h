@@ -16,6 +16,7 @@ struct RemoteCommand {
     Action,   // scene's action `key` with `args` ("neon" "release" {x, y, z})
     Pointer,  // the current scene's cursor: `position` 0..1 from the top left, `down` while touching
     Modulation,  // live input's source osc.`key` = `args[0]` (/vitrine/mod/NAME)
+    Preset,   // the user's presets of `scene`: `key` "save", "apply" or "delete", `value` the preset's name
   };
   Kind kind = Kind::Scene;
   std::string scene;

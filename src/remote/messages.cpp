@@ -124,6 +124,25 @@ ParseResult pointerFromJson(const json& message) {
   return succeed(std::move(command));
 }
 
+bool presetOp(std::string_view op) { return op == "save" || op == "apply" || op == "delete"; }
+
+// A preset's name is judged by the catalogue (printable, not a built-in's); here only its size.
+ParseResult presetCommand(std::string op, std::string scene, std::string name) {
+  if (!plainName(scene)) return fail("preset: not a scene name");
+  if (name.empty() || name.size() > kMaxNameLength)
+    return fail(fmt::format("preset: a name of 1 to {} characters", kMaxNameLength));
+  return succeed({.kind = RemoteCommand::Kind::Preset, .scene = std::move(scene), .key = std::move(op), .value = std::move(name)});
+}
+
+ParseResult presetFromJson(const json& message) {
+  const auto op = message.find("op"), scene = message.find("scene"), name = message.find("name");
+  if (op == message.end() || !op->is_string() || !presetOp(op->get_ref<const std::string&>()))
+    return fail("\"op\" must be save, apply or delete");
+  if (scene == message.end() || !scene->is_string() || name == message.end() || !name->is_string())
+    return fail("\"scene\" and \"name\" must be strings");
+  return presetCommand(op->get<std::string>(), scene->get<std::string>(), name->get<std::string>());
+}
+
 // /vitrine/<a>/<b> split on '/': {"vitrine", a, b}. Empty segments ("//") are malformed.
 std::vector<std::string_view> pathSegments(std::string_view path) {
   std::vector<std::string_view> segments;
@@ -195,10 +214,11 @@ ParseResult parseSocketMessage(std::string_view text) {
     if (name == "set") return setFromJson(message);
     if (name == "action") return actionFromJson(message);
     if (name == "pointer") return pointerFromJson(message);
+    if (name == "preset") return presetFromJson(message);
   } catch (const std::exception& error) {  // a json accessor's type_error: a shape not foreseen above
     return fail(fmt::format("malformed message: {}", error.what()));
   }
-  return fail(fmt::format("unknown type '{}'; expected scene, set, action or pointer", name.substr(0, kMaxNameLength)));
+  return fail(fmt::format("unknown type '{}'; expected scene, set, action, pointer or preset", name.substr(0, kMaxNameLength)));
 }
 
 ParseResult commandFromOsc(std::string_view path, std::span<const OscArgument> args, const Catalogue& catalogue) {
@@ -221,6 +241,13 @@ ParseResult commandFromOsc(std::string_view path, std::span<const OscArgument> a
     const auto number = args.size() == 1 && isNumeric(args[0]) ? finiteFloat(args[0].number) : std::nullopt;
     if (!number) return fail(fmt::format("/vitrine/mod/{} expects one finite number, 0 to 1", segments[2]));
     return succeed({.kind = RemoteCommand::Kind::Modulation, .key = std::string(segments[2]), .args = {*number}});
+  }
+  if (segments[1] == "preset") {  // no scene is called "preset" either: the user's presets
+    if (!presetOp(segments[2])) return fail("/vitrine/preset/ takes save, apply or delete");
+    const auto isText = [](const OscArgument& arg) { return arg.type == 's' || arg.type == 'S'; };
+    if (args.size() != 2 || !isText(args[0]) || !isText(args[1]))
+      return fail(fmt::format("/vitrine/preset/{} expects two strings: the scene and the preset's name", segments[2]));
+    return presetCommand(std::string(segments[2]), args[0].text, args[1].text);
   }
   const std::string scene(segments[1]), name(segments[2]);
 

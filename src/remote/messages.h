@@ -8,12 +8,14 @@
 //   {"type":"set","scene":"kifs","key":"step","value":"3"}        (value: a string, number or boolean)
 //   {"type":"action","scene":"neon","name":"release","args":[0,1,2]}
 //   {"type":"pointer","x":0.4,"y":0.6,"down":true}
+//   {"type":"preset","op":"save","scene":"kifs","name":"evening"}   (op: save, apply or delete)
 // OSC (UDP):
 //   /vitrine/scene s                       switch scene
 //   /vitrine/<scene>/<param> f|i|h|d|s|T|F   set a parameter
 //   /vitrine/<scene>/<action> f|i...        run an action with numeric arguments
 //   /vitrine/pointer x y [down]            the cursor, 0..1 from the top left; down: T/F or a number
 //   /vitrine/mod/<name> f|i|h|d|T|F        live input's source osc.<name>, 0..1 (docs/LIVE.md)
+//   /vitrine/preset/<op> s s               save, apply or delete the user's preset: SCENE NAME
 #include "remote/catalogue.h"
 #include "remote/command.h"
 

@@ -83,6 +83,30 @@ TEST(Kiosk, AFailedIncomingSceneEndsItsFade) {
   EXPECT_EQ(run(kiosk, 10.5).lastBegun, 2u);
 }
 
+TEST(Kiosk, APlaylistShowsEachEntryForItsOwnDwell) {
+  KioskSchedule kiosk(std::vector<double>{3.0, 20.0, 6.0}, 0, kTiming);
+  EXPECT_EQ(run(kiosk, 2.9).begins, 0);
+  EXPECT_EQ(run(kiosk, 0.2).lastBegun, 1u);  // after 3 s, not kTiming's 10
+  run(kiosk, 2.0);
+  EXPECT_EQ(kiosk.current(), 1u);
+  EXPECT_EQ(run(kiosk, 19.8).begins, 0);  // entry 1 dwells 20 s
+  EXPECT_EQ(run(kiosk, 0.3).lastBegun, 2u);
+  run(kiosk, 2.0 + 6.1);
+  EXPECT_EQ(kiosk.incoming(), 0u);  // and round again after entry 2's 6 s
+}
+
+TEST(Kiosk, APlaylistSkipsAFailedEntryAndStillHoldsOnATouch) {
+  KioskSchedule kiosk(std::vector<double>{3.0, 3.0, 3.0}, 0, kTiming);
+  kiosk.failed(1);
+  run(kiosk, 3.1);
+  EXPECT_EQ(kiosk.incoming(), 2u);
+  run(kiosk, 2.0);
+  run(kiosk, 30.0, /*touched=*/true);
+  EXPECT_EQ(kiosk.current(), 2u);  // held
+  EXPECT_EQ(run(kiosk, 7.9).begins, 0);  // 5 s idle + 3 s dwell
+  EXPECT_EQ(run(kiosk, 0.2).lastBegun, 0u);
+}
+
 TEST(Kiosk, OneSceneNeverFades) {
   KioskSchedule kiosk(1, 0, kTiming);
   EXPECT_EQ(run(kiosk, 100.0).begins, 0);

@@ -159,11 +159,11 @@ TEST(OptionsModes, LiveInputFlags) {
 
 TEST(OptionsModes, AFlagGivenTwiceIsRefusedUnlessRepeatable) {
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--scene", "neon", "--out", "x.exr"}),
-            "--scene is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
+            "--scene is given twice; only --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "a.exr", "--out", "b.exr"}),
-            "--out is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
+            "--out is given twice; only --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--validate", "--validate"}),
-            "--validate is given twice; only --set, --preset, --map and --remote-allow may be given more than once.");
+            "--validate is given twice; only --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", "step=2", "--set", "step=3",
                      "--preset", "a", "--preset", "b"}),
             "accepted");
@@ -208,6 +208,30 @@ TEST(OptionsSettings, PresetsAreRepeatableAndMayNameTheirScene) {
     EXPECT_EQ(refusal({"--preset", bad}), fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", bad));
   EXPECT_EQ(refusal({"--preset", "nope.calm"}),
             "Unknown scene 'nope' in --preset nope.calm; vitrine --list-scenes shows them.");
+}
+
+// The user's presets: files applied in every run mode, saved by headless runs, exported on their own;
+// the kiosk's playlist.
+TEST(OptionsSettings, PresetFilesSavingAndExporting) {
+  const auto o = parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--preset-file", "a.json", "--preset-file",
+                        "b.json", "--save-preset", "evening look"});
+  EXPECT_EQ(o.presetFiles, (std::vector<std::string>{"a.json", "b.json"}));
+  EXPECT_EQ(o.savePreset, "evening look");
+  EXPECT_EQ(refusal({"--save-preset", "x"}), "--save-preset is only for --headless runs, not the gallery.");
+  const auto e = parse({"--export-preset", "kifs.evening look", "--out", "e.json"});
+  EXPECT_EQ(e.mode, Mode::ExportPreset);
+  EXPECT_EQ(e.exportPreset, (SceneSetting{"kifs", "evening look", ""}));
+  EXPECT_EQ(e.out, "e.json");
+  EXPECT_EQ(refusal({"--export-preset", "x"}), "--export-preset needs --out FILE.json, where the preset's file is written.");
+}
+
+TEST(OptionsGallery, APlaylistIsTheKiosks) {
+  EXPECT_EQ(parse({"--kiosk", "--playlist", "p.txt"}).playlist, "p.txt");
+  EXPECT_EQ(refusal({"--playlist", "p.txt"}), "--playlist is the kiosk's: give --kiosk too.");
+  EXPECT_EQ(refusal({"--kiosk", "--playlist", "p.txt", "--dwell", "5"}),
+            "--dwell and --playlist both say how long a scene shows: the playlist gives each line's dwell.");
+  EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--playlist", "p.txt"}),
+            "--playlist is only for the gallery, not --headless.");
 }
 
 // ------------------------------------------------------------------------------------- --list-params

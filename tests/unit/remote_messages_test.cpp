@@ -200,5 +200,43 @@ TEST(RemoteMessages, OscWrongTypesAndAddressesAreRefused) {
   refused("/vitrine/ki fs/step", {number('i', 3)});
 }
 
+// The user's presets: /vitrine/preset/<op> SCENE NAME and {"type":"preset",...}, a new name judged by
+// the catalogue exactly as the panel judges it.
+TEST(RemoteMessages, PresetCommandsOverOscAndTheSocket) {
+  const Catalogue catalogue;
+  const std::vector<OscArgument> evening{text("kifs"), text("evening look")};
+  for (const std::string op : {"save", "apply", "delete"}) {
+    const ParseResult result = commandFromOsc("/vitrine/preset/" + op, evening, catalogue);
+    ASSERT_TRUE(result.command) << op << ": " << result.error;
+    EXPECT_EQ(result.command->kind, Kind::Preset);
+    EXPECT_EQ(result.command->scene, "kifs");
+    EXPECT_EQ(result.command->key, op);
+    EXPECT_EQ(result.command->value, "evening look");
+    EXPECT_EQ(catalogue.check(*result.command), "");
+  }
+  EXPECT_FALSE(commandFromOsc("/vitrine/preset/rename", evening, catalogue).command);
+  for (const std::vector<OscArgument>& wrong : {std::vector<OscArgument>{text("kifs")},
+                                                 std::vector<OscArgument>{text("kifs"), number('i', 3)},
+                                                 std::vector<OscArgument>{text("kifs"), text("")}})
+    EXPECT_FALSE(commandFromOsc("/vitrine/preset/save", wrong, catalogue).command);
+
+  const auto socket = parsed(R"({"type":"preset","op":"apply","scene":"kifs","name":"sphere"})");
+  EXPECT_EQ(socket.kind, Kind::Preset);
+  EXPECT_EQ(socket.key, "apply");
+  EXPECT_EQ(socket.value, "sphere");
+  EXPECT_EQ(catalogue.check(socket), "") << "a built-in preset may be applied";
+  EXPECT_NE(refusal(R"({"type":"preset","op":"drop","scene":"kifs","name":"x"})").find("save, apply or delete"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"preset","op":"save","scene":"kifs"})").find("\"name\""), std::string::npos);
+
+  // Saving under a built-in name, or a name no --preset could spell, is refused before the host sees it.
+  const auto clash = parsed(R"({"type":"preset","op":"save","scene":"kifs","name":"sphere"})");
+  EXPECT_NE(catalogue.check(clash).find("one of the scene's own presets"), std::string::npos);
+  const auto dotted = parsed(R"({"type":"preset","op":"save","scene":"kifs","name":"a.b"})");
+  EXPECT_NE(catalogue.check(dotted).find("'.'"), std::string::npos);
+  const auto nowhere = parsed(R"({"type":"preset","op":"save","scene":"nowhere","name":"x"})");
+  EXPECT_NE(catalogue.check(nowhere).find("unknown scene"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace vitrine::remote
