@@ -34,7 +34,6 @@ struct HostFlashDecidePush {
 };
 
 struct HostFlashPresentPush {
-  uint encodeSrgb;    // as present_push.h's
   float fade;         // as present_push.h's
   uint historyValid;  // zero: the held image has no earlier frame, show this one as it is
 };

@@ -15,15 +15,14 @@ FlashGuard::FlashGuard(const gpu::Device& device, gpu::ProgramLibrary& programs)
       state_(device, sizeof(shader::HostFlashGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device,
              "flash guard state") {}
 
-void FlashGuard::present(VkCommandBuffer cmd, const GuardSources& sources, const GuardOutput& output, double time) {
-  const VkExtent2D extent = output.extent;
+gpu::Image& FlashGuard::guard(VkCommandBuffer cmd, const GuardSources& sources, VkExtent2D extent, double time) {
   bool fresh = !(time >= lastTime_);  // the first frame, or time went back: no history to count against
   if (!held_ || held_.extent2d().width != extent.width || held_.extent2d().height != extent.height) {
     if (held_) device_.retire(std::move(held_));  // the frame in flight may still read it
     gpu::ImageDesc desc;
     desc.extent = {extent.width, extent.height, 1};
     desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;  // measured, then presented
     held_ = gpu::Image(device_, desc, "flash guard held frame");
     fresh = true;
   }
@@ -58,12 +57,12 @@ void FlashGuard::present(VkCommandBuffer cmd, const GuardSources& sources, const
   show_.bind(cmd);
   show_.push(cmd, gpu::Bindings()
                       .sampledImage("source", sources.source, linear, sampled)
-                      .storageImage("destination", output.view)
                       .sampledImage("incoming", sources.incoming, linear, sampled)
                       .storageImage("held", held_.view())
                       .storageBuffer("FlashGuard", state_.handle()));
-  show_.constants(cmd, shader::HostFlashPresentPush{output.encodeSrgb ? 1u : 0u, sources.fade, fresh ? 0u : 1u});
+  show_.constants(cmd, shader::HostFlashPresentPush{sources.fade, fresh ? 0u : 1u});
   show_.dispatchOver(cmd, extent);
+  return held_;
 }
 
 }  // namespace vitrine::host

@@ -24,20 +24,14 @@ struct GuardSources {
   float fade = 0.0f;
 };
 
-// The output: an image with storage usage, already in use::ComputeWrite.
-struct GuardOutput {
-  VkImageView view = VK_NULL_HANDLE;
-  VkExtent2D extent{0, 0};
-  bool encodeSrgb = false;
-};
-
 class FlashGuard {
  public:
   FlashGuard(const gpu::Device& device, gpu::ProgramLibrary& programs);
 
-  // The present pass with the guard, for the frame showing simulation time `time` (seconds; a time
-  // before the last frame's, a new scene's, starts the guard afresh).
-  void present(VkCommandBuffer cmd, const GuardSources& sources, const GuardOutput& output, double time);
+  // The guarded frame of `extent` pixels, for the frame showing simulation time `time` (seconds; a time
+  // before the last frame's, a new scene's, starts the guard afresh): the image every output presents,
+  // which the guard keeps to measure the next frame against. Valid until the next call.
+  gpu::Image& guard(VkCommandBuffer cmd, const GuardSources& sources, VkExtent2D extent, double time);
   // Forget what was shown: the next frame is shown as it is (a new scene in the gallery counts from it).
   void reset() { lastTime_ = std::numeric_limits<double>::quiet_NaN(); }
 
@@ -47,7 +41,7 @@ class FlashGuard {
   gpu::ComputeProgram decide_;
   gpu::ComputeProgram show_;
   gpu::Buffer state_;  // shader::HostFlashGuardState
-  gpu::Image held_;    // what was shown last frame, linear, at the output's size
+  gpu::Image held_;    // what was shown last frame, linear, at the frame's size
   double lastTime_ = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -148,23 +148,11 @@ bool SceneRenderer::canPresent(const BlitDestination& dst) const {
 // output of this frame shows, so one guard covers them all whatever their warps.
 gpu::Image& SceneRenderer::guardFrame(VkCommandBuffer cmd, const Crossfade& fade, double time) {
   gpu::Pass pass(device_, &timer_, cmd, "flash guard");
-  const VkExtent2D size = target_.extent2d();
-  if (!guarded_ || guarded_.extent2d().width != size.width || guarded_.extent2d().height != size.height) {
-    if (guarded_) device_.retire(std::move(guarded_));
-    gpu::ImageDesc desc;
-    desc.extent = {size.width, size.height, 1};
-    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    guarded_ = gpu::Image(device_, desc, "flash-guarded frame");
-  }
   target_.use(cmd, gpu::use::ComputeSample);
   gpu::Image& other = fade.other ? *fade.other : target_;
   if (fade.other) other.use(cmd, gpu::use::ComputeSample);
-  guarded_.discard();  // every texel is written
-  guarded_.use(cmd, gpu::use::ComputeWrite);
-  guard_->present(cmd, GuardSources{target_.view(), other.view(), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f},
-                  GuardOutput{guarded_.view(), size, false}, time);
-  return guarded_;
+  return guard_->guard(cmd, GuardSources{target_.view(), other.view(), fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f},
+                       target_.extent2d(), time);
 }
 
 void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, gpu::Image& frame, const Crossfade& fade) {

@@ -113,7 +113,6 @@ class SceneRenderer {
   std::unique_ptr<gpu::FrameResources> resources_;
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;
-  gpu::Image guarded_;            // the flash guard's frame (guardFrame), when the guard is on
   gpu::Image* shown_ = nullptr;   // this frame's guarded frame, which every output shows; null: the target
   VkExtent2D sceneExtent_{0, 0};  // what the scene and its images were last sized for
 };
