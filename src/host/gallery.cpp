@@ -108,6 +108,14 @@ class Gallery {
   void handleKeys();
   void startSetup();
   void endSetup(ProjectorSetup::Key how);
+  // Outputs by number: 0 the main window, then --outputs' windows in order.
+  maths::OutputWarp& warpOf(size_t output);
+  std::string_view outputName(size_t output) const { return output == 0 ? kMainOutput : outputs_[output - 1]->name(); }
+  VkExtent2D outputExtent(size_t output) const { return output == 0 ? swapchain_.extent() : outputs_[output - 1]->extent(); }
+  // How the main window shows the frame: its own warp, or the one of the output being set up.
+  const maths::OutputWarp* shownWarp() { return setup_.active() && setupOutput_ > 0 ? &warpOf(setupOutput_) : warp(); }
+  std::optional<maths::OutputWarp> savedWarp(std::string_view output);
+  void keepWarp(size_t output);
   void switchScene(const SceneInfo& info);
   void simulate();
   void collect(uint32_t slot);
@@ -170,6 +178,8 @@ class Gallery {
   bool helpShown_ = false;
   ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
   const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
+  size_t setupOutput_ = 0;                  // the output whose pin setup moves
+  static constexpr std::string_view kMainOutput = "main";  // the main window's name in the settings file
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
@@ -248,10 +258,13 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   }
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   if (!options.outputs.empty()) {
-    const std::vector<OutputPlacement> placements = readOutputs(options.outputs);
-    for (size_t i = 0; i < placements.size(); ++i)
+    std::vector<OutputPlacement> placements = readOutputs(options.outputs);
+    for (size_t i = 0; i < placements.size(); ++i) {
+      if (!placements[i].warp) placements[i].warp = savedWarp(placements[i].name);
       outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
+    }
   }
+  if (!warp_) warp_ = savedWarp(kMainOutput);  // a file named on the command line wins
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
@@ -336,7 +349,7 @@ void Gallery::handleKeys() {
   for (int key : keys) {
     if (kiosk_ && !kioskAllows(key)) continue;
     if (setup_.active()) {  // its keys are setup's: Esc undoes the pin rather than closing the gallery
-      const ProjectorSetup::Key used = setup_.key(key, shift, swapchain_.extent(), *warp_);
+      const ProjectorSetup::Key used = setup_.key(key, shift, outputExtent(setupOutput_), warpOf(setupOutput_));
       if (used != ProjectorSetup::Key::Ignored) {
         if (used != ProjectorSetup::Key::Used) endSetup(used);
         continue;
@@ -565,19 +578,19 @@ void Gallery::frame() {
   simulate();
   showMenu();
   showToast();
-  setup_.draw(warp_ ? *warp_ : maths::OutputWarp{}, swapchain_.extent());
+  if (setup_.active()) setup_.draw(warpOf(setupOutput_), swapchain_.extent(), outputName(setupOutput_), outputs_.size() + 1);
   handleKeys();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
   Crossfade fade;
   if (incoming_ && incoming_->hasScene()) {  // kiosk mode's cross-fade: both scenes run and draw
-    incoming_->recordTarget(cmd, slot, incomingShown_, frameExtent(swapchain_.extent(), warp()));
+    incoming_->recordTarget(cmd, slot, incomingShown_, frameExtent(swapchain_.extent(), shownWarp()));
     fade = {&incoming_->target(), fade_};
   }
   renderer_->setFlashGuard(flashGuard_ ? &guard_ : nullptr);
   renderer_->record(cmd, slot, shown_,
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
-                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, warp()},
+                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, shownWarp()},
                     fade);
   if (screenshots_.requested() || capture_.active()) {
     recordWindowCopy(cmd);
@@ -639,7 +652,7 @@ void Gallery::simulate() {
     remote_->publish(*renderer_);
   }
   if (kiosk_) kioskStep(elapsed, touched);
-  if (setup_.active()) setup_.pointer(pointer, *warp_);
+  if (setup_.active()) setup_.pointer(pointer, warpOf(setupOutput_));
   cursor_.observe(pointer, setup_.active() || (!uiHidden_ && overlay_.wantsMouse()));  // setup's mouse is not the scene's
   // Every step that is due, unless a step costs more than the time it stands for (StepCost).
   const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed), renderer_->scene().takeGivenUpSeconds());
@@ -712,8 +725,8 @@ void Gallery::showMenu() {
 // Projector setup shows the calibration card, when this build has one, and the UI it needs.
 void Gallery::startSetup() {
   if (setup_.active()) return;
-  if (!warp_) warp_.emplace();
-  setup_.start(*warp_);
+  setupOutput_ = 0;
+  setup_.start(warpOf(0));
   if (const SceneInfo* card = findScene("calibrate"); card && card != &renderer_->info())
     beforeSetup_ = &renderer_->info(), nextScene_ = card;
   note_ = "projector setup";
@@ -721,16 +734,49 @@ void Gallery::startSetup() {
 }
 
 void Gallery::endSetup(ProjectorSetup::Key how) {
-  if (how == ProjectorSetup::Key::Kept && !warpFile_.empty()) {
-    const std::string text = outputWarpToJson(*warp_).dump(2) + "\n";
+  if (how != ProjectorSetup::Key::Undone) keepWarp(setupOutput_);
+  else note_ = fmt::format("projector setup of {} undone", outputName(setupOutput_)), noted_ = Clock::now();
+  if (how == ProjectorSetup::Key::Next) {  // F7 again: the next output's pin, the card still showing
+    setupOutput_ = (setupOutput_ + 1) % (outputs_.size() + 1);
+    setup_.start(warpOf(setupOutput_));
+    return;
+  }
+  if (beforeSetup_) nextScene_ = std::exchange(beforeSetup_, nullptr);
+}
+
+maths::OutputWarp& Gallery::warpOf(size_t output) {
+  if (output > 0) return outputs_[output - 1]->warp();
+  if (!warp_) warp_.emplace();
+  return *warp_;
+}
+
+// An output's warp as the settings file keeps it (projector setup's last kept pin); one the file holds
+// but this build refuses is a warning, and the output shows the whole frame.
+std::optional<maths::OutputWarp> Gallery::savedWarp(std::string_view output) {
+  const nlohmann::ordered_json* saved = settings_.warpFor(output);
+  if (!saved) return std::nullopt;
+  try {
+    return outputWarpFromJson(nlohmann::json::parse(saved->dump()),
+                              fmt::format("{}: outputs.{}", settings_.path().string(), output));
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vitrine: settings: %s; showing the whole frame there\n", e.what());
+    return std::nullopt;
+  }
+}
+
+// A kept pin goes to the settings file under the output's name, and for the main window also to
+// --output-warp's file when one was given (which wins over the settings at the next start).
+void Gallery::keepWarp(size_t output) {
+  const maths::OutputWarp& warp = warpOf(output);
+  settings_.setWarp(outputName(output), warp.isIdentity() ? nlohmann::ordered_json() : nlohmann::ordered_json(outputWarpToJson(warp)),
+                    Clock::now());
+  note_ = fmt::format("projector setup of {} kept in the settings", outputName(output));
+  if (output == 0 && !warpFile_.empty()) {
+    const std::string text = outputWarpToJson(warp).dump(2) + "\n";
     writeFileAtomically(warpFile_, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
-    note_ = fmt::format("projector setup kept in {}", warpFile_);
-  } else {
-    note_ = how == ProjectorSetup::Key::Kept ? "projector setup kept for this run (--output-warp FILE keeps it)"
-                                             : "projector setup undone";
+    note_ = fmt::format("projector setup of {} kept in {} and the settings", outputName(output), warpFile_);
   }
   noted_ = Clock::now();
-  if (beforeSetup_) nextScene_ = std::exchange(beforeSetup_, nullptr);
 }
 
 void Gallery::showToast() {

@@ -105,6 +105,20 @@ void GallerySettings::setAudioInput(bool on, std::string device, Clock::time_poi
   saver_.markDirty(now);
 }
 
+const nlohmann::ordered_json* GallerySettings::warpFor(std::string_view output) const {
+  const auto it = settings_.outputs.find(std::string(output));
+  return it == settings_.outputs.end() ? nullptr : &it->second;
+}
+
+void GallerySettings::setWarp(std::string_view output, nlohmann::ordered_json warp, Clock::time_point now) {
+  const nlohmann::ordered_json* had = warpFor(output);
+  if (had ? *had == warp : warp.empty()) return;
+  if (warp.empty()) settings_.outputs.erase(std::string(output));
+  else settings_.outputs[std::string(output)] = std::move(warp);
+  changes_.outputs.insert(std::string(output));
+  saver_.markDirty(now);
+}
+
 void GallerySettings::tick(Clock::time_point now) {
   if (saver_.due(now)) save();
 }

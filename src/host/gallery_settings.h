@@ -40,6 +40,10 @@ class GallerySettings {
   bool audioInput() const { return settings_.audioInput; }
   const std::string& audioDevice() const { return settings_.audioDevice; }
   void setAudioInput(bool on, std::string device, Clock::time_point now);
+  // Outputs: each one's warp as the file keeps it (null when it has none), checked by whoever applies
+  // it; an empty (identity) warp removes the entry.
+  const nlohmann::ordered_json* warpFor(std::string_view output) const;
+  void setWarp(std::string_view output, nlohmann::ordered_json warp, Clock::time_point now);
   void tick(Clock::time_point now);  // writes when a burst of changes has settled
   void flush();                      // writes now if anything is unsaved
 

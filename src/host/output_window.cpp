@@ -33,11 +33,18 @@ std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
         output.window = std::array<int, 4>{value[0], value[1], value[2], value[3]};
       else if (key == "warp")
         output.warp = outputWarpFromJson(value, where);
+      else if (key == "name" && value.is_string() && !value.get<std::string>().empty())
+        output.name = value.get<std::string>();
       else
         throw Error(fmt::format("{}: \"{}\" is not one of monitor (an index or a name), window ([x, y, width, "
-                                "height]) and warp",
+                                "height]), warp and name (a text)",
                                 where, key));
     }
+    if (output.name.empty()) output.name = output.monitor.empty() ? fmt::format("output {}", i + 1) : output.monitor;
+    if (output.name == "main") throw Error(fmt::format("{}: \"main\" is the main window's name", where));
+    for (const OutputPlacement& other : outputs)
+      if (other.name == output.name)
+        throw Error(fmt::format("{}: another output is named \"{}\" (give each a \"name\")", where, output.name));
     if (output.window && ((*output.window)[2] <= 0 || (*output.window)[3] <= 0))
       throw Error(fmt::format("{}: a window has a width and a height above 0", where));
     if (output.window && !output.monitor.empty())
@@ -50,7 +57,7 @@ std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
 
 OutputWindow::OutputWindow(const gpu::Instance& instance, const gpu::Device& device, const OutputPlacement& placement,
                            bool vsync, uint32_t framesInFlight, int index)
-    : device_(device), warp_(placement.warp) {
+    : device_(device), warp_(placement.warp.value_or(maths::OutputWarp{})), name_(placement.name) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);  // a projector shows the picture, not a title bar
   glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);

@@ -20,13 +20,15 @@ struct GLFWwindow;
 namespace vitrine::host {
 
 // Where an output goes and how it shows the frame: one entry of --outputs FILE.json,
-//   [{"monitor": "1", "warp": {"region": [0.5, 0, 1, 1]}}, {"window": [1280, 0, 640, 360]}]
+//   [{"monitor": "1", "warp": {"region": [0.5, 0, 1, 1]}}, {"window": [1280, 0, 640, 360], "name": "left"}]
 // "monitor" (an index or part of a name): fullscreen there; "window": [x, y, width, height] on the
-// desktop, without a frame. One of the two; "warp" as in --output-warp.
+// desktop, without a frame. One of the two; "warp" as in --output-warp. "name": what the settings file
+// keeps this output's warp under (projector setup's pin): by default its monitor, else "output N".
 struct OutputPlacement {
   std::string monitor;
   std::optional<std::array<int, 4>> window;
-  maths::OutputWarp warp;
+  std::optional<maths::OutputWarp> warp;  // none given: the settings file's, else the identity
+  std::string name;
 };
 // Throws vitrine::Error naming the file and the entry.
 std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file);
@@ -49,7 +51,9 @@ class OutputWindow {
   // The acquired image as the present pass's destination, first used at `acquireStage`.
   BlitDestination destination(VkPipelineStageFlags2 acquireStage) const;
   void present();
-  const maths::OutputWarp& warp() const { return warp_; }
+  maths::OutputWarp& warp() { return warp_; }
+  const std::string& name() const { return name_; }
+  VkExtent2D extent() const { return swapchain_->extent(); }
 
  private:
   const gpu::Device& device_;
@@ -59,6 +63,7 @@ class OutputWindow {
   std::vector<gpu::Unique<VkSemaphore>> acquired_;  // one a frame slot
   std::optional<uint32_t> image_;
   maths::OutputWarp warp_;
+  std::string name_;
 };
 
 }  // namespace vitrine::host

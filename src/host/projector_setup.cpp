@@ -1,6 +1,7 @@
 #include "host/projector_setup.h"
 
 #include <GLFW/glfw3.h>
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <imgui.h>
 
@@ -45,6 +46,7 @@ ProjectorSetup::Key ProjectorSetup::key(int key, bool shift, VkExtent2D output, 
       warp = before_;
       active_ = false;
       return Key::Undone;
+    case GLFW_KEY_F7: active_ = false; return Key::Next;
     case GLFW_KEY_TAB: selected_ = (selected_ + 1) % 4; return Key::Used;
     case GLFW_KEY_LEFT: step.x = -pixel.x; break;
     case GLFW_KEY_RIGHT: step.x = pixel.x; break;
@@ -56,7 +58,7 @@ ProjectorSetup::Key ProjectorSetup::key(int key, bool shift, VkExtent2D output, 
   return Key::Used;
 }
 
-void ProjectorSetup::draw(const maths::OutputWarp& warp, VkExtent2D output) const {
+void ProjectorSetup::draw(const maths::OutputWarp& warp, VkExtent2D output, std::string_view name, size_t outputs) const {
   if (!active_) return;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImU32 line = IM_COL32(255, 214, 120, 230), shade = IM_COL32(0, 0, 0, 160);
@@ -69,8 +71,11 @@ void ProjectorSetup::draw(const maths::OutputWarp& warp, VkExtent2D output) cons
     draw->AddCircleFilled(points[i], radius + 2.0f, shade);
     draw->AddCircle(points[i], radius, line, 0, i == held_ ? 4.0f : 2.0f);
   }
-  const char* help = "PROJECTOR SETUP\ndrag each corner onto the screen's corner\narrows nudge it (Shift: 10 px), "
-                     "Tab: the next\nEnter keeps the pin, Esc undoes it";
+  const std::string text = fmt::format(
+      "PROJECTOR SETUP: {}\ndrag each corner onto the screen's corner\narrows nudge it (Shift: 10 px), "
+      "Tab: the next\nEnter keeps the pin, Esc undoes it{}",
+      name, outputs > 1 ? "\nF7 keeps it and sets up the next output" : "");
+  const char* help = text.c_str();
   const ImVec2 size = ImGui::CalcTextSize(help);
   const ImVec2 at((float(output.width) - size.x) * 0.5f, float(output.height) * 0.5f - size.y);
   draw->AddRectFilled(ImVec2(at.x - 8, at.y - 6), ImVec2(at.x + size.x + 8, at.y + size.y + 6), shade, 4.0f);

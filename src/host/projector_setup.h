@@ -3,12 +3,14 @@
 // it is on, the mouse moves corners instead of playing the scene: a press near a corner takes it and
 // dragging moves it; the arrow keys nudge the corner last taken by a pixel (ten with Shift); Enter keeps
 // the pin, Esc puts back the one setup started with. A move that would make the picture's outline cross
-// itself or fold is not taken, so the pin can always be shown. Pure logic on the warp; the gallery draws
-// the handles and keeps the result.
+// itself or fold is not taken, so the pin can always be shown. With more outputs, F7 keeps this one's pin
+// and goes on to the next (the main window then shows what that output shows, to drag on). Pure logic
+// on the warp; the gallery draws the handles and keeps the result.
 #include "host/pointer.h"
 #include "maths/output_warp.h"
 
 #include <optional>
+#include <string_view>
 
 namespace vitrine::host {
 
@@ -22,13 +24,15 @@ class ProjectorSetup {
   // The mouse this frame, over an output of pointer.framebuffer pixels; moves the corner held.
   void pointer(const Pointer& pointer, maths::OutputWarp& warp);
 
-  enum class Key { Ignored, Used, Kept, Undone };
-  // A key pressed (a GLFW key code), `shift` held. Kept and Undone end setup; Undone has put the warp back.
+  enum class Key { Ignored, Used, Kept, Undone, Next };
+  // A key pressed (a GLFW key code), `shift` held, over an output of `output` pixels. Kept and Undone end
+  // setup; Undone has put the warp back. Next (F7) keeps this pin: the caller start()s the next output's.
   Key key(int key, bool shift, VkExtent2D output, maths::OutputWarp& warp);
 
   // The handles over the output (Dear ImGui, between the overlay's beginFrame and its record): the
   // picture's outline, its four corners (the one the arrows move larger) and what the keys do.
-  void draw(const maths::OutputWarp& warp, VkExtent2D output) const;
+  // `name`: the output being set up, `outputs`: how many there are (F7's hint shows with more than one).
+  void draw(const maths::OutputWarp& warp, VkExtent2D output, std::string_view name, size_t outputs) const;
 
   std::optional<int> held() const { return held_; }
   int selected() const { return selected_; }

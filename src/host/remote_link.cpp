@@ -96,6 +96,7 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
         lastTouch_ = Clock::now();
         break;
     }
+    if (!refused.empty()) control_.tell(command.client, refused);
     if (!refused.empty() && (++refused_ <= kRefusalsLogged || refused_ % 100 == 0))
       std::fprintf(stderr, "vitrine: remote %s refused: %s (%zu refused so far)\n", command.client.c_str(),
                    refused.c_str(), refused_);
@@ -161,7 +162,10 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
   const auto at = Clock::now();
   if (!now && at - lastPublish_ < kPublishInterval) return;
   lastPublish_ = at;
-  control_.publish(std::string(renderer.info().name), params::snapshot(renderer.parameters()), mappings_);
+  std::vector<std::string> userPresets;
+  if (presets_)
+    for (const params::UserPreset* preset : presets_->presetsOf(renderer.info().name)) userPresets.push_back(preset->name);
+  control_.publish({std::string(renderer.info().name), params::snapshot(renderer.parameters()), mappings_, std::move(userPresets)});
 }
 
 }  // namespace vitrine::host

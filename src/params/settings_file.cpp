@@ -243,6 +243,11 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
         else if (name == "audio_device" && item.is_string()) settings.audioDevice = item.get<std::string>();
         else settings.unknown["live"][name] = item;
       }
+    } else if (key == "outputs" && value.is_object()) {
+      for (const auto& [name, warp] : value.items()) {
+        if (warp.is_object()) settings.outputs[name] = warp;
+        else result.warnings.push_back(fmt::format("{}: outputs.{}: expected an object, found {}; dropped", where, name, warp.type_name()));
+      }
     } else {
       settings.unknown[key] = value;
     }
@@ -304,6 +309,11 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
     live["audio_input"] = settings.audioInput;
     if (!settings.audioDevice.empty()) live["audio_device"] = settings.audioDevice;
   }
+  if (!settings.outputs.empty()) {
+    Json& outputs = out["outputs"];
+    if (!outputs.is_object()) outputs = Json::object();
+    for (const auto& [name, warp] : settings.outputs) outputs[name] = warp;
+  }
 
   writeJsonFile(path, out);
 }
@@ -364,6 +374,11 @@ Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChange
     else disk.mappings[scene] = mine->second;
   }
   if (changed.live) disk.audioInput = ours.audioInput, disk.audioDevice = ours.audioDevice;
+  for (const std::string& output : changed.outputs) {
+    const auto mine = ours.outputs.find(output);
+    if (mine == ours.outputs.end()) disk.outputs.erase(output);
+    else disk.outputs[output] = mine->second;
+  }
   return disk;
 }
 

@@ -7,7 +7,7 @@
 //   remote::RemoteControl remote({.address = "127.0.0.1", .port = 8730});
 //   std::printf("Remote control: %s\n", remote.pageUrl().c_str());
 //   each frame:  for (auto& command : remote.drain()) apply(command);   // then, if anything changed:
-//                remote.publish(scene.name, params::snapshot(bound));
+//                remote.publish({scene.name, params::snapshot(bound)});
 #include "params/schema.h"
 #include "remote/bind_address.h"
 #include "remote/catalogue.h"
@@ -49,8 +49,11 @@ class RemoteControl {
   const Catalogue& catalogue() const { return *catalogue_; }
 
   std::vector<RemoteCommand> drain() { return inbox_.drain(); }
-  void publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings = {}) {
-    web_->publish(std::move(scene), std::move(values), std::move(mappings));
+  void publish(PageState state) { web_->publish(std::move(state)); }
+  // Why the gallery refused a client's command, told to that client where it can be (a page; an OSC
+  // controller has no reply channel: the host logs it).
+  void tell(const std::string& client, std::string reason) {
+    if (client.starts_with("ws ")) web_->tell(client, std::move(reason));
   }
   RemoteStatsSnapshot stats() const { return stats_.snapshot(); }
   size_t sockets() const { return web_->sockets(); }

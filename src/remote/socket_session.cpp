@@ -72,11 +72,14 @@ void SocketSession::onRead(beast::error_code error, size_t) {
   read();
 }
 
+void SocketSession::refuse(const std::string& reason) {
+  reply(nlohmann::json{{"type", "refused"}, {"reason", reason}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
 void SocketSession::handle(std::string_view text) {
   const auto refuse = [&](std::atomic<uint64_t>& counter, const std::string& why) {
     count(counter);
-    reply(nlohmann::json{{"type", "refused"}, {"reason", why}}.dump(-1, ' ', false,
-                                                                    nlohmann::json::error_handler_t::replace));
+    this->refuse(why);
   };
   ParseResult parsed = parseSocketMessage(text);
   if (!parsed.command) return refuse(hub_.stats.malformed, parsed.error);

@@ -26,6 +26,9 @@ class SocketSession : public std::enable_shared_from_this<SocketSession> {
   void accept(boost::beast::http::request<boost::beast::http::string_body> request);
   // A state push: replaces any state still waiting in the queue.
   void sendState(std::shared_ptr<const std::string> state);
+  // Tells the page why its command was refused ({"type":"refused","reason":...}).
+  void refuse(const std::string& reason);
+  const std::string& client() const { return client_; }  // "ws ADDRESS:PORT"
 
  private:
   struct Outgoing {

@@ -97,12 +97,13 @@ struct WebServer::Impl {
   }
 
   // On the I/O thread: the state as JSON, sent to every open socket unless unchanged.
-  void broadcast(const std::string& scene, const params::KeyValues& values, const std::vector<std::string>& mappings) {
+  void broadcast(const PageState& page) {
     nlohmann::json object = nlohmann::json::object();
-    for (const auto& [key, text] : values) object[key] = text;
+    for (const auto& [key, text] : page.values) object[key] = text;
     auto state = std::make_shared<const std::string>(
-        nlohmann::json{{"type", "state"}, {"scene", scene}, {"values", std::move(object)}, {"mappings", mappings}}.dump(
-            -1, ' ', false, nlohmann::json::error_handler_t::replace));
+        nlohmann::json{{"type", "state"}, {"scene", page.scene}, {"values", std::move(object)},
+                       {"mappings", page.mappings}, {"user_presets", page.userPresets}}
+            .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     if (hub.lastState && *hub.lastState == *state) return;
     hub.lastState = state;
     for (SocketSession* socket : hub.openSockets) socket->sendState(state);
@@ -117,9 +118,15 @@ WebServer::~WebServer() = default;
 
 uint16_t WebServer::port() const { return impl_->port; }
 
-void WebServer::publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings) {
-  net::post(impl_->io, [impl = impl_.get(), scene = std::move(scene), values = std::move(values),
-                        mappings = std::move(mappings)] { impl->broadcast(scene, values, mappings); });
+void WebServer::publish(PageState state) {
+  net::post(impl_->io, [impl = impl_.get(), state = std::move(state)] { impl->broadcast(state); });
+}
+
+void WebServer::tell(std::string client, std::string reason) {
+  net::post(impl_->io, [impl = impl_.get(), client = std::move(client), reason = std::move(reason)] {
+    for (SocketSession* socket : impl->hub.openSockets)
+      if (socket->client() == client) socket->refuse(reason);
+  });
 }
 
 size_t WebServer::sockets() const { return impl_->hub.sockets.load(); }

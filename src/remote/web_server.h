@@ -35,6 +35,14 @@ struct WebLimits {
   RateLimit perSocket{};
 };
 
+// What every page is sent about the gallery ({"type":"state",...}).
+struct PageState {
+  std::string scene;
+  params::KeyValues values;
+  std::vector<std::string> mappings;     // the live mapping lines playing the scene
+  std::vector<std::string> userPresets;  // the names of the user's presets of the scene
+};
+
 class WebServer {
  public:
   // Binds at once (port 0: a free one); throws std::runtime_error saying why it cannot.
@@ -45,10 +53,12 @@ class WebServer {
   WebServer& operator=(const WebServer&) = delete;
 
   uint16_t port() const;
-  // Any thread, cheap: the state every socket is sent ({"type":"state",...}), now and to each new
-  // socket on connect. The JSON is made on the I/O thread; an unchanged state is not resent.
-  // `mappings`: the live mapping lines playing the scene (shown on the page).
-  void publish(std::string scene, params::KeyValues values, std::vector<std::string> mappings = {});
+  // Any thread, cheap: the state every socket is sent, now and to each new socket on connect. The JSON
+  // is made on the I/O thread; an unchanged state is not resent.
+  void publish(PageState state);
+  // Any thread: tells the page whose command it was (RemoteCommand::client) why the gallery refused it,
+  // as the server's own refusals are told; nothing when that page has gone.
+  void tell(std::string client, std::string reason);
   size_t sockets() const;  // open WebSockets, for tests and a status line
 
   struct Impl;

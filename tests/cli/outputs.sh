@@ -4,7 +4,8 @@
 # region), and a second output (--outputs: a window without a frame at 640,0) the right half. What the
 # screen shows, grabbed through X11, is a headless render of the whole 1280x360 frame to within 8-bit
 # rounding: the scene rendered once at the frame's size and each output drew its own half. Projector setup
-# (F7) drags a corner and keeps the pin in the warp file. kifs under
+# (F7) drags a corner of each output and keeps the pins in the warp file and the settings file, and the
+# next start shows them. kifs under
 # --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
 # whole desktop shows the same frame. --list-monitors lists the display's monitor, and a monitor that is
 # not there, or a bad outputs file, is refused.
@@ -39,23 +40,46 @@ wait $app; code=$?
 grep -q "validation messages" "$log" && fail "validation messages"
 [ "$code" = 0 ] || fail "exit $code"
 
-# Projector setup (F7): the top-left corner dragged in by a tenth, nudged one pixel right, kept with Enter:
-# written to the --output-warp file, and the screen's top-left corner is now black.
+# Projector setup (F7) with a second output: the main window's top-left corner dragged in by a tenth and
+# nudged one pixel right; F7 keeps it and goes on to the output named "right", which the main window then
+# shows; its bottom-right corner dragged in by a tenth; Enter keeps that. The main pin is written to the
+# --output-warp file, both to the settings file under the outputs' names; the screen's corners are black.
 echo '{}' >"$out/pin.json"
+echo '[{"window": [640, 0, 640, 360], "name": "right"}]' >"$out/pair.json"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
-   --size 640x360 --no-vsync --validate --output-warp "$out/pin.json") >"$log" 2>&1 &
+   --size 640x360 --no-vsync --validate --output-warp "$out/pin.json" --outputs "$out/pair.json") >"$log" 2>&1 &
 app=$!
 sleep 12
-keys key:Tab key:F7 sleep:1 drag:1,1,64,36 sleep:1 key:Right key:Return sleep:1 shot:0,0,16,8,"$out/pinned.ppm" key:Escape
+keys key:Tab key:F7 sleep:1 drag:1,1,64,36 sleep:1 key:Right key:F7 sleep:1 drag:639,359,576,324 sleep:1 key:Return \
+  sleep:2 shot:0,0,16,8,"$out/pinned.ppm" shot:1264,352,16,8,"$out/pinned-right.ppm" key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app || fail "the gallery in projector setup failed"
 python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["corners"]; assert c[0] == [0.1015625, 0.1] and c[2] == [1, 1], c' \
   "$out/pin.json" || fail "the kept pin: $(cat "$out/pin.json")"
-python3 -c 'import sys; d = open(sys.argv[1], "rb").read(); assert max(d[d.index(b"255\n") + 4:]) == 0, "not black"' \
-  "$out/pinned.ppm" || fail "the pinned picture still reaches the screen's corner"
+python3 - "$out/config/vitrine/settings.json" <<'PY' || fail "the pins in the settings: $(cat "$out/config/vitrine/settings.json")"
+import json, sys
+outputs = json.load(open(sys.argv[1]))["outputs"]
+assert outputs["main"]["corners"][0] == [0.1015625, 0.1], outputs
+assert outputs["right"]["corners"][2] == [0.9, 0.9] and outputs["right"]["corners"][0] == [0, 0], outputs
+PY
+black() { python3 -c 'import sys; d = open(sys.argv[1], "rb").read(); assert max(d[d.index(b"255\n") + 4:]) == 0, "not black"' "$1" 2>/dev/null; }
+black "$out/pinned.ppm" || fail "the pinned picture still reaches the main window's corner"
+black "$out/pinned-right.ppm" || fail "the pinned picture still reaches the right output's corner"
 
-# One window spanning the desktop (its one monitor here) shows the whole frame.
+# The next start, with no --output-warp, shows both outputs through the pins the settings file kept.
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
+   --size 640x360 --no-vsync --validate --outputs "$out/pair.json") >"$log" 2>&1 &
+app=$!
+sleep 12
+keys key:Tab sleep:2 shot:0,0,16,8,"$out/again.ppm" shot:1264,352,16,8,"$out/again-right.ppm" shot:300,170,16,8,"$out/middle.ppm" key:Escape
+for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+wait $app || fail "the gallery with saved pins failed"
+black "$out/again.ppm" || fail "the main window's saved pin was not applied"
+black "$out/again-right.ppm" || fail "the right output's saved pin was not applied"
+black "$out/middle.ppm" && fail "the middle of the main window is black: nothing drawn"
+
+# One window spanning the desktop (its one monitor here) shows the whole frame (a fresh settings file).
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-span exec "$vitrine" --scene kifs --reduced-motion \
    --set tier=high --span --no-vsync --validate) >"$log" 2>&1 &
 app=$!
 sleep 12

@@ -101,6 +101,30 @@ TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
   EXPECT_EQ(json["scene"], "noodles");
 }
 
+// Each output's warp (projector setup's pin) is kept under its name; a second gallery that set up another
+// output keeps the first's; an identity warp removes the entry; a warp that is not an object is a warning.
+TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
+  const auto path = freshFolder("outputs") / "settings.json";
+  std::ofstream(path) << R"({"version": 1, "outputs": {"left": {"turn": 180}, "broken": [1, 2]}})";
+  const auto now = GallerySettings::Clock::now();
+  GallerySettings first(path, false), second(path, false);
+  ASSERT_EQ(first.warnings().size(), 1u);
+  EXPECT_NE(first.warnings()[0].find("outputs.broken: expected an object"), std::string::npos) << first.warnings()[0];
+  ASSERT_NE(first.warpFor("left"), nullptr);
+  EXPECT_EQ((*first.warpFor("left"))["turn"], 180);
+  EXPECT_EQ(first.warpFor("main"), nullptr);
+  first.setWarp("main", nlohmann::ordered_json{{"mirror", true}}, now);
+  first.flush();
+  second.setWarp("left", nlohmann::ordered_json(), now);  // set up back to the whole frame
+  second.setWarp("right", nlohmann::ordered_json{{"region", {0.5, 0, 1, 1}}}, now);
+  second.flush();
+  const auto json = nlohmann::json::parse(read(path));
+  EXPECT_EQ(json["outputs"]["main"]["mirror"], true) << json.dump();
+  EXPECT_EQ(json["outputs"]["right"]["region"][0], 0.5) << json.dump();
+  EXPECT_FALSE(json["outputs"].contains("left")) << json.dump();
+  EXPECT_FALSE(json["outputs"].contains("broken")) << json.dump();
+}
+
 // A kiosk cycles through the scenes; the scene the gallery starts with next time stays the user's.
 TEST(GallerySettings, AKioskKeepsTheGallerysLastScene) {
   const auto path = freshFolder("kiosk") / "settings.json";

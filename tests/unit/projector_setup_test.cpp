@@ -1,5 +1,5 @@
 // Projector setup: corners taken by a press near them, dragged, nudged by the arrows; a fold refused;
-// Enter keeps the pin and Esc puts back the one setup started with.
+// Enter keeps the pin and Esc puts back the one setup started with; F7 moves on to the next output.
 #include <gtest/gtest.h>
 
 #include <GLFW/glfw3.h>
@@ -57,6 +57,24 @@ TEST(ProjectorSetup, ArrowsNudgeAndEnterKeepsAndEscapeUndoes) {
   setup.key(GLFW_KEY_RIGHT, true, kOutput, warp);
   EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kOutput, warp), ProjectorSetup::Key::Undone);
   EXPECT_EQ(warp, kept);
+}
+
+// F7 in setup keeps this output's pin and hands over to the next output's, which starts at its own.
+TEST(ProjectorSetup, F7KeepsThisPinForTheNextOutput) {
+  ProjectorSetup setup;
+  maths::OutputWarp main, second;
+  second.mirror = true;
+  setup.start(main);
+  setup.key(GLFW_KEY_RIGHT, false, kOutput, main);
+  const maths::OutputWarp kept = main;
+  EXPECT_EQ(setup.key(GLFW_KEY_F7, false, kOutput, main), ProjectorSetup::Key::Next);
+  EXPECT_FALSE(setup.active());
+  setup.start(second);
+  setup.key(GLFW_KEY_DOWN, false, kOutput, second);
+  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kOutput, second), ProjectorSetup::Key::Undone);
+  EXPECT_TRUE(second.mirror);
+  EXPECT_EQ(second.corners[0], glm::vec2(0.0f));  // undone to its own start, not the main pin
+  EXPECT_EQ(main, kept);
 }
 
 }  // namespace

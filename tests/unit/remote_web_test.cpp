@@ -286,7 +286,7 @@ TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {
   WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
   SocketClient first(server.port(), socketTarget), second(server.port(), socketTarget);
   ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
-  server.publish("kifs", {{"step", "3"}, {"tier", "low"}});
+  server.publish({"kifs", {{"step", "3"}, {"tier", "low"}}, {}, {"evening"}});
   for (SocketClient* phone : {&first, &second}) {
     const auto state = phone->receive();
     ASSERT_TRUE(state);
@@ -294,6 +294,7 @@ TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {
     EXPECT_EQ((*state)["scene"], "kifs");
     EXPECT_EQ((*state)["values"]["step"], "3");
     EXPECT_EQ((*state)["values"]["tier"], "low");
+    EXPECT_EQ((*state)["user_presets"], nlohmann::json::array({"evening"}));
   }
   // A phone that connects later is sent the state at once.
   SocketClient late(server.port(), socketTarget);
@@ -322,10 +323,26 @@ TEST(RemoteControl, ServesOscAndWebOnOnePort) {
   }));
   EXPECT_EQ(remote.stats().accepted, 2u);
 
-  remote.publish("neon", {{"speed", "1"}});
+  remote.publish({"neon", {{"speed", "1"}}});
   const auto state = phone.receive();
   ASSERT_TRUE(state);
   EXPECT_EQ((*state)["scene"], "neon");
+
+  // What the gallery refuses (a preset that is not there) is told to the page that asked, not to others.
+  SocketClient other(remote.port(), "/socket?token=" + remote.token());
+  ASSERT_TRUE(other.receive());  // the state, on connect
+  const auto sent = std::find_if(commands.begin(), commands.end(), [](const auto& c) { return c.client.starts_with("ws "); });
+  ASSERT_NE(sent, commands.end());
+  remote.tell(sent->client, "no preset 'evening' for neon");
+  remote.tell("osc 127.0.0.1", "an OSC controller has no reply channel");  // nothing to send it to
+  const auto told = phone.receive();
+  ASSERT_TRUE(told);
+  EXPECT_EQ((*told)["type"], "refused");
+  EXPECT_EQ((*told)["reason"], "no preset 'evening' for neon");
+  remote.publish({"neon", {{"speed", "2"}}});
+  const auto next = other.receive();  // the next message the other page gets is the state, not the refusal
+  ASSERT_TRUE(next);
+  EXPECT_EQ((*next)["type"], "state");
 }
 
 TEST(RemoteControl, ShutsDownPromptlyWithClientsConnected) {
