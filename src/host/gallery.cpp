@@ -271,6 +271,11 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   for (const auto& line : overlay_.fontProblems()) assets_.reportMissing(line);  // printed as reported
   for (const auto& line : settings_.warnings()) std::fprintf(stderr, "vitrine: settings: %s\n", line.c_str());
   for (const auto& line : presets_.warnings()) std::fprintf(stderr, "vitrine: presets: %s\n", line.c_str());
+  // A preset file given to the gallery is imported: it joins the user's presets (listed as theirs, kept for
+  // the next start) as well as applying to its scene below.
+  for (const std::string& file : options.presetFiles)
+    if (const std::string why = presets_.import(file); !why.empty())
+      std::fprintf(stderr, "vitrine: presets: %s not imported: %s\n", file.c_str(), why.c_str());
   const SceneInfo* last = findScene(settings_.lastScene());
   const SceneInfo& firstScene = !playlist_.empty() ? namedScene(playlist_.front().scene)
                                 : named          ? *named

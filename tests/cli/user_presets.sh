@@ -5,7 +5,7 @@
 # finds it by name; --export-preset writes it as a file, which --preset-file applies in a run with no
 # settings folder at all; every one of those frames equals a run with the same --set values (compare,
 # max difference 0). A built-in name, a broken file and a bad playlist are refused with a reason naming
-# them, the playlist before any window opens.
+# them, the playlist before any window opens. The gallery imports a --preset-file into its own store.
 set -eu
 vitrine=$1; out=$2
 rm -rf "$out"; mkdir -p "$out"
@@ -75,6 +75,21 @@ refused "bad.json is not a preset (step=12" "$vitrine" "${args[@]}" --preset-fil
 refused "/dev/null is not a preset (not a regular file)" "$vitrine" "${args[@]}" --preset-file /dev/null --out "$out/x.exr"
 printf '{"version": 1,' >"$out/broken.json"
 refused "broken.json is not a preset (not JSON" "$vitrine" "${args[@]}" --preset-file "$out/broken.json" --out "$out/x.exr"
+
+# The gallery imports a --preset-file: it joins the user's presets of that machine, file for file.
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/virtual_display.sh"
+trap 'kill ${app:-} ${xvfb:-} 2>/dev/null; wait 2>/dev/null' EXIT
+start_display 640x360
+(DISPLAY=$display XDG_CONFIG_HOME=$out/gallery exec "$vitrine" --scene kifs --size 320x180 --no-vsync --validate \
+   --preset-file "$out/shared/evening.json") >"$out/gallery.log" 2>&1 &
+app=$!
+sleep 8
+python3 "$here/xtest.py" "$display" key:Escape || fail "xtest"
+wait $app || fail "the gallery with --preset-file failed: $(cat "$out/gallery.log")"
+grep -q "validation" "$out/gallery.log" && fail "validation messages: $(cat "$out/gallery.log")"
+cmp -s "$saved" "$out/gallery/vitrine/presets/kifs-evening%20look.json" ||
+  fail "the gallery did not import the preset file: $(ls -R "$out/gallery") $(cat "$out/gallery.log")"
 
 # A playlist's bad line is refused by number before a window opens (no display is needed to say so).
 printf 'kifs sphere 10\n# a comment\nkifs evening look 20\nnoodles nope 5\n' >"$out/playlist.txt"
