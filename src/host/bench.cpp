@@ -13,7 +13,9 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/output_path.h"
+#include "core/resident_memory.h"
 #include "core/stats.h"
+#include "gpu/memory_ledger.h"
 #include "host/user_presets.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
@@ -55,6 +57,12 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
               {"gpu", summary(gpu)},
               {"cpu", summary(cpu)},
               {"passes", Json::array()}};
+  // What the scene holds on the device (every VkDeviceMemory of the process, while it is alive), and
+  // the process's resident memory: at 10^8 noodle segments, gigabytes that the check before allocation
+  // promised would fit.
+  const gpu::MemoryTally held = gpu::liveDeviceMemory();
+  result["device_memory"] = {{"allocations", held.allocations}, {"mib", double(held.bytes) / 1048576.0}};
+  if (const auto resident = residentBytes()) result["resident_mib"] = double(*resident) / 1048576.0;
   for (const auto& name : order) {
     std::printf("  %-24s median %8.3f ms  p95 %8.3f ms\n", name.c_str(), percentile(passes[name], 50),
                 percentile(passes[name], 95));

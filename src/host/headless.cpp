@@ -1,3 +1,4 @@
+#include "core/resident_memory.h"
 #include "gpu/check.h"
 #include "gpu/memory_ledger.h"
 #include "image/image_io.h"
@@ -63,12 +64,18 @@ int runHeadless(const Options& options) {
       std::signal(SIGINT, [](int) { stopHeadless = 1; });
     }
     auto due = std::chrono::steady_clock::now();
-    // Device memory after the first fifth of the frames (the soak's warm-up) and at the end.
+    // Device memory after the first fifth of the frames (the soak's warm-up) and at the end; resident
+    // memory then and at twenty frames spread over the rest, for its peak: by frames, not seconds, so
+    // that 10,000 frames that end within a second on a fast GPU are measured as well as slow ones.
     const uint32_t warmFrames = std::max(options.frames / 5, 1u);
+    const uint32_t residentEvery = std::max((options.frames - std::min(options.frames, warmFrames)) / 20, 1u);
     gpu::MemoryTally warm;
+    std::optional<uint64_t> residentWarm, residentPeak;
     for (; rendered < options.frames && (rendered == 0 || !stopHeadless); ++rendered) {  // one frame at least
       const uint32_t k = rendered;
-      if (k == warmFrames) warm = gpu::liveDeviceMemory();
+      if (k == warmFrames) warm = gpu::liveDeviceMemory(), residentWarm = residentBytes();
+      if (k >= warmFrames && (k - warmFrames) % residentEvery == 0)
+        if (const auto now = residentBytes()) residentPeak = std::max(residentPeak.value_or(0), *now);
       if (remote) {
         RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
         if (live) for (const auto& [source, value] : applied.sources) live->sources().set(source, value);
@@ -85,6 +92,10 @@ int runHeadless(const Options& options) {
       std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
                   static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
                   static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
+    if (const auto residentEnd = residentBytes(); residentWarm && residentEnd && rendered > warmFrames)
+      std::printf("resident memory: %.1f MiB after frame %u, peak %.1f MiB, %.1f MiB at the end\n",
+                  double(*residentWarm) / 1048576.0, warmFrames,
+                  double(std::max(residentPeak.value_or(0), *residentEnd)) / 1048576.0, double(*residentEnd) / 1048576.0);
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
                    options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);

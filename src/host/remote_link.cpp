@@ -87,7 +87,7 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
       case remote::RemoteCommand::Kind::Preset:
         refused = preset(renderer, command, applied, frameMs);
         if (refused.empty() && events)
-          events->emit(time, showing, {"remote_preset", {{"op", command.key}, {"scene", command.scene}, {"name", command.value}}});
+          events->emit(time, showing, {"remote_preset", {{"op", command.key}, {"of", command.scene}, {"name", command.value}}});
         break;
       case remote::RemoteCommand::Kind::Pointer:
         pressed_ = pressed_ || (command.down && !down_);

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """remote_page.py VITRINE OUTDIR: the control page, loaded in headless Chromium through chromedriver's
 W3C WebDriver protocol (standard library only), drives a headless neon run over its WebSocket: arrow
-keys on the `particles` slider change the parameter, and a drag on the touch pad releases tubes along
-its path. Requests without the access token are refused."""
+keys on the `particles` slider change the parameter, a preset saved from the page is offered back as
+the user's and one the gallery lacks is refused on the page, and a drag on the touch pad releases tubes
+along its path. Requests without the access token are refused."""
 import json, os, re, signal, socket, struct, subprocess, sys, time, urllib.error, urllib.request
 
 vitrine, out = sys.argv[1], sys.argv[2]
@@ -45,7 +46,8 @@ run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x
                         "--set", "chains=256", "--set", "autopilot_idle=60", "--validate", "--remote",
                         "--map", "osc.fader=bloom_strength:0:2",
                         "--remote-bind", "127.0.0.1:0", "--events", events, "--out", os.path.join(out, "remote.exr")],
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                       env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))  # its presets: not the user's
 driver = None
 try:
     url = None
@@ -106,6 +108,32 @@ try:
             fail("the page never showed the run's particles=32")
         time.sleep(0.1)
     http("POST", f"{s}/element/{slider}/value", {"text": "\ue012" * 4})  # focused, Left four times: 32 -> 28
+
+    # A preset saved from the page is offered back, marked as the user's; one the gallery does not have
+    # is refused, and the page says why.
+    def preset(op, name):
+        box = find("#preset-name")
+        http("POST", f"{s}/element/{box}/clear", {})
+        http("POST", f"{s}/element/{box}/value", {"text": name})
+        button = find('[data-preset-op="' + op + '"]')
+        http("POST", f"{s}/element/{button}/click", {})
+
+    def script(code):
+        return http("POST", s + "/execute/sync", {"script": code, "args": []})["value"]
+
+    preset("save", "dusk")
+    deadline = time.time() + 10
+    while "dusk (yours)" not in script('return [...document.querySelectorAll("#preset-list option")].map(o => o.label)'):
+        if time.time() > deadline:
+            fail("the page does not offer the preset it saved: " + str(script('return document.querySelector("#preset-list").innerHTML')))
+        time.sleep(0.1)
+    preset("apply", "nothing like it")
+    deadline = time.time() + 10
+    while "no preset 'nothing like it'" not in script('return document.querySelector("#message").textContent'):
+        if time.time() > deadline:
+            fail("the page does not say why the gallery refused a preset: " + str(script('return document.querySelector("#message").textContent')))
+        time.sleep(0.1)
+    script("window.scrollTo(0, 0)")  # the preset box was scrolled into view; the drag below is in viewport pixels
 
     pad = find("#pad")
     rect = http("GET", f"{s}/element/{pad}/rect")["value"]
