@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <fstream>
@@ -30,9 +31,20 @@ Json summary(const std::vector<double>& samples) {
   return {{"median_ms", percentile(samples, 50)}, {"p95_ms", percentile(samples, 95)}};
 }
 
-Json benchScene(const gpu::Device& device, const Options& options, const std::string& scene) {
+// The --set values for `scene`: those naming it, and the unqualified ones; benching every scene, an
+// unqualified key goes to the scenes that have it (`--set tier=low` for all but the calibration card).
+params::KeyValues benchParameters(const Options& options, const std::string& scene, bool everyScene) {
+  if (!everyScene) return parametersFor(options, scene, true);
+  params::KeyValues values = parametersFor(options, scene, false);
+  const params::Schema& schema = findScene(scene)->schema();
+  for (const auto& setting : options.parameters)
+    if (setting.scene.empty() && schema.find(setting.key)) values.emplace_back(setting.key, setting.value);
+  return values;
+}
+
+Json benchScene(const gpu::Device& device, const Options& options, const std::string& scene, bool everyScene) {
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
-                         options.reducedMotion, presetsFor(options, scene, true), parametersFor(options, scene, true)};
+                         options.reducedMotion, presetsFor(options, scene, true), benchParameters(options, scene, everyScene)};
   config.flashGuard = flashGuardOn(options);
   config.presetFiles = presetFilesFor(options, scene);
   Offscreen offscreen(device, config);
@@ -97,6 +109,12 @@ int runBench(const Options& options) {
     scenes.push_back(options.scene);
   for (const auto& scene : scenes)  // a typo fails before the device is made
     if (!findScene(scene)) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", scene));
+  const bool everyScene = scenes.size() > 1;
+  if (everyScene)
+    for (const auto& setting : options.parameters)
+      if (setting.scene.empty() &&
+          std::none_of(scenes.begin(), scenes.end(), [&](const auto& s) { return findScene(s)->schema().find(setting.key); }))
+        throw Error(fmt::format("No scene has a parameter '{}' (--set {}={}).", setting.key, setting.key, setting.value));
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
 
@@ -112,7 +130,7 @@ int runBench(const Options& options) {
             {"scenes", Json::array()}};
   std::printf("%s, %ux%u, %u frames after %u warm-up\n", device.describe().c_str(), size.width, size.height,
               options.frames, options.warmup);
-  for (const auto& scene : scenes) json["scenes"].push_back(benchScene(device, options, scene));
+  for (const auto& scene : scenes) json["scenes"].push_back(benchScene(device, options, scene, everyScene));
   writeJson(options.out, json);
   if (instance.validationMessages() > 0) {
     std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());

@@ -1,7 +1,8 @@
 #pragma once
 // What a scene keeps to pick its quality tier each step: its setting, or for "auto" in the gallery the
-// automatic tier fed with the last frame's GPU time. Headless, bench and record runs are reproducible,
+// automatic tier fed with the last frame's GPU time (starting low on a software device). Headless, bench and record runs are reproducible,
 // so there "auto" is the high tier, whatever the frame times.
+#include "gpu/device.h"
 #include "scenes/quality.h"
 #include "scenes/scene.h"
 
@@ -12,7 +13,12 @@ namespace vitrine {
 // What a scene keeps: the tier in use, from its setting and, for auto in the gallery, the frame times.
 class AdaptiveQuality {
  public:
-  explicit AdaptiveQuality(const SceneContext& context) : events_(context.events), realtime_(context.realtime) {}
+  explicit AdaptiveQuality(const SceneContext& context)
+      : events_(context.events), realtime_(context.realtime), auto_(startingTier(context.device)) {}
+  // In the gallery, auto starts at the low tier on a CPU device (lavapipe, SwiftShader), else high.
+  static Tier startingTier(const gpu::Device& device) {
+    return device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? Tier::Low : Tier::High;
+  }
 
   // Once per step with the scene's settings; reports a change of the automatic tier as a "tier" event.
   void update(Tier setting, float targetMs, const FrameInput& input) {

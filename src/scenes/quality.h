@@ -30,6 +30,9 @@ void addQualityParams(params::Schema& schema, std::string_view whatATierChanges,
 
 class AutoTier {
  public:
+  // `start`: where the search begins. A software device (lavapipe) starts low and steps up while its
+  // frames are fast, rather than showing seconds of frozen high-tier frames before stepping down.
+  explicit AutoTier(Tier start = Tier::High) : current_(start == Tier::Auto ? Tier::High : start) {}
   // Feeds one frame's GPU time; returns the tier to use next.
   Tier observe(double gpuMs, double targetMs) {
     if (gpuMs <= 0.0) return current_;

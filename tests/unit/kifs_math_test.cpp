@@ -191,6 +191,17 @@ TEST(AutoTier, StepsDownWhenSlowAndBackUpWhenFast) {
   EXPECT_EQ(tier.current(), Tier::Medium);
 }
 
+// A software device starts at the low tier and climbs while its frames leave room.
+TEST(AutoTier, AStartAtTheLowTierStepsUpWhenFast) {
+  AutoTier tier(Tier::Low);
+  EXPECT_EQ(tier.current(), Tier::Low);
+  for (int i = 0; i < 59; ++i) EXPECT_EQ(tier.observe(5.0, 16.0), Tier::Low);
+  EXPECT_EQ(tier.observe(5.0, 16.0), Tier::Medium);
+  for (int i = 0; i < 100; ++i) tier.observe(12.0, 16.0);  // within the target: stays
+  EXPECT_EQ(tier.current(), Tier::Medium);
+  EXPECT_EQ(AutoTier(Tier::Auto).current(), Tier::High);
+}
+
 TEST(AutoTier, FramesFarOverTheTargetStepDownAtOnceButOneHitchDoesNot) {
   AutoTier tier;
   tier.observe(100.0, 16.0);  // one hitch, then back on target
