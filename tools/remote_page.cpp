@@ -40,7 +40,7 @@ int serve(double seconds, const remote::BindAddress& address, const std::string&
     if (!slot) slot = info.schema().makeDefaults();
     return params::Bound{&info.schema(), slot.get()};
   };
-  control.publish(std::string(current->name), params::snapshot(bound(*current)));
+  control.publish({std::string(current->name), params::snapshot(bound(*current))});
   while (std::chrono::steady_clock::now() < until) {
     for (const remote::RemoteCommand& command : control.drain()) {
       std::printf("%s: kind %d %s %s %s\n", command.client.c_str(), int(command.kind), command.scene.c_str(),
@@ -50,7 +50,7 @@ int serve(double seconds, const remote::BindAddress& address, const std::string&
         params::applyValues(bound(*findScene(command.scene)), {{command.key, command.value}});
     }
     std::fflush(stdout);
-    control.publish(std::string(current->name), params::snapshot(bound(*current)));
+    control.publish({std::string(current->name), params::snapshot(bound(*current))});
     std::this_thread::sleep_for(std::chrono::milliseconds(16));
   }
   return 0;

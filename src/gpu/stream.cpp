@@ -25,9 +25,14 @@ StreamSlice StreamArena::allocate(VkDeviceSize bytes, VkDeviceSize alignment) {
     if (found == chunks_.size()) {
       constexpr VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-      chunks_.push_back({Buffer(device_, std::max(bytes, chunkBytes_), usage, MemoryUse::Upload,
-                                fmt::format("stream chunk {}", chunks_.size())),
-                         0, 0});
+      // The first time, two: an arena written every frame fills its chunk sooner or later while the
+      // frame that filled it is in flight, and then needs a second. Made at once, the working set is
+      // there from the first frame rather than appearing minutes in (the soak saw the calibration card,
+      // which writes ~2 kB a frame, grow by a chunk after 2,300 frames).
+      for (size_t made = 0, wanted = chunks_.empty() ? 2 : 1; made < wanted; ++made)
+        chunks_.push_back({Buffer(device_, std::max(bytes, chunkBytes_), usage, MemoryUse::Upload,
+                                  fmt::format("stream chunk {}", chunks_.size())),
+                           0, 0});
     }
     current_ = found;
     chunks_[current_].used = 0;
