@@ -60,11 +60,13 @@ void main() {
   const vec3 entry = ro + rd * t;
   const float span = max(exitT - t, 0.0);
 
-  // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity).
-  const float step = span / float(pc.samples);
+  // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity). The
+  // samples follow the chord's length (crystalSamples): a step no longer than the longest chord's.
+  const uint samples = crystalSamples(span, kCrystalRadius, pc.samples);
+  const float step = span / float(samples);
   const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
   float alpha = 0.0;
-  for (uint i = 0u; i < pc.samples && alpha < 0.995; ++i) {
+  for (uint i = 0u; i < samples && alpha < 0.995; ++i) {
     const vec3 p = entry + rd * ((float(i) + jitter) * step);
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
     alpha += (1.0 - alpha) * (1.0 - exp(-sampleDensity(v) * step));

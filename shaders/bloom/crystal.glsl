@@ -9,6 +9,10 @@ bool insideCrystal(vec3 normalised) { return abs(normalised.x) + abs(normalised.
 bool insideCore(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= kCoreRadius; }
 
 float octahedronDistance(vec3 p, float radius) { return (abs(p.x) + abs(p.y) + abs(p.z) - radius) * 0.57735027; }
+uint crystalSamples(float span, float radius, uint samples) {
+  const float wanted = ceil(span / (2.0 * radius) * float(samples));
+  return clamp(uint(max(wanted, 1.0)), 1u, max(samples, 1u));
+}
 
 float vapourCover(float v) { return smoothstep(kCoverFrom, kCoverTo, v); }
 float sampleDensity(float v) { return kGlassDensity + kVapourDensity * vapourCover(v); }

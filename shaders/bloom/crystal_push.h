@@ -13,7 +13,7 @@ struct BloomCrystalPush {
   uint seed;
   uint frame;        // 0 under reduced motion: the jitter holds still
   uint traceSteps;   // sphere-trace budget to the entry (48)
-  uint samples;      // volume samples to the exit (56)
+  uint samples;      // volume samples along the longest chord (56); shorter chords take fewer
   float shimmer;     // climax: 0..1 (0 under reduced motion)
 };
 VITRINE_SHARED_END

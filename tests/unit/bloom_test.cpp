@@ -125,6 +125,18 @@ TEST(BloomColour, TheCrystalFlipsToItsStateQuicklyAndTheVapourSetsItsDensity) {
   EXPECT_LT(sampleDensity(0.0f) * 0.1f, 0.1f) << "the drained shell is thin glass";
 }
 
+// The longest chord takes every sample; shorter ones fewer at no longer a step; a sliver still one.
+TEST(BloomCrystal, SamplesFollowTheChordAtTheLongestChordsSpacing) {
+  const float r = kCrystalRadius;
+  EXPECT_EQ(crystalSamples(2.0f * r, r, 56), 56u);
+  EXPECT_EQ(crystalSamples(r, r, 56), 28u);
+  EXPECT_EQ(crystalSamples(1e-6f, r, 56), 1u);
+  EXPECT_EQ(crystalSamples(0.0f, r, 56), 1u);
+  EXPECT_EQ(crystalSamples(3.0f * r, r, 56), 56u);  // never more than asked
+  for (float span = 0.01f; span <= 2.0f * r; span += 0.013f)
+    EXPECT_LE(span / float(crystalSamples(span, r, 56)), 2.0f * r / 56.0f * 1.0001f) << span;
+}
+
 TEST(BloomSettings, TheThresholdErrorSaysWhichPairIsOutOfOrder) {
   EXPECT_EQ(thresholdOrderError({0.25f, 0.45f, 0.65f, 0.82f}), "");
   EXPECT_EQ(thresholdOrderError({1.0f, 0.45f, 0.65f, 0.82f}),

@@ -40,6 +40,16 @@ inline float octahedronDistance(glm::vec3 p, float radius) {
   return (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) - radius) * 0.57735027f;
 }
 
+// The volume samples for a chord of `span` through the crystal when its longest chord (2R, vertex to
+// vertex) takes `samples`: the step is never longer than that chord's, so a short chord near an edge or
+// a facet costs a few samples, not as many as the longest. Lines through a convex body are on average
+// 4 V / S long (Cauchy): 0.77 R for the octahedron, 0.385 of its longest, so a frame takes ~2.6x fewer
+// samples than a fixed count per ray would, at the same sample spacing or finer.
+inline uint32_t crystalSamples(float span, float radius, uint32_t samples) {
+  const float wanted = std::ceil(span / (2.0f * radius) * float(samples));
+  return std::clamp(uint32_t(std::max(wanted, 1.0f)), 1u, std::max(samples, 1u));
+}
+
 // ---------------------------------------------------------------------------------- the diffusion
 // next = cur + D dt (sum of the six neighbours - 6 cur) - decay dt next + source dt, masked, clamped.
 // Rates are given for a 96^3 lattice and scaled with it, so a finer lattice shows the same picture:

@@ -46,7 +46,7 @@ const params::Schema& schema() {
     s.add(params::intParam<S>({"trace_steps", "trace steps", "Sphere-trace budget to the crystal's entry.",
                                "render"},
                               &S::traceSteps, 8, 128));
-    s.add(params::intParam<S>({"samples", "samples", "Volume samples from entry to exit.", "render"}, &S::samples,
+    s.add(params::intParam<S>({"samples", "samples", "Volume samples along the crystal's longest chord (vertex to vertex); shorter chords take fewer, at the same spacing.", "render"}, &S::samples,
                               8, 256));
     s.add(params::floatParam<S>({"volume", "volume", "Master volume.", "sound"}, &S::volume, 0.0, 1.0));
     s.add(params::boolParam<S>({"mute", "mute", "Silence (M in the gallery).", "sound"}, &S::mute));
