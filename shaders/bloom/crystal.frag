@@ -65,12 +65,15 @@ void main() {
   const uint samples = crystalSamples(span, kCrystalRadius, pc.samples);
   const float step = span / float(samples);
   const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
-  float alpha = 0.0;
-  for (uint i = 0u; i < samples && alpha < 0.995; ++i) {
+  // The transmittances multiply, so the optical depth adds: one exp at the end rather than one a sample,
+  // and the march stops where the path is opaque (depth 5.3: alpha 0.995).
+  float depth = 0.0;
+  for (uint i = 0u; i < samples && depth < 5.3; ++i) {
     const vec3 p = entry + rd * ((float(i) + jitter) * step);
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
-    alpha += (1.0 - alpha) * (1.0 - exp(-sampleDensity(v) * step));
+    depth += sampleDensity(v) * step;
   }
+  float alpha = 1.0 - exp(-depth);
   // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
   const vec3 normal = sign(entry) * 0.57735027;
   const float facing = abs(dot(normal, rd));
