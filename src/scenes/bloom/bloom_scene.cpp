@@ -54,6 +54,7 @@ gpu::GraphicsState crystalState() {
   state.fragment = "bloom/crystal.frag";
   state.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
   state.blend = gpu::GraphicsState::Blend::Premultiplied;
+  state.cull = VK_CULL_MODE_FRONT_BIT;  // the box's far faces only: one fragment a covered pixel
   return state;
 }
 
