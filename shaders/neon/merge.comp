@@ -3,15 +3,18 @@
 // amber tube is white: so the pixel takes the nearest tube's colour (kept in the tubes' alpha, see
 // tube.frag) at the luminance of all their light (nearestColourLight in src/scenes/neon/tube_light.h):
 // crossing tubes read as one in front of another, each its own neon colour, at any density. The
-// result goes back into the tubes' target for the bloom, and onto the facade; the nearer of the two
-// depths is kept, so the depth of field blurs each by its own distance.
+// result goes back into the tubes' target for the bloom, and onto the facade (drawn once a size, so read
+// here and the sum written to the scene); the nearer of the two depths is kept, so the depth of field
+// blurs each by its own distance.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/merge_push.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0, rgba16f) uniform image2D scene;  // the facade in, facade and tubes out
-layout(set = 0, binding = 1, r32f) uniform image2D depth;     // the facade's in, the nearer out
-layout(set = 0, binding = 2, rgba16f) uniform image2D tubes;  // the tubes' light; alpha: the nearest one's depth and colour
+layout(set = 0, binding = 0, rgba16f) uniform readonly image2D facade;
+layout(set = 0, binding = 1, r32f) uniform readonly image2D facadeDepth;
+layout(set = 0, binding = 2, rgba16f) uniform writeonly image2D scene;  // facade and tubes
+layout(set = 0, binding = 3, r32f) uniform writeonly image2D depth;     // the nearer of the two
+layout(set = 0, binding = 4, rgba16f) uniform image2D tubes;  // the tubes' light; alpha: the nearest one's depth and colour
 layout(push_constant) uniform Push { NeonMergePush pc; };
 
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
@@ -29,6 +32,6 @@ void main() {
   const float tubeDepth = unpackHalf2x16(bits & 0xfffcu).x;
   const vec3 light = colour == 0u ? tube.rgb : nearestColourLight(tube.rgb, pc.colours[colour - 1u].rgb);
   imageStore(tubes, p, vec4(light, tubeDepth));
-  imageStore(scene, p, imageLoad(scene, p) + vec4(light, 0.0));
-  imageStore(depth, p, vec4(max(imageLoad(depth, p).r, tubeDepth)));
+  imageStore(scene, p, imageLoad(facade, p) + vec4(light, 0.0));
+  imageStore(depth, p, vec4(max(imageLoad(facadeDepth, p).r, tubeDepth)));
 }

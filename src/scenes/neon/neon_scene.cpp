@@ -118,6 +118,10 @@ class NeonScene final : public Scene {
                                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
     depth_ = resources_.declare(screenImage("neon depth", kDepthCopyFormat,
                                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
+    // The facade, drawn once a size: the camera never moves, so every frame's would be the same.
+    facadeColour_ = resources_.declare(screenImage("neon facade colour", kColourFormat, VK_IMAGE_USAGE_STORAGE_BIT));
+    facadeDepth_ = resources_.declare(screenImage("neon facade depth", kDepthCopyFormat,
+                                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT));
     glow_ = resources_.declare(screenImage("neon glow", kColourFormat,
                                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                                VK_IMAGE_USAGE_STORAGE_BIT));
@@ -138,6 +142,7 @@ class NeonScene final : public Scene {
   void resize(VkExtent2D target) override {
     extent_ = target;
     glowCleared_ = false;  // a new target
+    facadeDrawn_ = false;
     aspect_ = float(target.width) / float(std::max(target.height, 1u));
   }
 
@@ -184,8 +189,9 @@ class NeonScene final : public Scene {
   gpu::BufferHandle heads_, particles_, boxes_;
   uint32_t boxCount_ = 0;
   std::vector<ChainParams> stepsPending_;  // one per simulation step since the chains last moved
-  gpu::ImageHandle colour_, depth_, glow_, lighting_;
+  gpu::ImageHandle colour_, depth_, glow_, lighting_, facadeColour_, facadeDepth_;
   bool glowCleared_ = false;  // the tubes' target holds zeros (cleared after its last use, or at creation)
+  bool facadeDrawn_ = false;  // facadeColour_ and facadeDepth_ hold the facade at this size
   VkExtent2D extent_{1, 1};
   float aspect_ = 16.0f / 9.0f;
 
@@ -349,16 +355,18 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   gpu::Image& colour = frame.image(colour_);
   gpu::Image& depth = frame.image(depth_);
   gpu::Image& glow = frame.image(glow_);
-  gpu::Image& lighting = frame.image(lighting_);
+  gpu::Image& facadeColour = frame.image(facadeColour_);
+  gpu::Image& facadeDepth = frame.image(facadeDepth_);
   const VkSampler nearest = device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp);
   constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  {
+  if (!facadeDrawn_) {
     const auto pass = frame.pass("neon facade");
+    gpu::Image& lighting = frame.image(lighting_);
     gpu::Buffer& boxes = frame.buffer(boxes_);
     frame.transition(boxes, gpu::use::ComputeReadBuffer);
     frame.transition(lighting, gpu::use::ComputeSample);
-    frame.transition(colour, gpu::use::ComputeWrite);
-    frame.transition(depth, gpu::use::ComputeWrite);
+    frame.transition(facadeColour, gpu::use::ComputeWrite);
+    frame.transition(facadeDepth, gpu::use::ComputeWrite);
     facade_.bind(frame.cmd);
     facade_.constants(frame.cmd, shader::NeonFacadePush{kNightSky, kFacadeBrightness});
     facade_.push(frame.cmd, gpu::Bindings()
@@ -368,15 +376,16 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
                                               device_.sampler(gpu::Device::Filter::Linear,
                                                               gpu::Device::Address::Clamp, true),
                                               kSampled)
-                                .storageImage("colour", colour.view())
-                                .storageImage("depth", depth.view()));
+                                .storageImage("colour", facadeColour.view())
+                                .storageImage("depth", facadeDepth.view()));
     facade_.dispatchOver(frame.cmd, extent_);
+    facadeDrawn_ = true;
   }
   {
     const auto pass = frame.pass("neon tubes");
     gpu::Buffer& positions = frame.buffer(particles_);
     frame.transition(positions, gpu::use::VertexReadBuffer);
-    frame.transition(depth, gpu::use::FragmentSample);
+    frame.transition(facadeDepth, gpu::use::FragmentSample);
     gpu::RenderingDesc desc;
     // Zeroed by the clear pass at the end of the last frame; a new target is cleared here once.
     desc.colors = {{&glow, glowCleared_ ? std::nullopt : std::optional<VkClearColorValue>(VkClearColorValue{})}};
@@ -386,19 +395,23 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
       tubes_.push(frame.cmd, gpu::Bindings()
                                  .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
                                  .storageBuffer("Particles", positions.handle())
-                                 .sampledImage("facadeDepth", depth.view(), nearest, kSampled));
+                                 .sampledImage("facadeDepth", facadeDepth.view(), nearest, kSampled));
       vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
     }
   }
   const auto pass = frame.pass("neon merge");
-  frame.transition(colour, gpu::use::ComputeReadWrite);
-  frame.transition(depth, gpu::use::ComputeReadWrite);
+  frame.transition(facadeColour, gpu::use::ComputeRead);
+  frame.transition(facadeDepth, gpu::use::ComputeRead);
+  frame.transition(colour, gpu::use::ComputeWrite);
+  frame.transition(depth, gpu::use::ComputeWrite);
   frame.transition(glow, gpu::use::ComputeReadWrite);
   merge_.bind(frame.cmd);
   merge_.constants(frame.cmd, shader::NeonMergePush{{glm::vec4(linear(settings_.colourA), 0.0f),
                                                      glm::vec4(linear(settings_.colourB), 0.0f),
                                                      glm::vec4(linear(settings_.colourC), 0.0f)}});
   merge_.push(frame.cmd, gpu::Bindings()
+                             .storageImage("facade", facadeColour.view())
+                             .storageImage("facadeDepth", facadeDepth.view())
                              .storageImage("scene", colour.view())
                              .storageImage("depth", depth.view())
                              .storageImage("tubes", glow.view()));
