@@ -121,18 +121,19 @@ try:
     def script(code):
         return http("POST", s + "/execute/sync", {"script": code, "args": []})["value"]
 
+    def until(what, code, wanted):  # waits up to 10 s for the script's value to hold `wanted`
+        deadline = time.time() + 10
+        while wanted not in script(code):
+            if time.time() > deadline:
+                fail(f"{what}: {script(code)}")
+            time.sleep(0.1)
+
     preset("save", "dusk")
-    deadline = time.time() + 10
-    while "dusk (yours)" not in script('return [...document.querySelectorAll("#preset-list option")].map(o => o.label)'):
-        if time.time() > deadline:
-            fail("the page does not offer the preset it saved: " + str(script('return document.querySelector("#preset-list").innerHTML')))
-        time.sleep(0.1)
+    until("the page does not offer the preset it saved",
+          'return [...document.querySelectorAll("#preset-list option")].map(o => o.label)', "dusk (yours)")
     preset("apply", "nothing like it")
-    deadline = time.time() + 10
-    while "no preset 'nothing like it'" not in script('return document.querySelector("#message").textContent'):
-        if time.time() > deadline:
-            fail("the page does not say why the gallery refused a preset: " + str(script('return document.querySelector("#message").textContent')))
-        time.sleep(0.1)
+    until("the page does not say why the gallery refused a preset",
+          'return document.querySelector("#message").textContent', "no preset 'nothing like it'")
     script("window.scrollTo(0, 0)")  # the preset box was scrolled into view; the drag below is in viewport pixels
 
     pad = find("#pad")
