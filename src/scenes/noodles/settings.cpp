@@ -136,7 +136,7 @@ const params::Schema& schema() {
     s.preset({"rising", "Strands carried upwards, striped, with rotation-minimising frames.",
               {{"lift", "2"}, {"stripe", "on"}, {"tangent", "normalized"}, {"frames", "rmf"}}});
     s.preset({"smooth", "RK4 along the unit direction.", {{"integrator", "rk4"}, {"tangent", "normalized"}}});
-    addQualityParams<S>(s, "Render scale, MSAA and (low) strand density", 16.0f);
+    addQualityParams<S>(s, "Render scale (every tier draws every strand, at the samples msaa asks for)", 16.0f);
     return s;
   }();
   return table;
