@@ -8,6 +8,18 @@ const float kGlassDensity = 0.9, kVapourDensity = 9.0;
 bool insideCrystal(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= 1.0; }
 bool insideCore(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= kCoreRadius; }
 
+// The voxels [first, end) along z that one invocation of an n^3 pass walks: its run `run` of `length`
+// voxels up column xy, clipped to where the column crosses the crystal (|z| <= 1 - |x| - |y|),
+// widened a voxel each way so that rounding never drops one; callers still test each voxel with
+// insideCrystal. Empty (first >= end) for a run, or a whole column, outside.
+ivec2 crystalColumnRun(ivec2 xy, int n, int run, int length) {
+  const vec2 normalisedXY = (vec2(xy) + 0.5) / float(n) * 2.0 - 1.0;
+  const float halfHeight = 1.0 - abs(normalisedXY.x) - abs(normalisedXY.y);
+  if (halfHeight < -2.0 / float(n)) return ivec2(0);
+  return ivec2(max(run * length, int(floor((1.0 - halfHeight) * 0.5 * float(n))) - 1),
+               min(min((run + 1) * length, n), int(ceil((1.0 + halfHeight) * 0.5 * float(n))) + 1));
+}
+
 float octahedronDistance(vec3 p, float radius) { return (abs(p.x) + abs(p.y) + abs(p.z) - radius) * 0.57735027; }
 uint crystalSamples(float span, float radius, uint samples) {
   const float wanted = ceil(span / (2.0 * radius) * float(samples));

@@ -5,6 +5,8 @@
 #include "../common/interop.h"
 
 VITRINE_SHARED_BEGIN
+const uint kBloomDiffuseColumn = 16;  // voxels along z one diffusion invocation walks
+
 struct BloomDiffusePush {
   vec3 source;       // the vapour source's centre, voxel coordinates
   float diffusion;   // D, voxels^2 / s
@@ -12,6 +14,11 @@ struct BloomDiffusePush {
   float dt;          // one sub-step, seconds
   float sigma;       // the source's radius, voxels
   float sourceRate;  // per second at the source's centre; 0: no source
+};
+
+// A new lattice's contents (fill.comp): `fill` inside the crystal; outside stays the host's zeros.
+struct BloomFillPush {
+  float fill;
 };
 VITRINE_SHARED_END
 

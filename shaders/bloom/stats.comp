@@ -11,20 +11,23 @@ layout(binding = 1, std430) buffer Stats { BloomLatticeCounts stats; };
 layout(push_constant) uniform Push { BloomStatsThresholds thresholds; };  // 0.25 / 0.45 / 0.65 / 0.82 by default
 
 shared uint partial[6];  // interior, above amber, rose, crimson and climax, peak bits
-const int kColumn = 8;  // voxels along z per invocation; mirrors kStatsColumn in bloom_scene.cpp
 
 void main() {
   if (gl_LocalInvocationIndex < 6) partial[gl_LocalInvocationIndex] = 0u;
   barrier();
-  // Each invocation counts a column of kColumn voxels along z before it touches shared memory: the
-  // atomics, not the loads, are what a CPU driver pays for (a 96^3 pass took as long as a diffusion step).
+  // Each invocation counts a run of kBloomStatsColumn voxels along z before it touches shared memory:
+  // the atomics, not the loads, are what a CPU driver pays for (a 96^3 pass took as long as a diffusion
+  // step). The run is clipped to the crystal, as the diffusion's is.
   const int n = imageSize(lattice).x;
+  const ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 run = xy.x < n && xy.y < n ? crystalColumnRun(xy, n, int(gl_GlobalInvocationID.z), int(kBloomStatsColumn))
+                                         : ivec2(0);
   uint mine[5] = uint[5](0u, 0u, 0u, 0u, 0u);
   float peak = 0.0;
-  for (int k = 0; k < kColumn; ++k) {
-    const ivec3 p = ivec3(gl_GlobalInvocationID.xy, int(gl_GlobalInvocationID.z) * kColumn + k);
+  for (int z = run.x; z < run.y; ++z) {
+    const ivec3 p = ivec3(xy, z);
     const vec3 normalised = (vec3(p) + 0.5) / float(n) * 2.0 - 1.0;
-    if (any(greaterThanEqual(p, ivec3(n))) || !insideCrystal(normalised)) continue;
+    if (!insideCrystal(normalised)) continue;
     const float v = imageLoad(lattice, p).r;
     peak = max(peak, v);
     if (!insideCore(normalised)) continue;

@@ -6,6 +6,8 @@
 #include "../common/interop.h"
 
 VITRINE_SHARED_BEGIN
+const uint kBloomStatsColumn = 16;  // voxels along z one statistics invocation counts
+
 // The event thresholds a voxel of the interior is counted past (strictly above), in order.
 struct BloomStatsThresholds {
   float amber;

@@ -67,7 +67,7 @@ void FrameResources::create(Entry& entry, VkExtent2D target) {
   desc.type = desc.extent.depth > 1 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   desc.format = entry.decl.format;
   desc.usage = entry.decl.usage;
-  if (entry.decl.pairing == Pairing::History) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // cleared
+  if (entry.decl.pairing == Pairing::History || entry.decl.zeroed) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // cleared
   if (!entry.decl.initial.empty()) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (entry.decl.state) desc.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (entry.decl.mips != 1) desc.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -112,29 +112,30 @@ void FrameResources::beginFrame(VkCommandBuffer cmd, StreamArena& stream, uint32
   }
 }
 
-// A new image's initial texels, or a history pair's zeros.
+// A new image's initial texels, or zeros: a history pair's (whose scene is told not to trust them this
+// frame) or a zeroed image's.
 void FrameResources::writeFirstContents(VkCommandBuffer cmd, StreamArena& stream, Entry& entry) {
   entry.fresh = false;
   if (!entry.decl.initial.empty())
     for (Image& image : entry.images)
       if (image) uploadImage(cmd, stream, image, entry.decl.initial, entry.decl.initialUse);
-  if (entry.decl.pairing == Pairing::History) {  // zeros rather than garbage, and the scene is told not to trust them this frame
-    const VkClearColorValue zero{};
-    for (Image& image : entry.images) {
-      image.discard();
-      image.use(cmd, use::TransferDst);
-      const VkImageSubresourceRange range{image.desc().aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
-      vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-    }
-    entry.historyValid = false;
+  if (entry.decl.pairing != Pairing::History && !entry.decl.zeroed) return;
+  const VkClearColorValue zero{};
+  for (Image& image : entry.images) {
+    if (!image) continue;
+    image.discard();
+    image.use(cmd, use::TransferDst);
+    const VkImageSubresourceRange range{image.desc().aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+    vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
   }
+  entry.historyValid = false;
 }
 
 // An image whose initial texels or clear are still pending holds garbage: a scene that redeclared it
 // while recording would read that; say so instead of rendering noise.
 FrameResources::Entry& FrameResources::ready(ImageHandle handle) {
   Entry& entry = entries_.at(handle.index);
-  if ((entry.fresh && (!entry.decl.initial.empty() || entry.decl.pairing == Pairing::History)) ||
+  if ((entry.fresh && (!entry.decl.initial.empty() || entry.decl.pairing == Pairing::History || entry.decl.zeroed)) ||
       !entry.restored.empty())
     throw Error(fmt::format("{} is used before its initial contents were written: (re)declare it in the scene's "
                             "constructor or update(), not while recording",

@@ -42,6 +42,7 @@ struct ImageDecl {
   std::vector<std::byte> initial;  // level-0 texels uploaded at creation (absolute sizes)
   ImageUse initialUse = use::ComputeSample;  // where an uploaded image is left
   bool state = false;  // simulation state a checkpoint saves and restores (download, restore)
+  bool zeroed = false;  // cleared to zero at creation: for images too big to upload from the CPU
 };
 
 struct ImageHandle {

@@ -145,6 +145,18 @@ TEST(BloomSettings, TheThresholdErrorSaysWhichPairIsOutOfOrder) {
             std::string::npos);
 }
 
+// 512^3 is a gigabyte as a pair: an 80 GB GPU takes it, a 1 GB one and a device whose 3D images stop
+// at the Vulkan minimum (256) are told why not.
+TEST(BloomSettings, ALatticeMustFitTheDevicesImagesAndHalfItsMemory) {
+  const uint64_t gib = uint64_t(1) << 30;
+  EXPECT_EQ(latticeFitError(512, 2048, 80 * gib, "big"), "");
+  EXPECT_EQ(latticeFitError(512, 2048, 1 * gib, "small"),
+            "a 512^3 lattice needs 1024 MiB of device memory (two images), more than half of the 1024 MiB on small");
+  EXPECT_EQ(latticeFitError(256, 2048, 1 * gib, "small"), "");
+  EXPECT_EQ(latticeFitError(320, 256, 80 * gib, "minimal"),
+            "a 320^3 lattice is larger than the 256^3 3D images minimal can make");
+}
+
 // The default rates at a 48^3 lattice (the CPU reference; the GPU runs at 96^3 and 160^3 are
 // tests/cli/bloom_phases.sh): a cursor that only hovers over the centre reaches every phase and the
 // climax, a second or so apart; once the vapour stops the crystal vents through every phase.

@@ -300,6 +300,21 @@ inline std::string thresholdOrderError(const std::array<float, 4>& t) {
   return {};
 }
 
+// Whether an n^3 lattice pair (two r32f images: the step reads one and writes the other) fits the
+// device: within its largest 3D image and within half its device memory, the rest left to the frame's
+// images, the other scenes and the driver.
+inline std::string latticeFitError(uint32_t n, uint32_t maxImageDimension3D, uint64_t deviceLocalHeap,
+                                   std::string_view deviceName) {
+  if (n > maxImageDimension3D)
+    return fmt::format("a {}^3 lattice is larger than the {}^3 3D images {} can make", n, maxImageDimension3D,
+                       deviceName);
+  const uint64_t pair = 2ull * 4ull * uint64_t(n) * n * n;
+  if (pair > deviceLocalHeap / 2)
+    return fmt::format("a {}^3 lattice needs {} MiB of device memory (two images), more than half of the {} MiB on {}",
+                       n, pair >> 20, deviceLocalHeap >> 20, deviceName);
+  return {};
+}
+
 // The CPU source: the proxy's V against the thresholds themselves, 0.03 below to leave.
 inline std::array<Hysteresis, 4> proxyBands(const std::array<float, 4>& thresholds) {
   std::array<Hysteresis, 4> bands{};

@@ -42,7 +42,6 @@ constexpr VkFormat kLatticeFormat = VK_FORMAT_R32_SFLOAT;
 // follows the clock on a slow device; below that the frame's own GPU time would grow with its
 // slowness, so the rest is given up and the gallery says the simulation is behind.
 constexpr float kMaxSecondsPerFrame = 0.5f;
-constexpr uint32_t kStatsColumn = 8;  // voxels along z each statistics invocation counts (stats.comp)
 constexpr uint32_t kStatsReadbacks = 4;  // copies in flight before a frame's is skipped (gpu/readback_ring.h)
 
 constexpr std::array<std::string_view, 4> kLabelWords{"", "AMBER", "ROSE", "CRIMSON"};
@@ -85,6 +84,7 @@ class BloomScene final : public Scene {
         events_(context.events),
         quality_(context),
         audio_(context.audio),
+        fill_(context.programs, "bloom/fill.comp"),
         diffuse_(context.programs, "bloom/diffuse.comp"),
         statistics_(context.programs, "bloom/stats.comp"),
         chamber_(context.programs, "bloom/chamber.comp"),
@@ -108,7 +108,7 @@ class BloomScene final : public Scene {
     if ((context.device.optimalTilingFeatures(kLatticeFormat) & needed) != needed)
       throw Error(fmt::format("bloom needs r32f 3D images it can store to and filter linearly, which {} lacks",
                               context.device.properties().deviceName));
-    lattice_ = resources_.declare(latticeDecl(settings_.lattice, 0.0f));
+    lattice_ = resources_.declare(latticeDecl(settings_.lattice));
     builtLattice_ = settings_.lattice;
   }
   ~BloomScene() override { audio_.drone(time_, false); }
@@ -164,6 +164,7 @@ class BloomScene final : public Scene {
   }
 
   void record(const FrameContext& frame) override {
+    fill(frame);
     simulate(frame);
     measure(frame);  // the phases follow the lattice's statistics, seen or not
     if (!frame.draws) return;
@@ -184,7 +185,10 @@ class BloomScene final : public Scene {
     state(droning_, appliedGain_, builtLattice_, builtFill_, time_, frame_, seed_, source_, stepsPending_,
           givenUpSeconds_, stepSeconds_, proxy_, stats_, detector_, history_, carried_, label_, labelTime_,
           chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_);
-    if (state.isRestoring()) resources_.redeclare(lattice_, latticeDecl(builtLattice_, 0.0f));
+    if (state.isRestoring()) {  // the checkpoint's vapour, over zeros
+      resources_.redeclare(lattice_, latticeDecl(builtLattice_));
+      pendingFill_ = 0.0f;
+    }
     state.contents(resources_, lattice_);
   }
   double frameCost(const void* values) const override {  // the lattice's diffusion dominates
@@ -194,7 +198,9 @@ class BloomScene final : public Scene {
   double takeGivenUpSeconds() override { return std::exchange(givenUpSeconds_, 0.0); }
 
   std::string checkParameters() const override {
-    return thresholdOrderError(thresholds());
+    if (std::string order = thresholdOrderError(thresholds()); !order.empty()) return order;
+    return latticeFitError(uint32_t(settings_.lattice), device_.limits().maxImageDimension3D,
+                           device_.memoryLimits().largestDeviceLocalHeap, device_.properties().deviceName);
   }
 
   void drawPanel() override {
@@ -237,30 +243,22 @@ class BloomScene final : public Scene {
   }
   static constexpr size_t kHistory = 600;  // ten seconds of readings
 
-  gpu::ImageDecl latticeDecl(int n, float fill) const {
+  // Made zero on the GPU (a 512^3 pair is a gigabyte, too much to build and upload from the CPU);
+  // fill.comp then puts a fill inside the crystal.
+  static gpu::ImageDecl latticeDecl(int n) {
     gpu::ImageDecl decl{"bloom vapour", kLatticeFormat,
                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                         gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n)), 1, gpu::Pairing::PingPong};
-    decl.state = true;  // checkpoints save the vapour
-    // Initial texels: the fill inside the crystal, zero outside.
-    const uint32_t size = uint32_t(n);
-    std::vector<float> texels(size_t(size) * size * size, 0.0f);
-    if (fill > 0.0f) {
-      for (uint32_t z = 0; z < size; ++z)
-        for (uint32_t y = 0; y < size; ++y)
-          for (uint32_t x = 0; x < size; ++x)
-            if (insideCrystal(voxelCentre({x, y, z}, size))) texels[(size_t(z) * size + y) * size + x] = fill;
-    }
-    decl.initial.resize(texels.size() * sizeof(float));
-    std::memcpy(decl.initial.data(), texels.data(), decl.initial.size());
-    decl.initialUse = gpu::use::ComputeRead;
+    decl.state = true;   // checkpoints save the vapour
+    decl.zeroed = true;  // both images: diffuse.comp never writes a voxel outside the crystal
     return decl;
   }
 
   // A new lattice (size change, fill, vent): the old images are retired behind frames in flight.
   void restart(float fill) {
     exhaling_ = false;
-    resources_.redeclare(lattice_, latticeDecl(settings_.lattice, fill));
+    pendingFill_ = fill;
+    resources_.redeclare(lattice_, latticeDecl(settings_.lattice));
     builtLattice_ = settings_.lattice;
     builtFill_ = settings_.fill;
   }
@@ -271,6 +269,19 @@ class BloomScene final : public Scene {
   float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
   uint32_t substeps() const { return substepsFor(scaledD(), stepSeconds_); }
   float stabilityNumber() const { return 6.0f * scaledD() * stepSeconds_ / float(substeps()); }
+
+  void fill(const FrameContext& frame) {
+    if (pendingFill_ <= 0.0f) return;
+    const auto pass = frame.pass("bloom fill");
+    gpu::Image& lattice = frame.image(lattice_);
+    frame.transition(lattice, gpu::use::ComputeWrite);
+    fill_.bind(frame.cmd);
+    fill_.push(frame.cmd, gpu::Bindings().storageImage("lattice", lattice.view()));
+    fill_.constants(frame.cmd, shader::BloomFillPush{pendingFill_});
+    const uint32_t n = uint32_t(settings_.lattice);
+    fill_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
+    pendingFill_ = 0.0f;
+  }
 
   void simulate(const FrameContext& frame) {
     if (stepsPending_ == 0) return;
@@ -291,7 +302,7 @@ class BloomScene final : public Scene {
       frame.transition(read, gpu::use::ComputeRead);
       frame.transition(write, gpu::use::ComputeWrite);
       diffuse_.push(frame.cmd, gpu::Bindings().storageImage("current", read.view()).storageImage("next", write.view()));
-      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
+      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
       frame.resources.flip(lattice_);
     }
     stepsPending_ = 0;
@@ -309,7 +320,7 @@ class BloomScene final : public Scene {
     const auto [amber, rose, crimson, climax] = thresholds();
     statistics_.constants(frame.cmd, shader::BloomStatsThresholds{amber, rose, crimson, climax});
     const uint32_t n = uint32_t(settings_.lattice);
-    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + kStatsColumn - 1) / kStatsColumn});
+    statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomStatsColumn - 1) / shader::kBloomStatsColumn});
     statsReadback_.record(frame.cmd, counts, time_);
   }
 
@@ -451,6 +462,7 @@ class BloomScene final : public Scene {
   audio::AudioSink& audio_;
   bool droning_ = false;
   float appliedGain_ = -1.0f;
+  gpu::ComputeProgram fill_;
   gpu::ComputeProgram diffuse_;
   gpu::ComputeProgram statistics_;
   gpu::ComputeProgram chamber_;
@@ -471,6 +483,7 @@ class BloomScene final : public Scene {
     float rate = 0.0f;
   } source_;
   int stepsPending_ = 0;
+  float pendingFill_ = 0.0f;  // written into the lattice by the next frame's fill pass
   double givenUpSeconds_ = 0.0;  // steps beyond kMaxSecondsPerFrame, until the gallery asks
   float stepSeconds_ = 1.0f / 60.0f;
   float proxy_ = 0.0f;

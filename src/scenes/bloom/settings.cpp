@@ -8,7 +8,7 @@ const params::Schema& schema() {
   static const params::Schema table = [] {
     auto s = params::Schema::forStruct<S>();
     s.add(params::intParam<S>({"lattice", "lattice", "Voxels per side of the vapour lattice.", "vapour", kRebuilds},
-                              &S::lattice, 48, 256));
+                              &S::lattice, 48, 512));
     s.add(params::floatParam<S>({"diffusion", "diffusion", "How fast vapour spreads, voxels^2 per second at 96^3 "
                                  "(scaled with the lattice).", "vapour", kLogarithmic},
                                 &S::diffusion, 0.5, 200.0));
