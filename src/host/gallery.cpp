@@ -617,7 +617,11 @@ void Gallery::frame() {
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
   swapchain_.present(*image);
   for (auto& output : outputs_) output->present();
-  ++frameCount_;
+  // One line once the window shows its first frame: what is showing where (and what the gallery's
+  // checks wait for instead of guessing how long a start takes).
+  if (frameCount_++ == 0)
+    std::fprintf(stderr, "vitrine: showing %s on %s\n", std::string(renderer_->info().name).c_str(),
+                 device_.properties().deviceName);
   pollShaders();
 }
 

@@ -20,7 +20,7 @@ start_display 320x180
    --validate --set bloom.tier=low) >"$log" 2>&1 &
 app=$!
 keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
-sleep 8                                # the window is up and drawing
+wait_for_showing "$log"
 keys key:F12 sleep:3 key:Tab sleep:1 key:F12 sleep:3 key:Tab
 keys key:F9 sleep:3 key:F9 sleep:4 key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done

@@ -22,7 +22,7 @@ start_display 640x360
    --validate --set bloom.lattice=48) >"$log" 2>&1 &
 app=$!
 keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
-sleep 8
+wait_for_showing "$log"
 # The speed slider's row: under the fps line, five scenes, the section header and the vsync row.
 keys ctrlclick:40,259 key:3 sleep:3 key:Return sleep:3 move:600,340 sleep:2 key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done

@@ -23,12 +23,13 @@ app=
 trap 'kill $app $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
 start_display 1280x360
 
+: >"$log"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
    --set tier=high --size 640x360 --no-vsync --validate --output-warp "$out/left.json" --outputs "$out/outputs.json") \
    >"$log" 2>&1 &
 app=$!
 keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
-sleep 12
+wait_for_showing "$log"
 keys key:Tab sleep:3 shot:0,0,1280,360,"$out/screen.ppm"
 oiiotool "$out/screen.ppm" --colorconvert sRGB linear -o "$out/screen.exr" || fail "cannot read the grab"
 "$vitrine" --headless --scene kifs --reduced-motion --set tier=high --size 1280x360 --out "$out/frame.exr" >/dev/null
@@ -46,10 +47,11 @@ grep -q "validation messages" "$log" && fail "validation messages"
 # --output-warp file, both to the settings file under the outputs' names; the screen's corners are black.
 echo '{}' >"$out/pin.json"
 echo '[{"window": [640, 0, 640, 360], "name": "right"}]' >"$out/pair.json"
+: >"$log"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
    --size 640x360 --no-vsync --validate --output-warp "$out/pin.json" --outputs "$out/pair.json") >"$log" 2>&1 &
 app=$!
-sleep 12
+wait_for_showing "$log"
 keys key:Tab key:F7 sleep:1 drag:1,1,64,36 sleep:1 key:Right key:F7 sleep:1 drag:639,359,576,324 sleep:1 key:Return \
   sleep:2 shot:0,0,16,8,"$out/pinned.ppm" shot:1264,352,16,8,"$out/pinned-right.ppm" key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
@@ -67,10 +69,11 @@ black "$out/pinned.ppm" || fail "the pinned picture still reaches the main windo
 black "$out/pinned-right.ppm" || fail "the pinned picture still reaches the right output's corner"
 
 # The next start, with no --output-warp, shows both outputs through the pins the settings file kept.
+: >"$log"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config exec "$vitrine" --scene kifs --reduced-motion \
    --size 640x360 --no-vsync --validate --outputs "$out/pair.json") >"$log" 2>&1 &
 app=$!
-sleep 12
+wait_for_showing "$log"
 keys key:Tab sleep:2 shot:0,0,16,8,"$out/again.ppm" shot:1264,352,16,8,"$out/again-right.ppm" shot:300,170,16,8,"$out/middle.ppm" key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app || fail "the gallery with saved pins failed"
@@ -79,10 +82,11 @@ black "$out/again-right.ppm" || fail "the right output's saved pin was not appli
 black "$out/middle.ppm" && fail "the middle of the main window is black: nothing drawn"
 
 # One window spanning the desktop (its one monitor here) shows the whole frame (a fresh settings file).
+: >"$log"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-span exec "$vitrine" --scene kifs --reduced-motion \
    --set tier=high --span --no-vsync --validate) >"$log" 2>&1 &
 app=$!
-sleep 12
+wait_for_showing "$log"
 keys key:Tab sleep:3 shot:0,0,1280,360,"$out/span.ppm" key:Escape
 oiiotool "$out/span.ppm" --colorconvert sRGB linear -o "$out/span.exr" || fail "cannot read the grab"
 "$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/span.exr" | tee "$out/compare.txt" |

@@ -84,7 +84,7 @@ start_display 640x360
 (DISPLAY=$display XDG_CONFIG_HOME=$out/gallery exec "$vitrine" --scene kifs --size 320x180 --no-vsync --validate \
    --preset-file "$out/shared/evening.json") >"$out/gallery.log" 2>&1 &
 app=$!
-sleep 8
+wait_for_showing "$out/gallery.log"
 python3 "$here/xtest.py" "$display" key:Escape || fail "xtest"
 wait $app || fail "the gallery with --preset-file failed: $(cat "$out/gallery.log")"
 grep -q "validation" "$out/gallery.log" && fail "validation messages: $(cat "$out/gallery.log")"

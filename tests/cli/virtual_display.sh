@@ -9,3 +9,9 @@ start_display() {
   display=:$(head -n1 "$out/display")
   [ "$display" != ":" ] || fail "Xvfb did not start"
 }
+# wait_for_showing LOG: waits (up to a minute) until the gallery writing LOG says it shows its first
+# frame ("vitrine: showing SCENE on DEVICE"), instead of sleeping for a start's worst case.
+wait_for_showing() {
+  for _ in $(seq 600); do grep -q "^vitrine: showing " "$1" 2>/dev/null && return 0; sleep 0.1; done
+  fail "the gallery showed no frame within a minute"
+}
