@@ -93,7 +93,7 @@ void LookPasses::record(const FrameContext& frame, const Settings& settings, con
     frame.transition(focused, gpu::use::ComputeWrite);
     const float pixels = float(extent.height) / 1080.0f;  // circles of confusion scale with the frame
     const shader::NeonDofPush push{glm::vec2(extent.width, extent.height), in.near, settings.focalDistance,
-                                   settings.aperture * 6.0f * pixels, 14.0f * pixels, 32u, 0.0f};
+                                   settings.aperture * 6.0f * pixels, 14.0f * pixels, in.dofTaps, 0.0f};
     dof_.bind(frame.cmd);
     dof_.constants(frame.cmd, push);
     dof_.push(frame.cmd, gpu::Bindings()

@@ -14,6 +14,7 @@ struct LookInputs {
   float mirrorRow;    // pixels from the top: the ground mirrors about this row
   float near;         // the projection's near distance
   float time;
+  uint32_t dofTaps;   // the depth of field's spiral taps: fewer at the low tier
 };
 
 class LookPasses {

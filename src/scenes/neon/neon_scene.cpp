@@ -447,8 +447,11 @@ void NeonScene::record(const FrameContext& frame) {
   recordFacadeAndTubes(frame, frame.uniform(block));
   // The ground mirrors about the facade's foot, where it meets the ground straight ahead.
   const float footY = projectedRow(viewProjection, glm::vec3(0.0f), float(extent_.height));
+  // The low tier's half-size frame has circles of confusion half as wide: 16 taps cover a quarter of
+  // the area as densely as 32 cover the whole, and the depth of field costs half.
+  const uint32_t dofTaps = quality_.active() == Tier::Low ? 16u : 32u;
   look_.record(frame, settings_, {frame.image(colour_), frame.image(depth_), frame.image(glow_), footY, kNear,
-                                  reducedMotion_ ? 0.0f : float(time_)});
+                                  reducedMotion_ ? 0.0f : float(time_), dofTaps});
   const auto pass = frame.pass("neon clear");
   gpu::Image& glow = frame.image(glow_);
   frame.transition(glow, gpu::use::ComputeWrite);
