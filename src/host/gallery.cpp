@@ -190,6 +190,7 @@ class Gallery {
   bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;
   Clock::time_point lastFrame_ = Clock::now();
+  Clock::time_point firstShown_{};  // when the first frame was presented: the run's frame rate counts from it
   Clock::time_point lastShaderPoll_ = Clock::now();
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;
@@ -329,6 +330,12 @@ int Gallery::run() {
     frame();
   }
   device_.waitIdle();
+  // What the viewer saw: frames a second from the first one shown to the last (minimised time included).
+  if (frameCount_ > 1) {
+    const double seconds = secondsBetween(firstShown_, Clock::now());
+    std::fprintf(stderr, "vitrine: showed %llu frames in %.1f s (%.1f fps)\n", (unsigned long long)(frameCount_ - 1),
+                 seconds, double(frameCount_ - 1) / std::max(seconds, 1e-9));
+  }
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     if (auto note = screenshots_.collect(slot)) std::printf("vitrine: %s\n", note->c_str());
   if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
@@ -619,9 +626,11 @@ void Gallery::frame() {
   for (auto& output : outputs_) output->present();
   // One line once the window shows its first frame: what is showing where (and what the gallery's
   // checks wait for instead of guessing how long a start takes).
-  if (frameCount_++ == 0)
+  if (frameCount_++ == 0) {
+    firstShown_ = Clock::now();
     std::fprintf(stderr, "vitrine: showing %s on %s\n", std::string(renderer_->info().name).c_str(),
                  device_.properties().deviceName);
+  }
   pollShaders();
 }
 
