@@ -35,7 +35,9 @@ class BloomGpu : public test::GpuTest {
                                         .sigma = p.sigma,
                                         .sourceRate = p.sourceOn ? p.sourceRate : 0.0f};
     device().submitNow([&](VkCommandBuffer cmd) {
-      gpu::uploadImage(cmd, arena, images[0], std::as_bytes(std::span(texels)), gpu::use::ComputeRead);
+      // Both images: the step never writes outside the crystal, which must hold zero in each.
+      for (gpu::Image& image : images)
+        gpu::uploadImage(cmd, arena, image, std::as_bytes(std::span(texels)), gpu::use::ComputeRead);
       diffuse.bind(cmd);
       diffuse.constants(cmd, push);
       for (int step = 0; step < steps; ++step) {
@@ -44,7 +46,7 @@ class BloomGpu : public test::GpuTest {
         in.use(cmd, gpu::use::ComputeRead);
         out.use(cmd, gpu::use::ComputeWrite);
         diffuse.push(cmd, gpu::Bindings().storageImage("current", in.view()).storageImage("next", out.view()));
-        diffuse.dispatchOver(cmd, VkExtent3D{n, n, n});
+        diffuse.dispatchOver(cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
       }
       gpu::Image& result = images[steps % 2];
       result.use(cmd, gpu::use::TransferSrc);
