@@ -74,7 +74,7 @@ const params::Schema& schema() {
               {{"chains", "4096"}, {"autopilot_rate", "1400"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",
               {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
-    addQualityParams<S>(s, "Render scale of the facade, tubes and post passes", 16.0f);
+    addQualityParams<S>(s, "Render scale of the facade, tubes and post passes; the low tier takes half the depth of field's taps", 16.0f);
     return s;
   }();
   return table;
