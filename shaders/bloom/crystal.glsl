@@ -8,13 +8,16 @@ const float kGlassDensity = 0.9, kVapourDensity = 9.0;
 bool insideCrystal(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= 1.0; }
 bool insideCore(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= kCoreRadius; }
 
+// Voxel i's centre in the lattice's normalised cube [-1, 1]^3 (bloom_math.h: voxelCentre).
+vec3 voxelCentre(ivec3 voxel, int n) { return (vec3(voxel) + 0.5) / float(n) * 2.0 - 1.0; }
+
 // The voxels [first, end) along z that one invocation of an n^3 pass walks: its run `run` of `length`
 // voxels up column xy, clipped to where the column crosses the crystal (|z| <= 1 - |x| - |y|),
 // widened a voxel each way so that rounding never drops one; callers still test each voxel with
 // insideCrystal. Empty (first >= end) for a run, or a whole column, outside.
 ivec2 crystalColumnRun(ivec2 xy, int n, int run, int length) {
-  const vec2 normalisedXY = (vec2(xy) + 0.5) / float(n) * 2.0 - 1.0;
-  const float halfHeight = 1.0 - abs(normalisedXY.x) - abs(normalisedXY.y);
+  const vec3 centre = voxelCentre(ivec3(xy, 0), n);
+  const float halfHeight = 1.0 - abs(centre.x) - abs(centre.y);
   if (halfHeight < -2.0 / float(n)) return ivec2(0);
   return ivec2(max(run * length, int(floor((1.0 - halfHeight) * 0.5 * float(n))) - 1),
                min(min((run + 1) * length, n), int(ceil((1.0 + halfHeight) * 0.5 * float(n))) + 1));

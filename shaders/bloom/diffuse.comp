@@ -27,13 +27,12 @@ void main() {
   for (int z = first; z < end; ++z) {
     const ivec3 p = ivec3(xy, z);
     const float above = at(p + ivec3(0, 0, 1), last);
-    const vec3 centre = vec3(p) + 0.5;
-    if (insideCrystal(centre / float(n) * 2.0 - 1.0)) {
+    if (insideCrystal(voxelCentre(p, n))) {
       const float sum = at(p + ivec3(-1, 0, 0), last) + at(p + ivec3(1, 0, 0), last) + at(p + ivec3(0, -1, 0), last) +
                         at(p + ivec3(0, 1, 0), last) + below + above;
       float v = here + pc.diffusion * (sum - 6.0 * here) * pc.dt;
       if (pc.sourceRate > 0.0) {  // uniform: venting skips the exponential
-        const vec3 d = centre - pc.source;
+        const vec3 d = vec3(p) + 0.5 - pc.source;  // in voxels
         v += pc.sourceRate * exp(-dot(d, d) / (2.0 * pc.sigma * pc.sigma)) * pc.dt;
       }
       v -= pc.decay * v * pc.dt;

@@ -12,5 +12,5 @@ void main() {
   const int n = imageSize(lattice).x;
   const ivec3 p = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(p, ivec3(n)))) return;
-  if (insideCrystal((vec3(p) + 0.5) / float(n) * 2.0 - 1.0)) imageStore(lattice, p, vec4(pc.fill));
+  if (insideCrystal(voxelCentre(p, n))) imageStore(lattice, p, vec4(pc.fill));
 }

@@ -26,7 +26,7 @@ void main() {
   float peak = 0.0;
   for (int z = run.x; z < run.y; ++z) {
     const ivec3 p = ivec3(xy, z);
-    const vec3 normalised = (vec3(p) + 0.5) / float(n) * 2.0 - 1.0;
+    const vec3 normalised = voxelCentre(p, n);
     if (!insideCrystal(normalised)) continue;
     const float v = imageLoad(lattice, p).r;
     peak = max(peak, v);
