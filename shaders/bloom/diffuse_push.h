@@ -7,13 +7,17 @@
 VITRINE_SHARED_BEGIN
 const uint kBloomDiffuseColumn = 16;  // voxels along z one diffusion invocation walks
 
+// One pass: a stage of a super step (bloom_math.h: StageWeights, stageVoxel).
 struct BloomDiffusePush {
   vec3 source;       // the vapour source's centre, voxel coordinates
   float diffusion;   // D, voxels^2 / s
   float decay;       // per second
-  float dt;          // one sub-step, seconds
+  float dt;          // the stage's weight times its super step, seconds
   float sigma;       // the source's radius, voxels
   float sourceRate;  // per second at the source's centre; 0: no source
+  float keep;        // the weight of the voxel's value
+  float older;       // the weight of the stage before's; 0: not read
+  uint last;         // 1: the super step's last stage, which clamps
 };
 
 // A new lattice's contents (fill.comp): `fill` inside the crystal; outside stays the host's zeros.

@@ -13,42 +13,58 @@
 namespace vitrine::bloom {
 namespace {
 
-// One 3D r32f lattice pair on the GPU, run through diffuse.comp and read back.
+// Three 3D r32f lattices on the GPU (slot 0 the state, as in the scene), run through diffuse.comp
+// for frames of a plan and read back.
 class BloomGpu : public test::GpuTest {
  protected:
-  std::vector<float> run(uint32_t n, const std::vector<float>& texels, const DiffusionParams& p, int steps) {
+  std::vector<float> run(uint32_t n, const std::vector<float>& texels, DiffusionParams p, const DiffusionPlan& plan,
+                         int frames) {
     gpu::ImageDesc desc;
     desc.extent = {n, n, n};
     desc.type = VK_IMAGE_TYPE_3D;
     desc.format = VK_FORMAT_R32_SFLOAT;
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    gpu::Image images[2] = {gpu::Image(device(), desc, "lattice a"), gpu::Image(device(), desc, "lattice b")};
+    gpu::Image images[3] = {gpu::Image(device(), desc, "lattice a"), gpu::Image(device(), desc, "lattice b"),
+                            gpu::Image(device(), desc, "lattice stage")};
     gpu::ProgramLibrary programs(device());
     gpu::ComputeProgram diffuse(programs, "bloom/diffuse.comp");
     gpu::StreamArena arena(device());
     gpu::Buffer readback(device(), texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          gpu::MemoryUse::Readback, "lattice readback");
-    const shader::BloomDiffusePush push{.source = p.source,
-                                        .diffusion = p.diffusion,
-                                        .decay = p.decay,
-                                        .dt = p.dt,
-                                        .sigma = p.sigma,
-                                        .sourceRate = p.sourceOn ? p.sourceRate : 0.0f};
+    shader::BloomDiffusePush push{.source = p.source,
+                                  .diffusion = p.diffusion,
+                                  .decay = p.decay,
+                                  .sigma = p.sigma,
+                                  .sourceRate = p.sourceOn ? p.sourceRate : 0.0f};
+    uint32_t state = 0;  // the pair's current image, 0 or 1
     device().submitNow([&](VkCommandBuffer cmd) {
-      // Both images: the step never writes outside the crystal, which must hold zero in each.
+      // Every image: a stage never writes outside the crystal, which must hold zero in each.
       for (gpu::Image& image : images)
         gpu::uploadImage(cmd, arena, image, std::as_bytes(std::span(texels)), gpu::use::ComputeRead);
       diffuse.bind(cmd);
-      diffuse.constants(cmd, push);
-      for (int step = 0; step < steps; ++step) {
-        gpu::Image& in = images[step % 2];
-        gpu::Image& out = images[(step + 1) % 2];
-        in.use(cmd, gpu::use::ComputeRead);
-        out.use(cmd, gpu::use::ComputeWrite);
-        diffuse.push(cmd, gpu::Bindings().storageImage("current", in.view()).storageImage("next", out.view()));
-        diffuse.dispatchOver(cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
+      for (uint32_t step = 0; step < uint32_t(frames) * plan.superSteps; ++step) {
+        gpu::Image* slots[3] = {&images[state], &images[1 - state], &images[2]};
+        uint32_t older = 0, here = 0;
+        for (uint32_t j = 1; j <= plan.stages; ++j) {
+          const uint32_t next = j == 1 ? firstStageSlot(plan.stages) : 3u - here - older;
+          const StageWeights w = rklStage(j, plan.stages);
+          push.dt = w.step * plan.dt, push.keep = w.keep, push.older = w.older;
+          push.last = j == plan.stages ? 1u : 0u;
+          slots[here]->use(cmd, gpu::use::ComputeRead);
+          slots[older]->use(cmd, gpu::use::ComputeRead);
+          slots[next]->use(cmd, gpu::use::ComputeWrite);
+          diffuse.push(cmd, gpu::Bindings()
+                                .storageImage("current", slots[here]->view())
+                                .storageImage("older", slots[older]->view())
+                                .storageImage("next", slots[next]->view()));
+          diffuse.constants(cmd, push);
+          diffuse.dispatchOver(cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
+          older = here, here = next;
+        }
+        EXPECT_LT(here, 2u) << "a super step ends in the pair";
+        if (here == 1) state = 1 - state;
       }
-      gpu::Image& result = images[steps % 2];
+      gpu::Image& result = images[state];
       result.use(cmd, gpu::use::TransferSrc);
       readback.use(cmd, gpu::use::TransferDstBuffer);
       VkBufferImageCopy region{};
@@ -63,21 +79,27 @@ class BloomGpu : public test::GpuTest {
   }
 };
 
+std::vector<float> randomCrystal(uint32_t n) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  std::vector<float> lattice(size_t(n) * n * n, 0.0f);
+  for (uint32_t z = 0; z < n; ++z)
+    for (uint32_t y = 0; y < n; ++y)
+      for (uint32_t x = 0; x < n; ++x)
+        if (insideCrystal(voxelCentre({x, y, z}, n))) lattice[(size_t(z) * n + y) * n + x] = uniform(random);
+  return lattice;
+}
+
 // On a lattice of one run a column, and on odd ones of several runs (whose crystal's tips touch the
 // lattice's faces, where a neighbour is clamped).
 TEST_F(BloomGpu, TheDiffusionStepMatchesTheCpuReference) {
-  constexpr int kSteps = 5;
+  constexpr int kFrames = 5;
   for (const uint32_t n : {12u, 37u, 71u}) {
-    std::mt19937 random(7);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    std::vector<float> cpu(size_t(n) * n * n, 0.0f), next;
-    for (uint32_t z = 0; z < n; ++z)
-      for (uint32_t y = 0; y < n; ++y)
-        for (uint32_t x = 0; x < n; ++x)
-          if (insideCrystal(voxelCentre({x, y, z}, n))) cpu[(size_t(z) * n + y) * n + x] = uniform(random);
+    std::vector<float> cpu = randomCrystal(n);
     const DiffusionParams p{6.0f, 0.3f, 0.02f, true, glm::vec3(7.5f, 11.0f, 9.0f), 3.0f, 1.5f};
-    const std::vector<float> gpu = run(n, cpu, p, kSteps);
-    for (int step = 0; step < kSteps; ++step) diffuseLattice(cpu, next, n, p), std::swap(cpu, next);
+    const DiffusionPlan plan{1, 1, p.dt};
+    const std::vector<float> gpu = run(n, cpu, p, plan, kFrames);
+    for (int frame = 0; frame < kFrames; ++frame) diffuseFrame(cpu, n, p, plan);
     float worst = 0.0f;
     for (size_t i = 0; i < cpu.size(); ++i) worst = std::max(worst, std::abs(gpu[i] - cpu[i]));
     const std::string what = std::to_string(n) + "^3";
@@ -86,12 +108,32 @@ TEST_F(BloomGpu, TheDiffusionStepMatchesTheCpuReference) {
   }
 }
 
-// A full crystal venting from the climax (1.05) with the default rates, at the sub-step each lattice
-// size runs at 60 Hz (48^3: 1, 96^3: 2, 256^3: 12): its interior must fall past the climax threshold
-// (0.82) at the same moment, the physics' ln(1.05 / 0.82) / 0.40 = 0.62 s. A half-float lattice
-// did not: each 256^3 sub-step's decay was under half a half-float step, and the vent time followed
-// the lattice size and the driver's rounding (0.45 s at 48^3, 0.27 s at 256^3 on lavapipe). The
-// lattice here is small (the interior does not feel the surface within the vent); only dt differs.
+// Super steps of every stage count modulo 3 (each ends its rotation in a different slot), with the
+// older stage read: the GPU's stages are the CPU reference's.
+TEST_F(BloomGpu, TheRungeKuttaLegendreStagesMatchTheCpuReference) {
+  constexpr uint32_t n = 37;
+  constexpr int kFrames = 2;
+  for (const uint32_t stages : {2u, 3u, 4u, 10u}) {
+    std::vector<float> cpu = randomCrystal(n);
+    const DiffusionParams p{20.0f, 0.3f, 0.0f, true, glm::vec3(17.5f, 21.0f, 19.0f), 3.0f, 1.5f};
+    // The longest super step the stages keep stable.
+    const DiffusionPlan plan{1, stages, kStabilityLimit * float(stages * stages + stages) * 0.5f / (6.0f * p.diffusion)};
+    const std::vector<float> gpu = run(n, cpu, p, plan, kFrames);
+    for (int frame = 0; frame < kFrames; ++frame) diffuseFrame(cpu, n, p, plan);
+    float worst = 0.0f;
+    for (size_t i = 0; i < cpu.size(); ++i) worst = std::max(worst, std::abs(gpu[i] - cpu[i]));
+    EXPECT_LT(worst, 1e-4f) << stages << " stages: only the GPU's own rounding differs";
+    EXPECT_GT(*std::max_element(cpu.begin(), cpu.end()), 0.3f) << stages << " stages: real vapour";
+  }
+}
+
+// A full crystal venting from the climax (1.05) with the default rates, with the plan each lattice
+// size runs at 60 Hz (48^3: 1 explicit step, 96^3: 2, 256^3: 5 stages, 512^3: 10): its interior must
+// fall past the climax threshold (0.82) at the same moment, the physics' ln(1.05 / 0.82) / 0.40 =
+// 0.62 s. A half-float lattice did not: each 256^3 sub-step's decay was under half a half-float step,
+// and the vent time followed the lattice size and the driver's rounding (0.45 s at 48^3, 0.27 s at
+// 256^3 on lavapipe). The lattice here is small (the interior does not feel the surface within the
+// vent); only the plan differs.
 TEST_F(BloomGpu, TheCrystalVentsInTheSameTimeAtEveryLatticeSize) {
   constexpr uint32_t n = 24;
   constexpr float kFrame = 1.0f / 60.0f, kFrom = 1.05f, kClimax = 0.82f, kDecay = 0.40f;
@@ -103,18 +145,29 @@ TEST_F(BloomGpu, TheCrystalVentsInTheSameTimeAtEveryLatticeSize) {
         if (insideCrystal(voxelCentre({x, y, z}, n))) full[(size_t(z) * n + y) * n + x] = kFrom;
   const size_t centre = (size_t(n / 2) * n + n / 2) * n + n / 2;
   const float expected = std::log(kFrom / kClimax) / kDecay;
-  for (uint32_t lattice : {48u, 96u, 256u}) {
-    const uint32_t substeps = substepsFor(scaledDiffusion(15.0f, lattice), kFrame);
+  for (uint32_t lattice : {48u, 96u, 256u, 512u}) {
+    const DiffusionPlan plan = diffusionPlan(scaledDiffusion(15.0f, lattice), kFrame);
     DiffusionParams p;
     p.diffusion = 0.0f;  // the interior of a uniform crystal: its Laplacian is zero
     p.decay = kDecay;
-    p.dt = kFrame / float(substeps);
-    const std::vector<float> after = run(n, full, p, int(substeps) * kFrames);
+    p.dt = plan.dt;
+    const std::vector<float> after = run(n, full, p, plan, kFrames);
+    // The centre alone, on the CPU: with no Laplacian each voxel is its own equation.
+    float cpu = kFrom;
+    for (uint32_t step = 0; step < kFrames * plan.superSteps; ++step) {
+      float older = cpu, here = cpu;
+      for (uint32_t j = 1; j <= plan.stages; ++j) {
+        const float next = stageVoxel(here, older, 6.0f * here, glm::vec3(0.0f), true, p, rklStage(j, plan.stages),
+                                      j == plan.stages);
+        older = here, here = next;
+      }
+      cpu = here;
+    }
     // The decay rate the lattice showed, and so when it passes 0.82.
     const float shownDecay = std::log(kFrom / after[centre]) / (kFrames * kFrame);
     const float vented = std::log(kFrom / kClimax) / shownDecay;
-    EXPECT_NEAR(after[centre], kFrom * std::pow(1.0f - kDecay * p.dt, float(substeps * kFrames)), 2e-4f) << lattice;
-    EXPECT_NEAR(vented, expected, 0.01f) << lattice << "^3, " << substeps << " sub-steps a frame";
+    EXPECT_NEAR(after[centre], cpu, 2e-5f) << lattice;
+    EXPECT_NEAR(vented, expected, 0.01f) << lattice << "^3, " << plan.passes() << " passes a frame";
   }
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The maths of the bloom scene (seed 000, "The Bloom"), in plain C++ that shaders/bloom/ mirrors and
-// GoogleTest checks: the octahedral crystal and its lattice, one explicit diffusion step (the CPU
-// reference of diffuse.comp), the stability bound that fixes the number of sub-steps, the phase
-// colours, the cursor's ray into the crystal, the CPU proxy of the seed, and the phase detector.
+// GoogleTest checks: the octahedral crystal and its lattice, the diffusion's passes (the CPU reference
+// of diffuse.comp) and the plan of explicit sub-steps or Runge-Kutta-Legendre stages a frame takes,
+// the phase colours, the cursor's ray into the crystal, the CPU proxy of the seed, and the phase
+// detector.
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -51,7 +52,8 @@ inline uint32_t crystalSamples(float span, float radius, uint32_t samples) {
 }
 
 // ---------------------------------------------------------------------------------- the diffusion
-// next = cur + D dt (sum of the six neighbours - 6 cur) - decay dt next + source dt, masked, clamped.
+// dc/dt = L(c) = D (sum of the six neighbours - 6 c) + source - decay c inside the crystal, zero
+// outside, clamped to [0, kMaxConcentration] after each step.
 // Rates are given for a 96^3 lattice and scaled with it, so a finer lattice shows the same picture:
 // D (voxels^2 / s) grows with (N / 96)^2 and the source's sigma (voxels) with N / 96.
 inline constexpr float kMaxConcentration = 1.05f;
@@ -63,7 +65,7 @@ inline constexpr float kStabilityLimit = 0.9f;
 struct DiffusionParams {
   float diffusion = 0.0f;  // D, voxels^2 / s at this lattice size
   float decay = 0.0f;      // per second
-  float dt = 0.0f;         // one sub-step, seconds
+  float dt = 0.0f;         // one step (an explicit sub-step, or a super step of stages), seconds
   bool sourceOn = false;
   glm::vec3 source{0.0f};  // the source centre, in voxel coordinates (0..N)
   float sigma = 1.0f;      // voxels
@@ -76,9 +78,63 @@ inline float scaledDiffusion(float diffusionAt96, uint32_t n) {
 }
 inline float scaledSigma(float sigmaAt96, uint32_t n) { return sigmaAt96 * float(n) / float(kReferenceLattice); }
 
+// How many explicit steps of the frame's time the stability limit allows (real: 1.7 needs two).
+inline float explicitStepsFor(float diffusion, float frameDt) { return 6.0f * diffusion * frameDt / kStabilityLimit; }
 // Fixed sub-steps for a frame of frameDt seconds so that D dt 6 stays at or under the limit.
 inline uint32_t substepsFor(float diffusion, float frameDt) {
-  return std::max(1u, uint32_t(std::ceil(6.0f * diffusion * frameDt / kStabilityLimit)));
+  return std::max(1u, uint32_t(std::ceil(explicitStepsFor(diffusion, frameDt))));
+}
+
+// A frame's diffusion: explicit sub-steps, or one super step of Runge-Kutta-Legendre stages (RKL1,
+// Meyer, Balsara & Aslam 2014). The explicit step's limit makes a frame's sub-steps grow with D, so
+// with the lattice squared: 48 at 512^3. s RKL1 stages form the Legendre polynomial P_s(1 + w z),
+// w = 2 / (s^2 + s), which is bounded by 1 for a step (s^2 + s) / 2 times the explicit limit: 10
+// passes do the work of 55 sub-steps. First order in time like the explicit step (its s = 1 case),
+// and at 0.9 of the limit it damps the fastest modes to 0.3-0.5 of themselves each super step.
+struct DiffusionPlan {
+  uint32_t superSteps = 1;  // each ends with the clamp
+  uint32_t stages = 1;      // passes in each; 1: the explicit step
+  float dt = 0.0f;          // one super step, seconds
+  uint32_t passes() const { return superSteps * stages; }
+};
+// The fewest stages whose super step covers `explicitSteps` explicit ones.
+inline uint32_t rklStagesFor(float explicitSteps) {
+  uint32_t s = 1;
+  while (float(s * s + s) * 0.5f < explicitSteps) ++s;
+  return s;
+}
+// The stages where they take fewer passes than the sub-steps, and exactly the sub-steps where not
+// (the default 96^3 lattice at 60 Hz: two explicit sub-steps, as before).
+inline DiffusionPlan diffusionPlan(float diffusion, float frameDt) {
+  const uint32_t substeps = substepsFor(diffusion, frameDt);
+  const uint32_t stages = rklStagesFor(explicitStepsFor(diffusion, frameDt));
+  if (stages < substeps) return {1, stages, frameDt};
+  return {substeps, 1, frameDt / float(substeps)};
+}
+
+// Stage j (1..s) of an s-stage super step of dt: next = keep * here + older * (the stage before
+// here) + step * dt * L(here). Stage 1 of one stage is the explicit step: {1, 0, 1}.
+struct StageWeights {
+  float keep = 1.0f, older = 0.0f, step = 1.0f;
+};
+inline StageWeights rklStage(uint32_t j, uint32_t stages) {
+  const float w = 2.0f / float(stages * stages + stages);
+  if (j <= 1) return {1.0f, 0.0f, w};
+  const float mu = float(2 * j - 1) / float(j);
+  return {mu, 1.0f - mu, mu * w};
+}
+// The stages rotate three lattices: slot 0 holds the frame's state, a stage reads the last two
+// results and writes the third slot. Stage 1 writes slot 1, or slot 2 where that would leave the
+// super step's result in slot 2, so the result always lands in slot 0 or 1: a lattice pair the
+// scene flips between, plus a scratch lattice that never holds the state.
+inline uint32_t firstStageSlot(uint32_t stages) { return stages % 3 == 2 ? 2u : 1u; }
+inline uint32_t resultSlot(uint32_t stages) {  // 0 or 1
+  uint32_t older = 0, here = 0;
+  for (uint32_t j = 1; j <= stages; ++j) {
+    const uint32_t next = j == 1 ? firstStageSlot(stages) : 3u - here - older;
+    older = here, here = next;
+  }
+  return here;
 }
 
 inline float sourceAt(glm::vec3 voxelCentreCoords, const DiffusionParams& p) {
@@ -87,23 +143,24 @@ inline float sourceAt(glm::vec3 voxelCentreCoords, const DiffusionParams& p) {
   return p.sourceRate * std::exp(-glm::dot(d, d) / (2.0f * p.sigma * p.sigma));
 }
 
-// One voxel's update, given its value and the sum of its six (edge-clamped) neighbours.
-inline float diffuseVoxel(float current, float neighbourSum, glm::vec3 voxelCoords, bool inside,
-                          const DiffusionParams& p) {
+// One voxel's stage, given its value, the stage before's, and the sum of its six (edge-clamped)
+// neighbours; the last stage of a super step clamps.
+inline float stageVoxel(float here, float older, float neighbourSum, glm::vec3 voxelCoords, bool inside,
+                        const DiffusionParams& p, const StageWeights& w, bool last) {
   if (!inside) return 0.0f;
-  float next = current + p.diffusion * (neighbourSum - 6.0f * current) * p.dt;
-  next += sourceAt(voxelCoords, p) * p.dt;
-  next -= p.decay * next * p.dt;
-  return std::clamp(next, 0.0f, kMaxConcentration);
+  const float change = p.diffusion * (neighbourSum - 6.0f * here) + sourceAt(voxelCoords, p) - p.decay * here;
+  const float next = w.keep * here + w.older * older + w.step * p.dt * change;
+  return last ? std::clamp(next, 0.0f, kMaxConcentration) : next;
 }
 
-// The CPU reference of one step of shaders/bloom/diffuse.comp over an n^3 lattice (x fastest).
-inline void diffuseLattice(const std::vector<float>& in, std::vector<float>& out, uint32_t n,
-                           const DiffusionParams& p) {
+// The CPU reference of one pass of shaders/bloom/diffuse.comp over an n^3 lattice (x fastest);
+// `older` is read only where w.older is not zero.
+inline void diffusionStage(const std::vector<float>& in, const std::vector<float>& older, std::vector<float>& out,
+                           uint32_t n, const DiffusionParams& p, const StageWeights& w, bool last) {
   out.resize(in.size());
   const auto at = [&](int x, int y, int z) {
-    const int last = int(n) - 1;  // zero flux: an edge voxel's missing neighbour is itself
-    x = std::clamp(x, 0, last), y = std::clamp(y, 0, last), z = std::clamp(z, 0, last);
+    const int end = int(n) - 1;  // zero flux: an edge voxel's missing neighbour is itself
+    x = std::clamp(x, 0, end), y = std::clamp(y, 0, end), z = std::clamp(z, 0, end);
     return in[(size_t(z) * n + size_t(y)) * n + size_t(x)];
   };
   for (uint32_t z = 0; z < n; ++z)
@@ -113,9 +170,28 @@ inline void diffuseLattice(const std::vector<float>& in, std::vector<float>& out
         const float sum = at(ix - 1, iy, iz) + at(ix + 1, iy, iz) + at(ix, iy - 1, iz) + at(ix, iy + 1, iz) +
                           at(ix, iy, iz - 1) + at(ix, iy, iz + 1);
         const glm::uvec3 v{x, y, z};
-        out[(size_t(z) * n + y) * n + x] =
-            diffuseVoxel(at(ix, iy, iz), sum, glm::vec3(v) + 0.5f, insideCrystal(voxelCentre(v, n)), p);
+        const size_t i = (size_t(z) * n + y) * n + x;
+        out[i] = stageVoxel(in[i], w.older != 0.0f ? older[i] : 0.0f, sum, glm::vec3(v) + 0.5f,
+                            insideCrystal(voxelCentre(v, n)), p, w, last);
       }
+}
+// One explicit step of p.dt.
+inline void diffuseLattice(const std::vector<float>& in, std::vector<float>& out, uint32_t n,
+                           const DiffusionParams& p) {
+  diffusionStage(in, in, out, n, p, StageWeights{}, true);
+}
+// A frame of the plan, in place (p.dt is the plan's).
+inline void diffuseFrame(std::vector<float>& lattice, uint32_t n, DiffusionParams p, const DiffusionPlan& plan) {
+  p.dt = plan.dt;
+  std::vector<float> older, next;
+  for (uint32_t step = 0; step < plan.superSteps; ++step) {
+    older = lattice;
+    for (uint32_t j = 1; j <= plan.stages; ++j) {
+      diffusionStage(lattice, older, next, n, p, rklStage(j, plan.stages), j == plan.stages);
+      older.swap(lattice);
+      lattice.swap(next);
+    }
+  }
 }
 
 // The fraction of the interior (insideCore) past each of four thresholds: the CPU mirror of stats.comp.
@@ -300,18 +376,19 @@ inline std::string thresholdOrderError(const std::array<float, 4>& t) {
   return {};
 }
 
-// Whether an n^3 lattice pair (two r32f images: the step reads one and writes the other) fits the
-// device: within its largest 3D image and within half its device memory, the rest left to the frame's
-// images, the other scenes and the driver.
+// Whether an n^3 lattice (three r32f images: a stage reads two and writes the third) fits the device:
+// within its largest 3D image and within half its device memory, the rest left to the frame's images,
+// the other scenes and the driver.
+inline constexpr uint32_t kLatticeImages = 3;
 inline std::string latticeFitError(uint32_t n, uint32_t maxImageDimension3D, uint64_t deviceLocalHeap,
                                    std::string_view deviceName) {
   if (n > maxImageDimension3D)
     return fmt::format("a {}^3 lattice is larger than the {}^3 3D images {} can make", n, maxImageDimension3D,
                        deviceName);
-  const uint64_t pair = 2ull * 4ull * uint64_t(n) * n * n;
-  if (pair > deviceLocalHeap / 2)
-    return fmt::format("a {}^3 lattice needs {} MiB of device memory (two images), more than half of the {} MiB on {}",
-                       n, pair >> 20, deviceLocalHeap >> 20, deviceName);
+  const uint64_t bytes = uint64_t(kLatticeImages) * 4ull * uint64_t(n) * n * n;
+  if (bytes > deviceLocalHeap / 2)
+    return fmt::format("a {}^3 lattice needs {} MiB of device memory ({} images), more than half of the {} MiB on {}",
+                       n, bytes >> 20, kLatticeImages, deviceLocalHeap >> 20, deviceName);
   return {};
 }
 

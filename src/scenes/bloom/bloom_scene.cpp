@@ -109,6 +109,7 @@ class BloomScene final : public Scene {
       throw Error(fmt::format("bloom needs r32f 3D images it can store to and filter linearly, which {} lacks",
                               context.device.properties().deviceName));
     lattice_ = resources_.declare(latticeDecl(settings_.lattice));
+    stage_ = resources_.declare(stageDecl(settings_.lattice));
     builtLattice_ = settings_.lattice;
   }
   ~BloomScene() override { audio_.drone(time_, false); }
@@ -187,6 +188,7 @@ class BloomScene final : public Scene {
           chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_);
     if (state.isRestoring()) {  // the checkpoint's vapour, over zeros
       resources_.redeclare(lattice_, latticeDecl(builtLattice_));
+      resources_.redeclare(stage_, stageDecl(builtLattice_));
       pendingFill_ = 0.0f;
     }
     state.contents(resources_, lattice_);
@@ -214,8 +216,10 @@ class BloomScene final : public Scene {
     ImGui::PlotLines("GPU peak", peak.data(), int(peak.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
     ImGui::PlotLines("GPU past rose", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
     ImGui::PlotLines("CPU proxy V", proxy.data(), int(proxy.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
-    ImGui::Text("%u sub-steps a frame (D dt 6 = %.2f)%s", substeps(), stabilityNumber(),
-                exhaling_ ? "   exhaling" : "");
+    const DiffusionPlan plan = this->plan();
+    ImGui::Text("%u diffusion passes a frame (%s; %.1f explicit steps' worth)%s", plan.passes(),
+                plan.stages > 1 ? "Runge-Kutta-Legendre stages" : "explicit sub-steps",
+                explicitStepsFor(scaledD(), stepSeconds_), exhaling_ ? "   exhaling" : "");
   }
 
  private:
@@ -253,12 +257,21 @@ class BloomScene final : public Scene {
     decl.zeroed = true;  // both images: diffuse.comp never writes a voxel outside the crystal
     return decl;
   }
+  // The third lattice a super step's stages rotate through; it never holds the state between frames.
+  static gpu::ImageDecl stageDecl(int n) {
+    gpu::ImageDecl decl = latticeDecl(n);
+    decl.name = "bloom vapour stage";
+    decl.pairing = gpu::Pairing::Single;
+    decl.state = false;
+    return decl;
+  }
 
   // A new lattice (size change, fill, vent): the old images are retired behind frames in flight.
   void restart(float fill) {
     exhaling_ = false;
     pendingFill_ = fill;
     resources_.redeclare(lattice_, latticeDecl(settings_.lattice));
+    resources_.redeclare(stage_, stageDecl(settings_.lattice));
     builtLattice_ = settings_.lattice;
     builtFill_ = settings_.fill;
   }
@@ -267,8 +280,7 @@ class BloomScene final : public Scene {
     return {settings_.thresholdAmber, settings_.thresholdRose, settings_.thresholdCrimson, settings_.thresholdChroma};
   }
   float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
-  uint32_t substeps() const { return substepsFor(scaledD(), stepSeconds_); }
-  float stabilityNumber() const { return 6.0f * scaledD() * stepSeconds_ / float(substeps()); }
+  DiffusionPlan plan() const { return diffusionPlan(scaledD(), stepSeconds_); }
 
   void fill(const FrameContext& frame) {
     if (pendingFill_ <= 0.0f) return;
@@ -283,27 +295,41 @@ class BloomScene final : public Scene {
     pendingFill_ = 0.0f;
   }
 
+  // Each pending step is a frame of the plan: explicit sub-steps, or the stages of one super step
+  // rotating the lattice pair and the stage lattice (bloom_math.h: resultSlot), ending in the pair.
   void simulate(const FrameContext& frame) {
     if (stepsPending_ == 0) return;
     const auto pass = frame.pass("bloom diffuse");
     const uint32_t n = uint32_t(settings_.lattice);
-    const uint32_t perStep = substeps();
-    const shader::BloomDiffusePush push{.source = source_.voxel,
-                                        .diffusion = scaledD(),
-                                        .decay = source_.on ? settings_.decayRising : settings_.decayVenting,
-                                        .dt = stepSeconds_ / float(perStep),
-                                        .sigma = scaledSigma(settings_.sigma, n),
-                                        .sourceRate = source_.on ? source_.rate : 0.0f};
+    const DiffusionPlan plan = this->plan();
+    shader::BloomDiffusePush push{.source = source_.voxel,
+                                  .diffusion = scaledD(),
+                                  .decay = source_.on ? settings_.decayRising : settings_.decayVenting,
+                                  .sigma = scaledSigma(settings_.sigma, n),
+                                  .sourceRate = source_.on ? source_.rate : 0.0f};
     diffuse_.bind(frame.cmd);
-    diffuse_.constants(frame.cmd, push);
-    for (uint32_t i = 0; i < uint32_t(stepsPending_) * perStep; ++i) {
-      gpu::Image& read = frame.image(lattice_);
-      gpu::Image& write = frame.resources.previous(lattice_);
-      frame.transition(read, gpu::use::ComputeRead);
-      frame.transition(write, gpu::use::ComputeWrite);
-      diffuse_.push(frame.cmd, gpu::Bindings().storageImage("current", read.view()).storageImage("next", write.view()));
-      diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
-      frame.resources.flip(lattice_);
+    for (uint32_t step = 0; step < uint32_t(stepsPending_) * plan.superSteps; ++step) {
+      gpu::Image* slots[3] = {&frame.image(lattice_), &frame.resources.previous(lattice_), &frame.image(stage_)};
+      uint32_t older = 0, here = 0;
+      for (uint32_t j = 1; j <= plan.stages; ++j) {
+        const uint32_t next = j == 1 ? firstStageSlot(plan.stages) : 3u - here - older;
+        const StageWeights w = rklStage(j, plan.stages);
+        push.dt = w.step * plan.dt;
+        push.keep = w.keep;
+        push.older = w.older;
+        push.last = j == plan.stages ? 1u : 0u;
+        frame.transition(*slots[here], gpu::use::ComputeRead);
+        frame.transition(*slots[older], gpu::use::ComputeRead);
+        frame.transition(*slots[next], gpu::use::ComputeWrite);
+        diffuse_.push(frame.cmd, gpu::Bindings()
+                                     .storageImage("current", slots[here]->view())
+                                     .storageImage("older", slots[older]->view())
+                                     .storageImage("next", slots[next]->view()));
+        diffuse_.constants(frame.cmd, push);
+        diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
+        older = here, here = next;
+      }
+      if (here == 1) frame.resources.flip(lattice_);
     }
     stepsPending_ = 0;
   }
@@ -470,6 +496,7 @@ class BloomScene final : public Scene {
   gpu::BufferHandle statsCounts_;
   gpu::ReadbackRing statsReadback_;
   gpu::ImageHandle lattice_;
+  gpu::ImageHandle stage_;
   Settings settings_;
   int builtLattice_ = 0;
   float builtFill_ = 0.0f;
