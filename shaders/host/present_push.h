@@ -8,7 +8,6 @@ VITRINE_SHARED_BEGIN
 struct HostPresentPush {
   uint encodeSrgb;  // non-zero: a UNORM destination shown as sRGB, so the transfer function is applied here
   float fade;       // the incoming scene's weight, 0..1
-  uint warp;        // non-zero: the output's warp (the Warp block) applies
 };
 VITRINE_SHARED_END
 

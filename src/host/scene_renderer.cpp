@@ -13,6 +13,13 @@
 
 namespace vitrine::host {
 
+namespace {
+// present.comp with or without the warp (its specialisation constant 0).
+gpu::ComputeProgram presentVariant(gpu::ProgramLibrary& programs, bool warped) {
+  return gpu::ComputeProgram(programs, "host/present.comp", {.specialization = {warped ? 1 : 0}});
+}
+}  // namespace
+
 SceneRenderer::SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& programs, const Assets& assets,
                              uint32_t framesInFlight)
     : device_(device),
@@ -21,7 +28,7 @@ SceneRenderer::SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& pro
       framesInFlight_(framesInFlight),
       timer_(device, framesInFlight),
       stream_(device),
-      present_(programs, "host/present.comp") {}
+      presents_{presentVariant(programs, false), presentVariant(programs, true)} {}
 
 // Shutdown is the one place that waits: every retired scene and pipeline must be gone before the
 // program library they registered with.
@@ -164,16 +171,16 @@ void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, gpu
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   const bool warped = dst.warp && !dst.warp->isIdentity();
   const gpu::StreamSlice warp = stream_.writeValue(warpBlock(warped ? *dst.warp : maths::OutputWarp{}));
-  present_.bind(cmd);
-  present_.push(cmd, gpu::Bindings()
-                         .sampledImage("source", frame.view(), linear, gpu::use::ComputeSample.layout)
-                         .storageImage("destination", dst.storageView)
-                         .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout)
-                         .uniformBuffer("Warp", warp.buffer, warp.offset, sizeof(shader::HostOutputWarp)));
-  present_.constants(cmd, shader::HostPresentPush{.encodeSrgb = dst.encodeSrgb ? 1u : 0u,
-                                                  .fade = fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f,
-                                                  .warp = warped ? 1u : 0u});
-  present_.dispatchOver(cmd, dst.extent);
+  const gpu::ComputeProgram& program = presents_[warped ? 1 : 0];
+  program.bind(cmd);
+  program.push(cmd, gpu::Bindings()
+                        .sampledImage("source", frame.view(), linear, gpu::use::ComputeSample.layout)
+                        .storageImage("destination", dst.storageView)
+                        .sampledImage("incoming", other.view(), linear, gpu::use::ComputeSample.layout)
+                        .uniformBuffer("Warp", warp.buffer, warp.offset, sizeof(shader::HostOutputWarp)));
+  program.constants(cmd, shader::HostPresentPush{.encodeSrgb = dst.encodeSrgb ? 1u : 0u,
+                                                 .fade = fade.other ? std::clamp(fade.weight, 0.0f, 1.0f) : 0.0f});
+  program.dispatchOver(cmd, dst.extent);
   gpu::transition(cmd, dst.image, gpu::use::ComputeWrite, dst.after);
 }
 

@@ -12,6 +12,7 @@
 #include "host/flash_guard.h"
 #include "scenes/scene.h"
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -105,7 +106,7 @@ class SceneRenderer {
   uint32_t framesInFlight_;
   gpu::PassTimer timer_;
   gpu::StreamArena stream_;
-  gpu::ComputeProgram present_;
+  std::array<gpu::ComputeProgram, 2> presents_;  // present.comp: [warped]
   const SceneInfo* info_ = nullptr;
   EventSink* events_ = nullptr;
   audio::SilentAudio silence_;
