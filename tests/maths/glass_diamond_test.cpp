@@ -4,6 +4,7 @@
 #include "scenes/glass/diamond.h"
 #include "scenes/glass/optics.h"
 #include "scenes/glass/shapes.h"
+#include "support/random_vectors.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
@@ -29,17 +30,8 @@ const DiamondGeometry& stone() {
   return g;
 }
 
-glm::vec3 randomSigned(uint32_t i, uint32_t salt) {
-  return glm::vec3(maths::hash01({i, salt, 1u}), maths::hash01({i, salt, 2u}), maths::hash01({i, salt, 3u})) * 2.0f -
-         1.0f;
-}
-glm::vec3 randomDirection(uint32_t i, uint32_t salt) {
-  for (uint32_t k = 0;; ++k) {
-    const glm::vec3 v = randomSigned(i, salt + 7919u * k);
-    const float l = glm::length(v);
-    if (l > 0.05f && l <= 1.0f) return v / l;
-  }
-}
+using test::randomDirection;
+using test::randomSigned;
 glm::vec3 randomInside(uint32_t& i) {
   const glm::vec3 half{0.5f * kDiameter, 0.5f * kDiameter, stone().culetDepth};
   for (;; ++i) {

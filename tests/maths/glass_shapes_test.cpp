@@ -3,6 +3,7 @@
 #include "maths/hash.h"
 #include "scenes/glass/diamond.h"
 #include "scenes/glass/shapes.h"
+#include "support/random_vectors.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/matrix.hpp>
@@ -17,17 +18,8 @@
 namespace vitrine::glass {
 namespace {
 
-glm::vec3 random3(uint32_t i, uint32_t salt) {
-  return {maths::hash01({i, salt, 1u}), maths::hash01({i, salt, 2u}), maths::hash01({i, salt, 3u})};
-}
-glm::vec3 randomSigned(uint32_t i, uint32_t salt) { return random3(i, salt) * 2.0f - 1.0f; }
-glm::vec3 randomDirection(uint32_t i, uint32_t salt) {
-  for (uint32_t k = 0;; ++k) {  // rejection inside the unit ball: uniform directions
-    const glm::vec3 v = randomSigned(i, salt + 7919u * k);
-    const float l = glm::length(v);
-    if (l > 0.05f && l <= 1.0f) return v / l;
-  }
-}
+using test::randomDirection;
+using test::randomSigned;
 
 // The reference exit: small steps along d until the field turns positive, then bisection.
 float marchedExit(const ShapeDims& s, glm::vec3 p, glm::vec3 d) {

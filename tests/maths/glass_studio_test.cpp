@@ -12,7 +12,6 @@
 namespace vitrine::glass {
 namespace {
 
-constexpr float kPi = glm::pi<float>();
 
 glm::vec3 randomDirection(uint32_t i) {
   const float z = maths::hash01({i, 1u, 0u}) * 2.0f - 1.0f, a = maths::hash01({i, 2u, 0u}) * 2.0f * kPi;

@@ -2,6 +2,7 @@
 #include "gpu/check.h"
 #include "image/image_compare.h"
 #include "core/stats.h"
+#include "support/images.h"
 
 #include <gtest/gtest.h>
 
@@ -11,38 +12,38 @@
 namespace vitrine {
 namespace {
 
-ImageRgba flat(uint32_t w, uint32_t h, float v) { return {w, h, std::vector<float>(size_t(w) * h * 4, v)}; }
+using test::flatImage;
 
 TEST(Compare, IdenticalImagesPass) {
-  const auto a = flat(16, 16, 0.3f);
+  const auto a = flatImage(16, 16, 0.3f);
   const auto r = compareImages(a, a);
   EXPECT_TRUE(r.passed);
   EXPECT_EQ(r.failing, 0u);
 }
 
 TEST(Compare, OneWrongPixelBeyondTheHardLimitFails) {
-  const auto a = flat(64, 64, 0.3f);
+  const auto a = flatImage(64, 64, 0.3f);
   auto b = a;
   b.at(10, 10)[1] = 0.9f;
   EXPECT_FALSE(compareImages(a, b).passed);
 }
 
 TEST(Compare, SmallRoundingPasses) {
-  const auto a = flat(64, 64, 0.3f);
+  const auto a = flatImage(64, 64, 0.3f);
   auto b = a;
   for (float& v : b.pixels) v += 0.004f;
   EXPECT_TRUE(compareImages(a, b).passed);
 }
 
 TEST(Compare, ColourShiftAcrossTheImageFails) {
-  const auto a = flat(64, 64, 0.5f);
+  const auto a = flatImage(64, 64, 0.5f);
   auto b = a;
   for (size_t i = 0; i < b.pixels.size(); i += 4) b.pixels[i] *= 1.2f;  // red +20 %
   EXPECT_FALSE(compareImages(a, b).passed);
 }
 
 TEST(Compare, NonFiniteFails) {
-  const auto a = flat(8, 8, 0.5f);
+  const auto a = flatImage(8, 8, 0.5f);
   auto b = a;
   b.pixels[5] = std::numeric_limits<float>::quiet_NaN();
   const auto r = compareImages(a, b);
@@ -50,7 +51,7 @@ TEST(Compare, NonFiniteFails) {
   EXPECT_EQ(r.nonFinite, 1u);
 }
 
-TEST(Compare, SizeMismatchFails) { EXPECT_FALSE(compareImages(flat(8, 8, 0), flat(8, 9, 0)).passed); }
+TEST(Compare, SizeMismatchFails) { EXPECT_FALSE(compareImages(flatImage(8, 8, 0), flatImage(8, 9, 0)).passed); }
 
 TEST(Stats, NearestRankPercentiles) {
   std::vector<double> v;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "support/temp_folder.h"
+#include "support/images.h"
 #include <unistd.h>
 
 #include <chrono>
@@ -21,7 +22,7 @@
 namespace vitrine {
 namespace {
 
-ImageRgba flat(uint32_t w, uint32_t h, float v) { return {w, h, std::vector<float>(size_t(w) * h * 4, v)}; }
+using test::flatImage;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -29,9 +30,9 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(CompareNonFinite, NaNInTheReferenceFails) {
-  auto reference = flat(8, 8, 0.5f);
+  auto reference = flatImage(8, 8, 0.5f);
   reference.at(3, 4)[0] = kNaN;
-  const auto r = compareImages(reference, flat(8, 8, 0.5f));
+  const auto r = compareImages(reference, flatImage(8, 8, 0.5f));
   EXPECT_FALSE(r.passed) << r.summary();
   EXPECT_EQ(r.nonFiniteReference, 1u);
   EXPECT_EQ(r.nonFinite, 0u);
@@ -41,10 +42,10 @@ TEST(CompareNonFinite, NaNInTheReferenceFails) {
 }
 
 TEST(CompareNonFinite, InfinityInTheReferenceFailsAndIsCountedAsAFailingPixel) {
-  auto reference = flat(8, 8, 0.5f);
+  auto reference = flatImage(8, 8, 0.5f);
   reference.at(0, 0)[2] = kInf;
   reference.at(1, 0)[1] = -kInf;
-  const auto r = compareImages(reference, flat(8, 8, 0.5f));
+  const auto r = compareImages(reference, flatImage(8, 8, 0.5f));
   EXPECT_FALSE(r.passed);
   EXPECT_EQ(r.nonFiniteReference, 2u);
   EXPECT_EQ(r.failing, 2u);
@@ -53,7 +54,7 @@ TEST(CompareNonFinite, InfinityInTheReferenceFailsAndIsCountedAsAFailingPixel) {
 }
 
 TEST(CompareNonFinite, NonFiniteOnBothSidesIsCountedOnEach) {
-  auto reference = flat(4, 4, 0.5f);
+  auto reference = flatImage(4, 4, 0.5f);
   auto candidate = reference;
   reference.at(0, 0)[0] = kNaN;
   candidate.at(0, 0)[0] = kNaN;  // the same NaN on both sides is still not a picture
@@ -66,7 +67,7 @@ TEST(CompareNonFinite, NonFiniteOnBothSidesIsCountedOnEach) {
 }
 
 TEST(CompareSize, MismatchNamesBothSizes) {
-  const auto r = compareImages(flat(192, 108, 0), flat(64, 36, 0));
+  const auto r = compareImages(flatImage(192, 108, 0), flatImage(64, 36, 0));
   EXPECT_FALSE(r.passed);
   EXPECT_FALSE(r.sizeMatches);
   EXPECT_EQ(r.summary(), "size mismatch: reference 192x108, candidate 64x36");
@@ -76,7 +77,7 @@ class ImageFiles : public test::TempFolderTest {};
 
 // A reference EXR holding NaN, written and read back as `vitrine compare` and the golden tests do.
 TEST_F(ImageFiles, ANaNReferenceWrittenToExrFailsTheComparison) {
-  auto reference = flat(8, 8, 0.25f);
+  auto reference = flatImage(8, 8, 0.25f);
   reference.at(2, 2)[1] = kNaN;
   reference.at(5, 5)[0] = kInf;
   const auto path = folder_ / "nan_reference.exr";
@@ -85,7 +86,7 @@ TEST_F(ImageFiles, ANaNReferenceWrittenToExrFailsTheComparison) {
   ASSERT_EQ(read.width, 8u);
   EXPECT_TRUE(std::isnan(read.at(2, 2)[1]));
   EXPECT_TRUE(std::isinf(read.at(5, 5)[0]));
-  const auto r = compareImages(read, flat(8, 8, 0.25f));
+  const auto r = compareImages(read, flatImage(8, 8, 0.25f));
   EXPECT_FALSE(r.passed) << r.summary();
   EXPECT_TRUE(contains(r.summary(), "2 non-finite in the reference")) << r.summary();
 }
@@ -176,7 +177,7 @@ TEST_F(ImageFiles, AnExrHeaderClaimingMoreThanTheFileIsRefusedAtOnce) {
 // Every EXR Vitrine ships or makes passes the header check: the seeds' compressions, the goldens.
 TEST_F(ImageFiles, WellFormedExrHeadersPassTheCheck) {
   const auto path = folder_ / "written.exr";
-  writeImage(path, flat(8, 8, 0.5f));
+  writeImage(path, flatImage(8, 8, 0.5f));
   EXPECT_NO_THROW(checkExrHeader(path));
   for (const char* pair : {"stale-cache-1.exr", "stale-cache-2.exr"})
     EXPECT_NO_THROW(checkExrHeader(std::filesystem::path(VITRINE_FUZZ_REGRESSION_DIR) / "image_exr" / pair));
@@ -213,7 +214,7 @@ TEST_F(ImageFiles, AMixedCasePngNameGetsSrgbPixels) {
   if (!canWritePng()) GTEST_SKIP() << "this build writes EXR only";
   for (const char* name : {"lower.png", "mixed.Png", "upper.PNG"}) {
     const auto path = folder_ / name;
-    ImageRgba grey = flat(4, 2, 0.2f);
+    ImageRgba grey = flatImage(4, 2, 0.2f);
     for (size_t i = 3; i < grey.pixels.size(); i += 4) grey.pixels[i] = 1.0f;  // opaque: PNG alpha is straight
     writeImage(path, grey);
     const Picture picture = readPicture(path, 16);
@@ -227,7 +228,7 @@ TEST_F(ImageFiles, AWholeImageIsToldFromATruncatedOrResizedOne) {
   for (const char* name : {"frame.exr", "frame.png"}) {
     if (std::string_view(name).ends_with(".png") && !canWritePng()) continue;
     const auto path = folder_ / name;
-    ImageRgba image = flat(64, 36, 0.0f);
+    ImageRgba image = flatImage(64, 36, 0.0f);
     for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float((i * 2654435761u) % 1000) / 1000.0f;
     writeImage(path, image);
     EXPECT_TRUE(isWholeImage(path, 64, 36)) << name;

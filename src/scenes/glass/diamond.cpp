@@ -15,7 +15,6 @@ namespace vitrine::glass {
 namespace {
 
 constexpr float kEighth = glm::pi<float>() / 4.0f;  // 45°: the angle between neighbouring mains
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 glm::vec3 polar(float radius, float azimuth, float z) {
   return {radius * std::cos(azimuth), radius * std::sin(azimuth), z};

@@ -13,10 +13,13 @@
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace vitrine::glass {
+
+inline constexpr float kInf = std::numeric_limits<float>::infinity();  // no hit, or no bound
 
 inline constexpr int kDiamondPlanes = GLASS_DIAMOND_PLANES;
 inline constexpr int kGirdleFacet = 57;

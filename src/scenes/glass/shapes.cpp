@@ -7,8 +7,6 @@
 namespace vitrine::glass {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-
 glm::vec3 size(const ShapeDims& s) { return glm::vec3(s.sizeEdge); }
 
 // 1 / v with zero components replaced by a tiny number, so slab tests need no special cases.

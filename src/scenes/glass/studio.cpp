@@ -10,8 +10,6 @@
 namespace vitrine::glass {
 namespace {
 
-constexpr float kPi = glm::pi<float>();
-
 // Lights, by where they stand seen from the stone. Longitude 0 is the camera, +-pi straight ahead.
 // Radiances are linear, 15-200x the cyclorama's brightest, as a studio's strobes are: at the diamond
 // preset's exposure the room reads as a light grey and the lights clip to white, and a wavelength that

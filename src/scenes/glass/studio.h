@@ -16,6 +16,8 @@
 
 namespace vitrine::glass {
 
+inline constexpr float kPi = 3.14159265358979f;
+
 inline constexpr std::string_view kStudioPanorama = "photo_studio";
 
 // The original's equirectangular convention: longitude atan2(d.x, d.z) plus the rotation, u = longitude /
