@@ -67,8 +67,10 @@ void main() {
   const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
   // The transmittances multiply, so the optical depth adds: one exp at the end rather than one a sample,
   // and the march stops where the path is opaque (depth 5.3: alpha 0.995).
-  float depth = 0.0;
-  for (uint i = 0u; i < samples && depth < 5.3; ++i) {
+  // Clear glass (no vapour anywhere past kCoverFrom, the state the crystal rests in): every sample's
+  // density is kGlassDensity, so the path's depth is known without sampling the lattice.
+  float depth = pc.clearGlass != 0u ? kGlassDensity * step * float(samples) : 0.0;
+  for (uint i = 0u; pc.clearGlass == 0u && i < samples && depth < 5.3; ++i) {
     const vec3 p = entry + rd * ((float(i) + jitter) * step);
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
     depth += sampleDensity(v) * step;

@@ -125,6 +125,19 @@ TEST_F(BloomScene, ReducedMotionHoldsTheClimaxStill) {
 // The low tier renders fewer pixels, never a different picture: its crystal edge (upscaled) stays as
 // smooth as the full-scale one, where a binary silhouette at half scale is a staircase of 2-pixel steps.
 // Measured as the largest jump between neighbouring pixels across the silhouette.
+// Clear glass (no voxel near kCoverFrom, no vapour since): once the statistics have said so, the
+// crystal pass takes the glass's optical depth without sampling the lattice (bloom_scene.cpp:
+// clearGlass). The first frame, before any statistics are back, samples it; a later one does not. An
+// empty crystal under reduced motion (the jitter held) must look the same both ways.
+TEST_F(BloomScene, ClearGlassLooksTheSameWithoutSamplingTheLattice) {
+  const ImageRgba sampled = render({}, 1, nullptr, true);
+  const ImageRgba skipped = render({}, 12, nullptr, true);
+  float worst = 0.0f;
+  for (size_t i = 0; i < sampled.pixels.size(); ++i) worst = std::max(worst, std::abs(sampled.pixels[i] - skipped.pixels[i]));
+  EXPECT_LT(worst, 1e-4f) << "the same light, summed or multiplied";
+  EXPECT_GT(centreColour(skipped).value, 0.5f) << "and the crystal is there";
+}
+
 TEST_F(BloomScene, TheLowTierKeepsTheCrystalsEdgesSmooth) {
   const auto roughest = [](const ImageRgba& image) {
     float worst = 0.0f;

@@ -160,6 +160,7 @@ class BloomScene final : public Scene {
     if (detector_.climax() && !exhaling_ && time_ - climaxTime_ >= kBloomSeconds) exhaling_ = true;
     if (exhaling_ && !detector_.climax() && detector_.phase() == Phase::Pristine) exhaling_ = false;
     source_.on = (near || breathing) && !exhaling_;
+    if (source_.on) lastVapour_ = time_;
     // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins.
     if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
   }
@@ -185,7 +186,8 @@ class BloomScene final : public Scene {
       while (auto reading = pollStatistics()) carried_.push_back(*reading);
     state(droning_, appliedGain_, builtLattice_, builtFill_, time_, frame_, seed_, source_, stepsPending_,
           givenUpSeconds_, stepSeconds_, proxy_, stats_, detector_, history_, carried_, label_, labelTime_,
-          chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_);
+          chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_, statsTime_,
+          lastVapour_);
     if (state.isRestoring()) {  // the checkpoint's vapour, over zeros
       resources_.redeclare(lattice_, latticeDecl(builtLattice_));
       resources_.redeclare(stage_, stageDecl(builtLattice_));
@@ -241,6 +243,7 @@ class BloomScene final : public Scene {
 
   void observe(const Reading& reading) {
     stats_ = reading.stats;
+    statsTime_ = reading.time;
     history_.push_back({float(stats_.peak), stats_.fractions()[1], proxy_});
     if (history_.size() > kHistory) history_.pop_front();
     if (settings_.phaseSource == PhaseSource::Gpu) detect(stats_.fractions(), kFractionBands, reading.time);
@@ -270,6 +273,7 @@ class BloomScene final : public Scene {
   void restart(float fill) {
     exhaling_ = false;
     pendingFill_ = fill;
+    lastVapour_ = time_;
     resources_.redeclare(lattice_, latticeDecl(settings_.lattice));
     resources_.redeclare(stage_, stageDecl(settings_.lattice));
     builtLattice_ = settings_.lattice;
@@ -280,6 +284,10 @@ class BloomScene final : public Scene {
     return {settings_.thresholdAmber, settings_.thresholdRose, settings_.thresholdCrimson, settings_.thresholdChroma};
   }
   float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
+  // Whether the crystal is clear glass now: the newest statistics saw no voxel at half of kCoverFrom,
+  // and no vapour has entered since (no source, no new fill); without a source the lattice only
+  // spreads and decays, so its peak only falls (the half leaves room for a stage's rounding).
+  bool clearGlass() const { return statsTime_ >= lastVapour_ && stats_.peak < 0.5 * kCoverFrom; }
   DiffusionPlan plan() const { return diffusionPlan(scaledD(), stepSeconds_); }
 
   void fill(const FrameContext& frame) {
@@ -379,7 +387,8 @@ class BloomScene final : public Scene {
                                         .frame = reducedMotion_ ? 0u : uint32_t(frame_),
                                         .traceSteps = uint32_t(settings_.traceSteps),
                                         .samples = uint32_t(settings_.samples),
-                                        .shimmer = shimmer};
+                                        .shimmer = shimmer,
+                                        .clearGlass = clearGlass() ? 1u : 0u};
     crystal_.bind(frame.cmd);
     crystal_.push(frame.cmd, gpu::Bindings().sampledImage(
                                  "vapour", lattice.view(),
@@ -511,6 +520,8 @@ class BloomScene final : public Scene {
   } source_;
   int stepsPending_ = 0;
   float pendingFill_ = 0.0f;  // written into the lattice by the next frame's fill pass
+  double lastVapour_ = 0.0;   // when vapour last entered: a source's frame, or a new lattice
+  double statsTime_ = -1.0;   // the frame the newest statistics measured
   double givenUpSeconds_ = 0.0;  // steps beyond kMaxSecondsPerFrame, until the gallery asks
   float stepSeconds_ = 1.0f / 60.0f;
   float proxy_ = 0.0f;
