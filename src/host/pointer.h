@@ -5,6 +5,8 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
+
 namespace vitrine::host {
 
 // Positions in framebuffer pixels, events since the last take.
@@ -15,6 +17,9 @@ struct Pointer {
   bool leftPressed = false;  // a press happened since the last take, even if already released
   float wheel = 0.0f;        // scroll steps since the last take
   bool inside = false;       // the cursor is over the view (not elsewhere on the desktop)
+  // Where the left button was let go, when it was since the last take: a slow frame can hold a drag's
+  // last moves and its release, and `pixels` is where the cursor went after.
+  std::optional<glm::vec2> releasedAt;
 };
 
 }  // namespace vitrine::host

@@ -31,7 +31,10 @@ void ProjectorSetup::pointer(const Pointer& pointer, maths::OutputWarp& warp) {
       if (const float d = glm::distance(warp.corners[size_t(i)] * size, pointer.pixels); d <= nearest)
         nearest = d, held_ = i, selected_ = i;
   }
-  if (!pointer.leftHeld) held_.reset();
+  if (held_ && !pointer.leftHeld) {  // let go: where it was let go, this frame's last moves included
+    if (pointer.releasedAt) move(warp, *held_, *pointer.releasedAt / size);
+    held_.reset();
+  }
   if (held_) move(warp, *held_, pointer.pixels / size);
 }
 

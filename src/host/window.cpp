@@ -183,19 +183,32 @@ std::vector<int> Window::takeKeys() { return std::exchange(keys_, {}); }
 
 std::vector<std::string> Window::takeDrops() { return std::exchange(drops_, {}); }
 
-Pointer Window::takePointer() {
+// The cursor in framebuffer pixels: GLFW reports screen coordinates, and on HiDPI displays a
+// framebuffer pixel is smaller.
+glm::vec2 Window::cursorPixels() const {
   double x = 0.0, y = 0.0;
   int width = 0, height = 0;
   glfwGetCursorPos(window_, &x, &y);
   glfwGetWindowSize(window_, &width, &height);
   const VkExtent2D framebuffer = framebufferSize();
-  // GLFW reports the cursor in screen coordinates; on HiDPI displays a framebuffer pixel is smaller.
   glm::vec2 scale(1.0f);
   if (width > 0 && height > 0) scale = glm::vec2(framebuffer.width, framebuffer.height) / glm::vec2(width, height);
+  return glm::vec2(float(x), float(y)) * scale;
+}
+
+Pointer Window::takePointer() {
+  double x = 0.0, y = 0.0;
+  int width = 0, height = 0;
+  glfwGetCursorPos(window_, &x, &y);
+  glfwGetWindowSize(window_, &width, &height);
   const bool inside = glfwGetWindowAttrib(window_, GLFW_HOVERED) && x >= 0.0 && y >= 0.0 && x < width && y < height;
-  return Pointer{glm::vec2(float(x), float(y)) * scale, framebuffer,
-                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, std::exchange(leftPressed_, false),
-                 std::exchange(wheel_, 0.0f), inside};
+  return Pointer{cursorPixels(),
+                 framebufferSize(),
+                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS,
+                 std::exchange(leftPressed_, false),
+                 std::exchange(wheel_, 0.0f),
+                 inside,
+                 std::exchange(leftReleasedAt_, std::nullopt)};
 }
 
 void Window::onKey(GLFWwindow* window, int key, int, int action, int) {
@@ -213,7 +226,10 @@ void Window::onDrop(GLFWwindow* window, int count, const char** paths) {
 }
 
 void Window::onMouseButton(GLFWwindow* window, int button, int action, int) {
-  if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) owner(window).leftPressed_ = true;
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  Window& self = owner(window);
+  if (action == GLFW_PRESS) self.leftPressed_ = true;
+  if (action == GLFW_RELEASE) self.leftReleasedAt_ = self.cursorPixels();  // events arrive in order: where it let go
 }
 
 void Window::onScroll(GLFWwindow* window, double, double y) { owner(window).wheel_ += float(y); }

@@ -3,6 +3,7 @@
 // between frames (keys, clicks, scrolling), held until the frame loop takes it.
 #include <vulkan/vulkan.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,6 +76,7 @@ class Window {
   static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
   static void onScroll(GLFWwindow* window, double x, double y);
   static void onDrop(GLFWwindow* window, int count, const char** paths);
+  glm::vec2 cursorPixels() const;  // framebuffer pixels
 
   GLFWwindow* window_ = nullptr;
   GLFWmonitor* monitor_ = nullptr;  // where the window opens and goes fullscreen
@@ -83,6 +85,7 @@ class Window {
   std::vector<int> held_;
   std::vector<std::string> drops_;
   bool leftPressed_ = false;
+  std::optional<glm::vec2> leftReleasedAt_;
   float wheel_ = 0.0f;
 };
 

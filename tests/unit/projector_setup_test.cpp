@@ -29,6 +29,23 @@ TEST(ProjectorSetup, APressNearACornerTakesItAndDraggingMovesIt) {
   EXPECT_FLOAT_EQ(warp.corners[2].x, 0.9f);
 }
 
+// A slow frame can hold a drag's last moves and its release: the corner goes where the button was
+// let go, not where it was when the frame began, nor where the cursor went after.
+TEST(ProjectorSetup, AReleaseInTheSameFrameAsTheLastMoveKeepsThatMove) {
+  ProjectorSetup setup;
+  maths::OutputWarp warp;
+  setup.start(warp);
+  setup.pointer(at({990.0f, 490.0f}, true, true), warp);
+  ASSERT_EQ(setup.held(), 2);
+  setup.pointer(at({920.0f, 460.0f}, true), warp);
+  Pointer last = at({700.0f, 300.0f}, false);  // moved on to 900, 450, let go, then away
+  last.releasedAt = glm::vec2(900.0f, 450.0f);
+  setup.pointer(last, warp);
+  EXPECT_FALSE(setup.held());
+  EXPECT_FLOAT_EQ(warp.corners[2].x, 0.9f);
+  EXPECT_FLOAT_EQ(warp.corners[2].y, 0.9f);
+}
+
 TEST(ProjectorSetup, AFoldIsNotTaken) {
   ProjectorSetup setup;
   maths::OutputWarp warp;
