@@ -46,7 +46,7 @@ class BloomGpu : public test::GpuTest {
         gpu::Image* slots[3] = {&images[state], &images[1 - state], &images[2]};
         uint32_t older = 0, here = 0;
         for (uint32_t j = 1; j <= plan.stages; ++j) {
-          const uint32_t next = j == 1 ? firstStageSlot(plan.stages) : 3u - here - older;
+          const uint32_t next = stageSlot(j, plan.stages, here, older);
           const StageWeights w = rklStage(j, plan.stages);
           push.dt = w.step * plan.dt, push.keep = w.keep, push.older = w.older;
           push.last = j == plan.stages ? 1u : 0u;

@@ -128,10 +128,14 @@ inline StageWeights rklStage(uint32_t j, uint32_t stages) {
 // super step's result in slot 2, so the result always lands in slot 0 or 1: a lattice pair the
 // scene flips between, plus a scratch lattice that never holds the state.
 inline uint32_t firstStageSlot(uint32_t stages) { return stages % 3 == 2 ? 2u : 1u; }
+// The slot stage j writes, given the slots of the last result (here) and the one before (older).
+inline uint32_t stageSlot(uint32_t j, uint32_t stages, uint32_t here, uint32_t older) {
+  return j == 1 ? firstStageSlot(stages) : 3u - here - older;
+}
 inline uint32_t resultSlot(uint32_t stages) {  // 0 or 1
   uint32_t older = 0, here = 0;
   for (uint32_t j = 1; j <= stages; ++j) {
-    const uint32_t next = j == 1 ? firstStageSlot(stages) : 3u - here - older;
+    const uint32_t next = stageSlot(j, stages, here, older);
     older = here, here = next;
   }
   return here;

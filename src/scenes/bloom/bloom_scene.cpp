@@ -320,7 +320,7 @@ class BloomScene final : public Scene {
       gpu::Image* slots[3] = {&frame.image(lattice_), &frame.resources.previous(lattice_), &frame.image(stage_)};
       uint32_t older = 0, here = 0;
       for (uint32_t j = 1; j <= plan.stages; ++j) {
-        const uint32_t next = j == 1 ? firstStageSlot(plan.stages) : 3u - here - older;
+        const uint32_t next = stageSlot(j, plan.stages, here, older);
         const StageWeights w = rklStage(j, plan.stages);
         push.dt = w.step * plan.dt;
         push.keep = w.keep;
