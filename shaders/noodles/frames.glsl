@@ -38,23 +38,25 @@ Frame transportFrame(Frame from, vec3 fromPoint, vec3 toPoint, vec3 toTangent) {
   return Frame(normal, cross(toTangent, normal), toTangent);
 }
 
+// frames.h's four cases, chosen with selects rather than branches (a warp's strands face every way,
+// so branches diverge); each case's arithmetic is as there, so both sides give the same bits.
 vec4 frameToQuaternion(Frame f) {
   vec3 n = f.normal, b = f.binormal, t = f.tangent;
   float trace = n.x + b.y + t.z;
-  if (trace > 0.0) {
-    float s = sqrt(trace + 1.0) * 2.0;
-    return vec4((b.z - t.y) / s, (t.x - n.z) / s, (n.y - b.x) / s, 0.25 * s);
-  }
-  if (n.x > b.y && n.x > t.z) {
-    float s = sqrt(1.0 + n.x - b.y - t.z) * 2.0;
-    return vec4(0.25 * s, (b.x + n.y) / s, (t.x + n.z) / s, (b.z - t.y) / s);
-  }
-  if (b.y > t.z) {
-    float s = sqrt(1.0 + b.y - n.x - t.z) * 2.0;
-    return vec4((b.x + n.y) / s, 0.25 * s, (t.y + b.z) / s, (t.x - n.z) / s);
-  }
-  float s = sqrt(1.0 + t.z - n.x - b.y) * 2.0;
-  return vec4((t.x + n.z) / s, (t.y + b.z) / s, 0.25 * s, (n.y - b.x) / s);
+  uint which = trace > 0.0 ? 3u : (n.x > b.y && n.x > t.z) ? 0u : b.y > t.z ? 1u : 2u;  // the largest component
+  float radicand = which == 3u ? trace + 1.0
+                 : which == 0u ? 1.0 + n.x - b.y - t.z
+                 : which == 1u ? 1.0 + b.y - n.x - t.z
+                               : 1.0 + t.z - n.x - b.y;
+  float s = sqrt(radicand) * 2.0;
+  // Each other component's numerator: a difference paired with w, a sum between x, y and z.
+  vec4 numerators = which == 3u ? vec4(b.z - t.y, t.x - n.z, n.y - b.x, 0.0)
+                  : which == 0u ? vec4(0.0, b.x + n.y, t.x + n.z, b.z - t.y)
+                  : which == 1u ? vec4(b.x + n.y, 0.0, t.y + b.z, t.x - n.z)
+                                : vec4(t.x + n.z, t.y + b.z, 0.0, n.y - b.x);
+  vec4 q = numerators / s;
+  float big = 0.25 * s;
+  return vec4(which == 0u ? big : q.x, which == 1u ? big : q.y, which == 2u ? big : q.z, which == 3u ? big : q.w);
 }
 
 Frame quaternionToFrame(vec4 q) {

@@ -1,37 +1,6 @@
 #version 460
-// One invocation per strand: start on the seed grid, follow the flow for `segments` steps and write
-// a node (position + frame) at the start and after every step; src/scenes/noodles/strand.h is the
-// CPU reference for exactly this. Dispatched once per chunk of strands (see strand_layout.h).
+// The strands in the exact flow: every step evaluates the noise (integrate_strands.glsl does the rest).
 #extension GL_GOOGLE_include_directive : require
-#include "noodles/integrate.glsl"
-#include "noodles/packing.glsl"
-#include "noodles/integrate_push.h"
+#include "noodles/integrate_strands.glsl"
 
-layout(local_size_x = 64) in;
-layout(binding = 0, std430) writeonly buffer Nodes { uvec4 nodes[]; };  // this chunk's nodes
-
-layout(push_constant) uniform Push { NoodlesIntegratePush pc; };
-
-vec3 strandStart(uint strand) {
-  uvec3 index = uvec3(strand % pc.grid.x, (strand / pc.grid.x) % pc.grid.y, strand / (pc.grid.x * pc.grid.y));
-  return (vec3(index) - (vec3(pc.grid) - 1.0) * 0.5) * pc.spacing;
-}
-
-void main() {
-  uint local = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
-  if (local >= pc.chunkStrands) return;
-  FieldSettings field = FieldSettings(pc.fieldKind, pc.noiseScale, pc.offsetY, pc.offsetZ, pc.lift);
-
-  vec3 p = strandStart(pc.firstStrand + local);
-  vec3 v = flowVelocity(p, field);
-  Frame frame = upVectorFrame(directionOf(v, WORLD_UP));
-  nodes[nodeSlot(pc.chunkStrands, local, 0u)] = packNode(p, frame);
-  for (uint k = 1u; k <= pc.segmentsPerStrand; ++k) {
-    vec3 next = advance(p, travel(v, pc.tangentMode), pc.step, pc.integrator, pc.tangentMode, field);
-    v = flowVelocity(next, field);
-    vec3 tangent = directionOf(v, frame.tangent);
-    frame = pc.frameMethod == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
-    p = next;
-    nodes[nodeSlot(pc.chunkStrands, local, k)] = packNode(p, frame);
-  }
-}
+vec3 strandVelocity(vec3 p, FieldSettings field) { return flowVelocity(p, field); }

@@ -22,6 +22,22 @@ struct NoodlesIntegratePush {
   uint tangentMode;        // TANGENT_NORMALIZED or TANGENT_RAW
   uint frameMethod;        // FRAMES_UP or FRAMES_RMF
   uint invocationsPerRow;  // workgroups in x times their size, when the dispatch needs a second dimension
+  uint pad0, pad1, pad2;    // the next vec3 starts a 16-byte slot
+  vec3 bakeOrigin;          // integrate_baked.comp: world position of the baked flow's first texel centre
+  float bakeInverseSpacing; // texels per world unit
+  vec3 bakeLastTexel;       // the last texel's index along x, y, z
+  float bakeRange;          // the volume's unorm 0..1 stands for -range..range
+};
+
+// bake.comp: the noise part of the flow (curl or bitangent, no lift) at every texel centre.
+struct NoodlesBakePush {
+  vec3 offsetY;  // as above
+  float noiseScale;
+  vec3 offsetZ;
+  uint fieldKind;
+  vec3 origin;  // world position of texel (0, 0, 0)'s centre
+  float spacing;
+  float range;  // a component v is stored as v / (2 range) + 0.5 (kBakeRange in field_bake.h)
 };
 VITRINE_SHARED_END
 

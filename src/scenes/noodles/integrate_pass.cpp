@@ -1,17 +1,39 @@
 #include "scenes/noodles/integrate_pass.h"
 
 #include "core/error.h"
+#include "gpu/barriers.h"
 #include "shaders/noodles/integrate_push.h"
 
 namespace vitrine::noodles {
 
-IntegratePass::IntegratePass(gpu::ProgramLibrary& programs) : program_(programs, "noodles/integrate.comp") {}
+IntegratePass::IntegratePass(gpu::ProgramLibrary& programs)
+    : exact_(programs, "noodles/integrate.comp"),
+      baked_(programs, "noodles/integrate_baked.comp"),
+      bake_(programs, "noodles/bake.comp") {}
+
+void IntegratePass::recordBake(VkCommandBuffer cmd, const StrandSettings& settings, VkImageView volume) const {
+  if (!settings.bake.baked()) throw Error("noodles: asked to bake a flow the settings do not bake");
+  bake_.bind(cmd);
+  bake_.push(cmd, gpu::Bindings().storageImage("bakedFlow", volume));
+  bake_.constants(cmd, shader::NoodlesBakePush{.offsetY = settings.field.offsetY,
+                                               .noiseScale = settings.field.noiseScale,
+                                               .offsetZ = settings.field.offsetZ,
+                                               .fieldKind = uint32_t(settings.field.kind),
+                                               .origin = settings.bake.origin,
+                                               .spacing = settings.bake.spacing,
+                                               .range = kBakeRange});
+  const glm::uvec3 n = settings.bake.texels;
+  bake_.dispatchOver(cmd, VkExtent3D{n.x, n.y, n.z});
+}
 
 void IntegratePass::record(VkCommandBuffer cmd, const StrandLayout& layout, VkBuffer nodes,
-                           const StrandSettings& settings) const {
+                           const StrandSettings& settings, const BakedFlow& baked) const {
   if (settings.grid != layout.grid || settings.segments != layout.segments)
     throw Error("noodles: the strand settings and the node buffer disagree on grid or segments");
-  program_.bind(cmd);
+  const bool bakedFlow = settings.bake.baked();
+  if (bakedFlow && baked.view == VK_NULL_HANDLE) throw Error("noodles: the strands follow a baked flow not given");
+  const gpu::ComputeProgram& program = bakedFlow ? baked_ : exact_;
+  program.bind(cmd);
   shader::NoodlesIntegratePush push{.offsetY = settings.field.offsetY,
                                     .spacing = settings.spacing,
                                     .offsetZ = settings.field.offsetZ,
@@ -24,13 +46,22 @@ void IntegratePass::record(VkCommandBuffer cmd, const StrandLayout& layout, VkBu
                                     .integrator = uint32_t(settings.integrator),
                                     .tangentMode = uint32_t(settings.tangent),
                                     .frameMethod = uint32_t(settings.frames)};
+  if (bakedFlow) {
+    push.bakeOrigin = settings.bake.origin;
+    push.bakeInverseSpacing = 1.0f / settings.bake.spacing;
+    push.bakeLastTexel = glm::vec3(settings.bake.texels - 1u);
+    push.bakeRange = kBakeRange;
+  }
   for (const StrandChunk& chunk : layout.chunks) {
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
     push.invocationsPerRow = chunk.integrateGroups.x * workgroupSize();
-    program_.push(cmd, gpu::Bindings().storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes));
-    program_.constants(cmd, push);
-    program_.dispatchGroups(cmd, {chunk.integrateGroups.x, chunk.integrateGroups.y, 1});
+    gpu::Bindings bindings;
+    bindings.storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes);
+    if (bakedFlow) bindings.sampledImage("bakedFlow", baked.view, baked.sampler, gpu::use::ComputeSample.layout);
+    program.push(cmd, bindings);
+    program.constants(cmd, push);
+    program.dispatchGroups(cmd, {chunk.integrateGroups.x, chunk.integrateGroups.y, 1});
   }
 }
 

@@ -1,20 +1,35 @@
 #pragma once
-// The compute pass that integrates every strand into the node buffer, one invocation per strand and
-// one dispatch per chunk (strand_layout.h). The caller owns the node buffer and its barriers.
+// The compute passes that integrate every strand into the node buffer, one invocation per strand and
+// one dispatch per chunk (strand_layout.h), in the exact flow or in a bake of it (field_bake.h),
+// and the pass that bakes the flow. The caller owns the node buffer, the volume and their barriers.
 #include "gpu/program.h"
 #include "scenes/noodles/strand.h"
 #include "scenes/noodles/strand_layout.h"
 
 namespace vitrine::noodles {
 
+// The baked flow as integrate_baked.comp samples it (linear filter, clamped).
+struct BakedFlow {
+  VkImageView view = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+
+inline constexpr VkFormat kBakedFlowFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;  // kBakeRange says why
+
 class IntegratePass {
  public:
   explicit IntegratePass(gpu::ProgramLibrary& programs);
-  void record(VkCommandBuffer cmd, const StrandLayout& layout, VkBuffer nodes, const StrandSettings& settings) const;
-  uint32_t workgroupSize() const { return program_.localSize()[0]; }  // strands a workgroup integrates
+  // Writes settings.bake's texels (settings.bake.baked() must hold) into `volume`, a storage image.
+  void recordBake(VkCommandBuffer cmd, const StrandSettings& settings, VkImageView volume) const;
+  // Integrates every strand; `baked` is the volume recordBake filled, needed when settings.bake is baked.
+  void record(VkCommandBuffer cmd, const StrandLayout& layout, VkBuffer nodes, const StrandSettings& settings,
+              const BakedFlow& baked = {}) const;
+  uint32_t workgroupSize() const { return exact_.localSize()[0]; }  // strands a workgroup integrates
 
  private:
-  gpu::ComputeProgram program_;
+  gpu::ComputeProgram exact_;
+  gpu::ComputeProgram baked_;
+  gpu::ComputeProgram bake_;
 };
 
 }  // namespace vitrine::noodles

@@ -28,6 +28,7 @@ class NoodlesScene final : public Scene {
  public:
   explicit NoodlesScene(const SceneContext& context)
       : resources_(context.resources),
+        device_(context.device),
         events_(context.events),
         quality_(context),
         budget_(deviceBudget(context.device)),
@@ -64,9 +65,19 @@ class NoodlesScene final : public Scene {
     const StrandSettings strands = strandSettings();
     gpu::Buffer& nodes = frame.buffer(nodes_);
     if (integrated_ != strands) {  // nothing moves under reduced motion: integrate once
+      ensureBakeVolume(strands.bake);
+      BakedFlow baked;
+      if (strands.bake.baked()) {
+        const auto pass = frame.pass("noodles bake");
+        gpu::Image& volume = frame.image(bakeVolume_);
+        frame.transition(volume, gpu::use::ComputeWrite);
+        integrate_.recordBake(frame.cmd, strands, volume.view());
+        frame.transition(volume, gpu::use::ComputeSample);
+        baked = {volume.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp)};
+      }
       const auto pass = frame.pass("noodles integrate");
       frame.transition(nodes, gpu::use::ComputeWriteBuffer);
-      integrate_.record(frame.cmd, layout_, nodes.handle(), strands);
+      integrate_.record(frame.cmd, layout_, nodes.handle(), strands, baked);
       integrated_ = strands;
     }
     frame.transition(nodes, gpu::use::ComputeReadBuffer);
@@ -124,6 +135,18 @@ class NoodlesScene final : public Scene {
     integrated_.reset();
   }
 
+  // (Re)declares the baked flow's volume when its size changes; an exact flow leaves one texel.
+  void ensureBakeVolume(const FieldBake& bake) {
+    const glm::uvec3 size = bake.baked() ? bake.texels : glm::uvec3(1);
+    if (bakeDeclared_ == size) return;
+    const gpu::ImageDecl decl{"noodles baked flow", kBakedFlowFormat,
+                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                              gpu::ImageSize::absolute(size.x, size.y, size.z)};
+    if (bakeDeclared_ == glm::uvec3(0)) bakeVolume_ = resources_.declare(decl);
+    else resources_.redeclare(bakeVolume_, decl);
+    bakeDeclared_ = size;
+  }
+
   StrandWorkgroups workgroups() const { return {integrate_.workgroupSize(), raster_.workgroupSize()}; }
 
   StrandSettings strandSettings() const {
@@ -136,6 +159,7 @@ class NoodlesScene final : public Scene {
     s.integrator = settings_.integrator;
     s.tangent = settings_.tangent;
     s.frames = settings_.frames;
+    s.bake = planFieldBake(s, settings_.fieldSource);
     return s;
   }
 
@@ -162,12 +186,15 @@ class NoodlesScene final : public Scene {
   }
 
   gpu::FrameResources& resources_;
+  const gpu::Device& device_;
   SceneEvents events_;
   AdaptiveQuality quality_;
   const DeviceBudget budget_;
   NoodleSettings settings_;
   StrandLayout layout_;  // segments 0 until the node buffer is declared
   gpu::BufferHandle nodes_;
+  gpu::ImageHandle bakeVolume_;
+  glm::uvec3 bakeDeclared_{0};  // the baked flow volume's size, 0 until declared
   std::optional<StrandSettings> integrated_;  // what the node buffer holds now
   IntegratePass integrate_;
   RasterPass raster_;
@@ -183,6 +210,13 @@ class NoodlesScene final : public Scene {
 void NoodlesScene::drawPanel() {
   ImGui::Text("%s; %u strands x %u segments = %llu segments", quality_.describe().c_str(), layout_.strands, layout_.segments,
               static_cast<unsigned long long>(layout_.segmentCount));
+  if (integrated_ && integrated_->bake.baked()) {
+    const FieldBake& bake = integrated_->bake;
+    ImGui::Text("flow baked into %ux%ux%u texels (%s)", bake.texels.x, bake.texels.y, bake.texels.z,
+                describeBytes(bake.count() * 8).c_str());
+  } else {
+    ImGui::Text("flow evaluated exactly at every step");
+  }
   ImGui::Text("node buffer %s in %zu binding%s", describeBytes(layout_.bytes).c_str(), layout_.chunks.size(),
               layout_.chunks.size() == 1 ? "" : "s");
 }

@@ -112,6 +112,11 @@ const params::Schema& schema() {
                                  &S::integrator, {"euler", "rk4"}));
     s.add(params::choiceParam<S>({"tangent", "tangent", "Follow the raw field or its unit direction.", "field"},
                                  &S::tangent, {"normalized", "raw"}));
+    s.add(params::choiceParam<S>({"field_source", "field source",
+                                  "exact: every step evaluates the noise; baked: steps sample the flow baked "
+                                  "into a volume each frame (within ~5 %, far cheaper); auto: baked for nests "
+                                  "big enough that it pays (about 10^7 segments and up).", "field"},
+                                 &S::fieldSource, {"auto", "exact", "baked"}));
     s.add(params::choiceParam<S>({"frames", "frames", "Tube frames: up-vector (twists and pinches) or "
                                   "rotation-minimising.", "tubes"},
                                  &S::frames, {"up", "rmf"}));

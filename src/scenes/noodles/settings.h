@@ -4,6 +4,7 @@
 // strands fit on the device is the scene's cross-parameter check (strand_layout.h).
 #include "maths/flow_field.h"
 #include "scenes/quality.h"
+#include "scenes/noodles/field_bake.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
 #include "scenes/noodles/palette.h"
@@ -43,6 +44,7 @@ struct NoodleSettings {
   Integrator integrator = Integrator::Euler;
   TangentMode tangent = TangentMode::Raw;  // the write-up leaves the field unnormalised
   FrameMethod frames = FrameMethod::RotationMinimizing;
+  FieldSource fieldSource = FieldSource::Auto;  // auto: bake the flow where that pays (field_bake.h)
   Colouring colour = Colouring::Gradient;
   bool stripe = false;  // paint one side of every tube, so the frames' twist shows
   bool msaa = true;

@@ -1,0 +1,106 @@
+#pragma once
+// The flow baked into a volume once a frame, which the integrate pass samples with trilinear
+// filtering instead of evaluating the noise. A step of the exact field costs three gradient noises
+// (24 hashed lattice corners, ~1,400 instructions); a filtered fetch costs one texture operation. With
+// 10^8 segments the noise is the whole of the integrate pass's time, and the bake (one exact
+// evaluation a texel) is a small fraction of it, so large nests bake and small ones stay exact.
+//
+// Accuracy: at kBakeTexelsPerNoiseUnit = 8 the baked curl field is within ~5 % (rms) of the exact
+// one, so a streamline follows the same swirls but drifts from its exact twin by about a tenth of its
+// length over 100 steps (measured in tests/unit/noodles_test.cpp); each strand is still a streamline
+// of a divergence-free-to-5 % field, and the nest keeps its look. Points outside the volume (the few
+// strands that travel further than the planned reach) take the exact field.
+// Mirrored by shaders/noodles/integrate_baked.comp (sampling) and bake.comp (the texels).
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+namespace vitrine::noodles {
+
+enum class FieldSource : uint32_t { Auto, Exact, Baked };
+
+inline constexpr float kBakeTexelsPerNoiseUnit = 8.0f;
+// Auto bakes when the exact field would be evaluated this many times per texel or more (the bake then
+// costs an eighth of the exact pass or less, and a baked step about a quarter of an exact one), and
+// only past kBakeFromEvaluations: below it the exact pass takes under 0.2 ms on the H200 (10^6
+// segments: 0.10 ms exact, 0.09 baked), too little to trade exactness for. So the scene's default
+// nest (262,144 segments, RK4 included) and 10^6 stay exact; 10^7 and up bake.
+inline constexpr double kBakePaysFrom = 8.0;
+inline constexpr double kBakeFromEvaluations = 4e6;
+// At most 2^24 texels (64 MiB); a forced bake of a bigger box coarsens to fit.
+inline constexpr uint64_t kBakeMostTexels = uint64_t(1) << 24;
+inline constexpr uint32_t kBakeMostTexelsPerAxis = 1024;
+// The volume holds each component as 10-bit unorm over [-kBakeRange, kBakeRange] (RGB10A2, 4 bytes a
+// texel: half the fetch traffic of half floats, which measured 0.3 ms of 10^8 steps on the H200).
+// Steps of 0.008, under 1 % of the flow's median speed (~1.1); the noise flows' components stay
+// within 4 (their largest speed over 200,000 random points was 3.6).
+inline constexpr float kBakeRange = 4.0f;
+
+// A flow component as the volume stores it, and back.
+inline float bakedComponent(float v) {
+  const float unit = std::clamp(v / (2.0f * kBakeRange) + 0.5f, 0.0f, 1.0f);
+  return (std::round(unit * 1023.0f) / 1023.0f - 0.5f) * (2.0f * kBakeRange);
+}
+
+struct FieldBake {
+  glm::vec3 origin{0.0f};  // world position of texel (0, 0, 0)'s centre
+  float spacing = 0.0f;    // world units between neighbouring texel centres
+  glm::uvec3 texels{0};    // none: the exact field everywhere
+  bool baked() const { return texels.x > 0; }
+  uint64_t count() const { return uint64_t(texels.x) * texels.y * texels.z; }
+  bool operator==(const FieldBake&) const = default;
+};
+
+// A bake of the box [lo, hi] (world units) for a field of this noise scale, or none when `source` is
+// Exact, or Auto and the bake would not pay for `evaluations` exact field evaluations.
+inline FieldBake planFieldBake(glm::vec3 lo, glm::vec3 hi, float noiseScale, double evaluations, FieldSource source) {
+  if (source == FieldSource::Exact) return {};
+  float spacing = 1.0f / (kBakeTexelsPerNoiseUnit * noiseScale);
+  const glm::vec3 size = glm::max(hi - lo, glm::vec3(0.0f));
+  const auto texelsAt = [&](float h) { return glm::uvec3(glm::ceil(size / h)) + 1u; };
+  const auto countOf = [](glm::uvec3 n) { return double(n.x) * n.y * n.z; };
+  glm::uvec3 texels = texelsAt(spacing);
+  const bool fits = countOf(texels) <= double(kBakeMostTexels) && std::max({texels.x, texels.y, texels.z}) <= kBakeMostTexelsPerAxis;
+  if (source == FieldSource::Auto &&
+      (!fits || evaluations < kBakeFromEvaluations || evaluations < kBakePaysFrom * countOf(texels)))
+    return {};
+  while (countOf(texels) > double(kBakeMostTexels) || std::max({texels.x, texels.y, texels.z}) > kBakeMostTexelsPerAxis) {
+    spacing *= 1.25f;  // a forced bake of a huge box: coarser, not bigger
+    texels = texelsAt(spacing);
+  }
+  return {lo, spacing, texels};
+}
+
+// Where p falls in texel units (texel centres at whole numbers).
+inline glm::vec3 bakeCoordinates(const FieldBake& bake, glm::vec3 p) { return (p - bake.origin) / bake.spacing; }
+
+// Whether p lies where all eight texels of its trilinear sample exist.
+inline bool insideBake(const FieldBake& bake, glm::vec3 p) {
+  if (!bake.baked()) return false;
+  const glm::vec3 u = bakeCoordinates(bake, p);
+  return glm::all(glm::greaterThanEqual(u, glm::vec3(0.0f))) &&
+         glm::all(glm::lessThanEqual(u, glm::vec3(bake.texels - 1u)));
+}
+
+// The trilinear sample at p (insideBake(p) must hold) of `texels`, x fastest, as a GPU's linear
+// filter takes it (up to its sub-texel weight precision).
+inline glm::vec3 sampleBake(const FieldBake& bake, std::span<const glm::vec3> texels, glm::vec3 p) {
+  const glm::vec3 u = bakeCoordinates(bake, p);
+  const glm::uvec3 last = bake.texels - 1u;
+  const glm::uvec3 base = glm::min(glm::uvec3(glm::floor(u)), glm::max(last, 1u) - 1u);
+  const glm::vec3 f = u - glm::vec3(base);
+  glm::vec3 sum{0.0f};
+  for (uint32_t corner = 0; corner < 8; ++corner) {
+    const glm::uvec3 o{corner & 1u, (corner >> 1) & 1u, corner >> 2};
+    const glm::uvec3 at = glm::min(base + o, last);
+    const glm::vec3 w = glm::mix(1.0f - f, f, glm::vec3(o));
+    sum += w.x * w.y * w.z * texels[(size_t(at.z) * bake.texels.y + at.y) * bake.texels.x + at.x];
+  }
+  return sum;
+}
+
+}  // namespace vitrine::noodles
