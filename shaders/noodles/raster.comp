@@ -1,5 +1,5 @@
 #version 460
-// One invocation per segment (dispatched per chunk of strands): cull it, bound its capsule on
+// One invocation per segment (dispatched per chunk of strands, per phase: raster_blocks.h): cull it, bound its capsule on
 // screen, and cast the rays of the samples in that box itself when there are not many; a bigger box
 // (a segment near the camera) is listed for raster_big.comp, where a workgroup takes the segment, so
 // no invocation loops over thousands of samples while its neighbours idle.
@@ -15,11 +15,13 @@ layout(local_size_x = 64) in;
 const uint MOST_CELLS_INLINE = 256u;
 
 void main() {
-  uint index = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
-  if (index >= chunkSegments()) return;
+  uint invocation = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
+  if (invocation >= phaseSegments()) return;
+  uint index = phaseSegment(invocation);
   Segment s = loadSegment(index);
   ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.tubeRadius, pc.samplesPerAxis);
   if (cells.x > cells.z || cells.y > cells.w) return;
+  if (pc.phase == NOODLES_RASTER_REST && hiddenByTiles(cells, s.nearestBits)) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
   if (size.x * size.y <= MOST_CELLS_INLINE) {
     if (pc.samplesPerAxis == 2u) {

@@ -19,6 +19,9 @@ layout(binding = 1, std430) buffer Visibility { uint64_t keys[]; };
 layout(binding = 2, std430) buffer BigSegments { uint bigSegments[]; };
 // The big-segment pass's indirect dispatch, then how many segments were listed.
 layout(binding = 3, std430) buffer Counters { NoodlesBigSegmentCounters counters; };
+// Each tile's farthest held depth (orderedBits; all ones while any sample is empty), from
+// tile_bound.comp between the occluders and the rest.
+layout(binding = 4, std430) readonly buffer TileFar { uint tileFar[]; };
 
 struct Segment {
   vec3 a, b;
@@ -48,6 +51,18 @@ Segment loadSegment(uint index) {
   s.after = s.checkAfter ? nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment + 2u)]) : s.b;
   s.nearestBits = orderedBits(nearestPossibleHit(pc.eye, s.a, s.b, pc.tubeRadius));
   return s;
+}
+
+// Whether every tile of the box (cells, in samples) holds only hits nearer than `nearestBits`, so the
+// segment can put nothing there: then no ray and no key needs reading. Boxes over more than four
+// tiles are left to the per-sample test (near the camera, where they are few).
+bool hiddenByTiles(ivec4 cells, uint nearestBits) {
+  uvec4 tiles = uvec4(cells) / (pc.samplesPerAxis * NOODLES_BOUND_TILE);
+  if ((tiles.z - tiles.x + 1u) * (tiles.w - tiles.y + 1u) > 4u) return false;
+  for (uint y = tiles.y; y <= tiles.w; ++y)
+    for (uint x = tiles.x; x <= tiles.z; ++x)
+      if (tileFar[y * pc.tilesPerRow + x] >= nearestBits) return false;
+  return true;
 }
 
 // The ray of sample cell `cell` (key `sample_`, whose depth bits read `held`) at the segment: its

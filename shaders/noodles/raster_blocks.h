@@ -6,6 +6,16 @@
 #include "../common/interop.h"
 
 VITRINE_SHARED_BEGIN
+// Which segments a raster.comp dispatch takes (NoodlesRasterPush::phase). A big nest is drawn in two
+// passes: every NOODLES_OCCLUDER_STRIDE-th strand first (spread through the nest, so they cover most
+// of the screen), then tile_bound.comp keeps each tile's farthest held hit, then the other strands,
+// which drop a segment at once when every tile its box touches already holds only nearer hits.
+const uint NOODLES_RASTER_ALL = 0u;
+const uint NOODLES_RASTER_OCCLUDERS = 1u;
+const uint NOODLES_RASTER_REST = 2u;
+const uint NOODLES_OCCLUDER_STRIDE = 8u;
+const uint NOODLES_BOUND_TILE = 8u;  // pixels a side of the tiles tile_bound.comp bounds
+
 // The camera as rays (capsule.glsl's ScreenView), the look and the chunk. std430: each vec3 starts a
 // 16-byte slot, which the float after it shares.
 struct NoodlesRasterPush {
@@ -28,6 +38,16 @@ struct NoodlesRasterPush {
   uint chunkStrands;       // strands in this chunk
   uint invocationsPerRow;  // raster.comp's 2D dispatch: invocations in one row of workgroups
   uint accumulate;         // shade.comp: 0 for the first chunk (writes), 1 after (adds)
+  uint phase;              // NOODLES_RASTER_ALL, _OCCLUDERS or _REST
+  uint phaseStrands;       // the chunk's strands this phase takes
+  uint tilesPerRow;        // tile_bound.comp's tiles across the target
+};
+
+// tile_bound.comp's push block.
+struct NoodlesTileBoundPush {
+  uvec2 pixels;          // the target's size
+  uint samplesPerPixel;  // keys a pixel: 1 or 4
+  uint tilesPerRow;
 };
 
 // The big-segment pass's indirect dispatch (a VkDispatchIndirectCommand: raster.comp adds a workgroup

@@ -14,6 +14,16 @@ ScreenView screenView() {
 // Segments run node-major, like the nodes, so neighbouring invocations read neighbouring records:
 // chunk-local segment `index` is segment index / chunkStrands of strand index % chunkStrands.
 uint chunkSegments() { return pc.chunkStrands * pc.segmentsPerStrand; }
+// This phase's segments (NoodlesRasterPush::phase) and the chunk-local segment its invocation i takes.
+uint phaseSegments() { return pc.phaseStrands * pc.segmentsPerStrand; }
+uint phaseSegment(uint i) {
+  uint segment = i / pc.phaseStrands;
+  uint j = i - segment * pc.phaseStrands;
+  uint strand = pc.phase == NOODLES_RASTER_OCCLUDERS ? j * NOODLES_OCCLUDER_STRIDE
+              : pc.phase == NOODLES_RASTER_REST      ? j + j / (NOODLES_OCCLUDER_STRIDE - 1u) + 1u
+                                                     : j;
+  return segment * pc.chunkStrands + strand;
+}
 // The segment's name in the visibility buffer: unique across chunks.
 uint segmentId(uint index) { return pc.firstStrand * pc.segmentsPerStrand + index; }
 

@@ -182,7 +182,7 @@ class NoodlesScene final : public Scene {
   // dots, so lower tiers render fewer pixels instead.
   TubeView tubeView(VkExtent2D extent) const {
     return {screenViewOf(camera_.pose(), glm::vec2(float(extent.width), float(extent.height))), settings_.radius,
-            settings_.colour, settings_.stripe, settings_.msaa};
+            settings_.colour, settings_.stripe, settings_.msaa, settings_.occluders};
   }
 
   gpu::FrameResources& resources_;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <span>
 
 namespace vitrine::noodles {
@@ -36,6 +37,7 @@ gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
 RasterPass::RasterPass(const SceneContext& context)
     : segments_(programsWithInt64Atomics(context), "noodles/raster.comp"),
       bigSegments_(context.programs, "noodles/raster_big.comp"),
+      tileBound_(context.programs, "noodles/tile_bound.comp"),
       visibility_(context.resources.declare(visibilityDecl(kMultisampledAxis))),
       bigList_(context.resources.declare({.name = "noodles big segments",
                                           .size = gpu::BufferSize::absolute(kBigListCapacity * sizeof(uint32_t)),
@@ -45,6 +47,9 @@ RasterPass::RasterPass(const SceneContext& context)
            .size = gpu::BufferSize::absolute(sizeof(shader::NoodlesBigSegmentCounters)),
            .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                     VK_BUFFER_USAGE_TRANSFER_DST_BIT})),
+      tileFar_(context.resources.declare({.name = "noodles tile bounds",
+                                          .size = gpu::BufferSize::relative(sizeof(uint32_t)),
+                                          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT})),
       samplesPerAxis_(kMultisampledAxis) {}
 
 void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
@@ -63,30 +68,56 @@ void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
 void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
   followSamples(frame, view.multisample);
   gpu::Buffer& visibility = frame.buffer(visibility_);
-  gpu::Buffer& bigList = frame.buffer(bigList_);
-  gpu::Buffer& counters = frame.buffer(counters_);
   gpu::fillBuffer(frame.cmd, visibility, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
   shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis_);
   push.bigListCapacity = kBigListCapacity;
+  const VkExtent2D extent = frame.target.extent2d();
+  push.tilesPerRow = (extent.width + shader::NOODLES_BOUND_TILE - 1) / shader::NOODLES_BOUND_TILE;
+  if (!view.occluders || layout.segmentCount < kTwoPhasesFrom) return recordPhase(frame, layout, nodes, push, shader::NOODLES_RASTER_ALL);
+  recordPhase(frame, layout, nodes, push, shader::NOODLES_RASTER_OCCLUDERS);
+  recordTileBound(frame, push.tilesPerRow);
+  recordPhase(frame, layout, nodes, push, shader::NOODLES_RASTER_REST);
+}
+
+void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes,
+                             shader::NoodlesRasterPush push, uint32_t phase) {
+  gpu::Buffer& visibility = frame.buffer(visibility_);
+  gpu::Buffer& bigList = frame.buffer(bigList_);
+  gpu::Buffer& counters = frame.buffer(counters_);
+  gpu::Buffer& tileFar = frame.buffer(tileFar_);
+  const uint32_t maxGroupsX = frame.device.limits().maxComputeWorkGroupCount[0];
+  push.phase = phase;
   for (const StrandChunk& chunk : layout.chunks) {
     // Nothing listed yet; the big-segment pass's y and z group counts are 1.
     static constexpr shader::NoodlesBigSegmentCounters kReset{.groupsX = 0, .groupsY = 1, .groupsZ = 1, .listed = 0};
     frame.upload(counters, 0, std::as_bytes(std::span(&kReset, 1)), gpu::use::ComputeReadWriteBuffer);
     frame.transition(bigList, gpu::use::ComputeWriteBuffer);
     frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
+    frame.transition(tileFar, gpu::use::ComputeReadBuffer);
     const gpu::Bindings bindings = gpu::Bindings()
                                        .storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes)
                                        .storageBuffer("Visibility", visibility.handle())
                                        .storageBuffer("BigSegments", bigList.handle())
-                                       .storageBuffer("Counters", counters.handle());
+                                       .storageBuffer("Counters", counters.handle())
+                                       .storageBuffer("TileFar", tileFar.handle());
+    const uint32_t occluders = (chunk.strandCount + shader::NOODLES_OCCLUDER_STRIDE - 1) / shader::NOODLES_OCCLUDER_STRIDE;
+    push.phaseStrands = phase == shader::NOODLES_RASTER_OCCLUDERS ? occluders
+                        : phase == shader::NOODLES_RASTER_REST    ? chunk.strandCount - occluders
+                                                                  : chunk.strandCount;
+    if (push.phaseStrands == 0) continue;
+    // This phase's share of the chunk's segments, in rows of workgroups like the whole chunk's
+    // (planStrands checked that those fit the dispatch limits, so a share does too).
+    const uint64_t groups = (uint64_t(push.phaseStrands) * layout.segments + workgroupSize() - 1) / workgroupSize();
+    const uint32_t groupsX = uint32_t(std::min<uint64_t>(groups, maxGroupsX));
+    const uint32_t groupsY = uint32_t((groups + groupsX - 1) / groupsX);
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    push.invocationsPerRow = chunk.rasterGroups.x * workgroupSize();
+    push.invocationsPerRow = groupsX * workgroupSize();
     segments_.bind(frame.cmd);
     segments_.push(frame.cmd, bindings);
     segments_.constants(frame.cmd, push);
-    segments_.dispatchGroups(frame.cmd, {chunk.rasterGroups.x, chunk.rasterGroups.y, 1});  // one invocation a segment
+    segments_.dispatchGroups(frame.cmd, {groupsX, groupsY, 1});  // one invocation a segment
 
     frame.transition(bigList, gpu::use::ComputeReadBuffer);
     frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
@@ -95,6 +126,22 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
     bigSegments_.constants(frame.cmd, push);
     gpu::dispatchIndirect(frame.cmd, counters);
   }
+}
+
+void RasterPass::recordTileBound(const FrameContext& frame, uint32_t tilesPerRow) {
+  gpu::Buffer& visibility = frame.buffer(visibility_);
+  gpu::Buffer& tileFar = frame.buffer(tileFar_);
+  frame.transition(visibility, gpu::use::ComputeReadBuffer);
+  frame.transition(tileFar, gpu::use::ComputeWriteBuffer);
+  const VkExtent2D extent = frame.target.extent2d();
+  tileBound_.bind(frame.cmd);
+  tileBound_.push(frame.cmd, gpu::Bindings()
+                                 .storageBuffer("Visibility", visibility.handle())
+                                 .storageBuffer("TileFar", tileFar.handle()));
+  tileBound_.constants(frame.cmd, shader::NoodlesTileBoundPush{.pixels = {extent.width, extent.height},
+                                                                .samplesPerPixel = samplesPerAxis_ * samplesPerAxis_,
+                                                                .tilesPerRow = tilesPerRow});
+  tileBound_.dispatchOver(frame.cmd, extent);  // a workgroup a tile
 }
 
 }  // namespace vitrine::noodles

@@ -11,11 +11,15 @@
 #include "scenes/noodles/strand_layout.h"
 #include "scenes/noodles/tube_view.h"
 #include "scenes/scene.h"
+#include "shaders/noodles/raster_blocks.h"
 
 namespace vitrine::noodles {
 
 // Listed big segments (16 MiB): past it raster.comp casts a big box itself.
 inline constexpr uint32_t kBigListCapacity = 1u << 22;
+// Nests of this many segments and more are drawn in two phases (raster_blocks.h): occluders, a bound
+// a tile, the rest. Below it the occluders cover too little of the screen for the bound to pay.
+inline constexpr uint64_t kTwoPhasesFrom = uint64_t(1) << 22;
 
 class RasterPass {
  public:
@@ -30,12 +34,18 @@ class RasterPass {
   // Redeclares the visibility buffer when the sample count changes (msaa, or a target too large for
   // four keys a pixel in one binding); the host resizes it with the target.
   void followSamples(const FrameContext& frame, bool multisample);
+  // One phase of raster.comp over every chunk, each followed by its big segments.
+  void recordPhase(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes,
+                   shader::NoodlesRasterPush push, uint32_t phase);
+  void recordTileBound(const FrameContext& frame, uint32_t tilesPerRow);
 
   gpu::ComputeProgram segments_;
   gpu::ComputeProgram bigSegments_;
+  gpu::ComputeProgram tileBound_;
   gpu::BufferHandle visibility_;
   gpu::BufferHandle bigList_;
   gpu::BufferHandle counters_;  // shader::NoodlesBigSegmentCounters
+  gpu::BufferHandle tileFar_;   // a uint a tile of NOODLES_BOUND_TILE^2 pixels (declared a uint a pixel)
   uint32_t samplesPerAxis_;     // what the visibility buffer is declared for
 };
 

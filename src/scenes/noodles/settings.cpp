@@ -133,6 +133,11 @@ const params::Schema& schema() {
                                   "averages them; off casts one, at the pixel centre.",
                                   "tubes", kRebuilds},
                                  &S::msaa, {"off", "4x"}));
+    s.add(params::boolParam<S>({"occluders", "occluders first",
+                                "Nests of 4 million segments and more draw every eighth strand first and then "
+                                "skip the segments those hide whole tiles of: the same picture, faster. Off: one "
+                                "pass over every segment.", "tubes"},
+                               &S::occluders));
     s.add(params::customParam<S, OrbitPin>(
         {"orbit", "pinned orbit", "off, or AZIMUTH,ELEVATION,DISTANCE to hold the camera there.", "camera",
          kTransient},

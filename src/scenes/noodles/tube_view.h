@@ -25,6 +25,7 @@ struct TubeView {
   Colouring colouring = Colouring::Gradient;
   bool stripe = false;
   bool multisample = true;  // four samples a pixel, averaged; else one at its centre
+  bool occluders = true;    // big nests: occluders first, then the rest against a bound a tile (raster_pass.h)
 };
 
 // The camera of reverseZPerspective(kFieldOfViewY, ..., kNearPlane) * lookAtZUp(pose) as rays.
