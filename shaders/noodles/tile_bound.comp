@@ -6,7 +6,7 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "noodles/raster_blocks.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;  // NOODLES_BOUND_TILE
+layout(local_size_x = NOODLES_BOUND_TILE, local_size_y = NOODLES_BOUND_TILE) in;  // a tile
 layout(binding = 0, std430) readonly buffer Visibility { uint64_t keys[]; };
 layout(binding = 1, std430) writeonly buffer TileFar { uint tileFar[]; };
 layout(push_constant) uniform Push { NoodlesTileBoundPush pc; };

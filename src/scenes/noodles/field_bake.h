@@ -6,9 +6,10 @@
 // evaluation a texel) is a small fraction of it, so large nests bake and small ones stay exact.
 //
 // Accuracy: at kBakeTexelsPerNoiseUnit = 8 the baked curl field is within ~5 % (rms) of the exact
-// one, so a streamline follows the same swirls but drifts from its exact twin by about a tenth of its
-// length over 100 steps (measured in tests/unit/noodles_test.cpp); each strand is still a streamline
-// of a divergence-free-to-5 % field, and the nest keeps its look. Points outside the volume (the few
+// one (4.7 % measured), so a streamline follows the same swirls but parts from its exact twin by
+// about a twentieth of its length over 60 steps (5.6 %; both in tests/unit/noodles_test.cpp); each
+// strand is still a streamline of a field within 5 % of the divergence-free one, and the nest keeps
+// its look. Points outside the volume (the few
 // strands that travel further than the planned reach) take the exact field.
 // Mirrored by shaders/noodles/integrate_baked.comp (sampling) and bake.comp (the texels).
 #include <glm/common.hpp>
@@ -31,7 +32,7 @@ inline constexpr float kBakeTexelsPerNoiseUnit = 8.0f;
 // nest (262,144 segments, RK4 included) and 10^6 stay exact; 10^7 and up bake.
 inline constexpr double kBakePaysFrom = 8.0;
 inline constexpr double kBakeFromEvaluations = 4e6;
-// At most 2^24 texels (64 MiB); a forced bake of a bigger box coarsens to fit.
+// At most 2^24 texels (64 MiB at kBakedTexelBytes); a forced bake of a bigger box coarsens to fit.
 inline constexpr uint64_t kBakeMostTexels = uint64_t(1) << 24;
 inline constexpr uint32_t kBakeMostTexelsPerAxis = 1024;
 // The volume holds each component as 10-bit unorm over [-kBakeRange, kBakeRange] (RGB10A2, 4 bytes a
@@ -39,6 +40,7 @@ inline constexpr uint32_t kBakeMostTexelsPerAxis = 1024;
 // Steps of 0.008, under 1 % of the flow's median speed (~1.1); the noise flows' components stay
 // within 4 (their largest speed over 200,000 random points was 3.6).
 inline constexpr float kBakeRange = 4.0f;
+inline constexpr uint32_t kBakedTexelBytes = 4;  // RGB10A2
 
 // A flow component as the volume stores it, and back.
 inline float bakedComponent(float v) {

@@ -213,7 +213,7 @@ void NoodlesScene::drawPanel() {
   if (integrated_ && integrated_->bake.baked()) {
     const FieldBake& bake = integrated_->bake;
     ImGui::Text("flow baked into %ux%ux%u texels (%s)", bake.texels.x, bake.texels.y, bake.texels.z,
-                describeBytes(bake.count() * 8).c_str());
+                describeBytes(bake.count() * kBakedTexelBytes).c_str());
   } else {
     ImGui::Text("flow evaluated exactly at every step");
   }

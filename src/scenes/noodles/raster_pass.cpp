@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <span>
 
 namespace vitrine::noodles {
@@ -50,7 +49,8 @@ RasterPass::RasterPass(const SceneContext& context)
       tileFar_(context.resources.declare({.name = "noodles tile bounds",
                                           .size = gpu::BufferSize::relative(sizeof(uint32_t)),
                                           .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT})),
-      samplesPerAxis_(kMultisampledAxis) {}
+      samplesPerAxis_(kMultisampledAxis),
+      budget_(deviceBudget(context.device)) {}
 
 void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
   const VkExtent2D extent = frame.target.extent2d();
@@ -86,7 +86,6 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
   gpu::Buffer& bigList = frame.buffer(bigList_);
   gpu::Buffer& counters = frame.buffer(counters_);
   gpu::Buffer& tileFar = frame.buffer(tileFar_);
-  const uint32_t maxGroupsX = frame.device.limits().maxComputeWorkGroupCount[0];
   push.phase = phase;
   for (const StrandChunk& chunk : layout.chunks) {
     // Nothing listed yet; the big-segment pass's y and z group counts are 1.
@@ -108,16 +107,17 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
     if (push.phaseStrands == 0) continue;
     // This phase's share of the chunk's segments, in rows of workgroups like the whole chunk's
     // (planStrands checked that those fit the dispatch limits, so a share does too).
-    const uint64_t groups = (uint64_t(push.phaseStrands) * layout.segments + workgroupSize() - 1) / workgroupSize();
-    const uint32_t groupsX = uint32_t(std::min<uint64_t>(groups, maxGroupsX));
-    const uint32_t groupsY = uint32_t((groups + groupsX - 1) / groupsX);
+    const GroupRows groups = phase == shader::NOODLES_RASTER_ALL
+                                 ? chunk.rasterGroups
+                                 : groupRows(uint64_t(push.phaseStrands) * layout.segments, workgroupSize(), budget_,
+                                             "noodles raster");
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
-    push.invocationsPerRow = groupsX * workgroupSize();
+    push.invocationsPerRow = groups.x * workgroupSize();
     segments_.bind(frame.cmd);
     segments_.push(frame.cmd, bindings);
     segments_.constants(frame.cmd, push);
-    segments_.dispatchGroups(frame.cmd, {groupsX, groupsY, 1});  // one invocation a segment
+    segments_.dispatchGroups(frame.cmd, {groups.x, groups.y, 1});  // one invocation a segment
 
     frame.transition(bigList, gpu::use::ComputeReadBuffer);
     frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);

@@ -47,6 +47,7 @@ class RasterPass {
   gpu::BufferHandle counters_;  // shader::NoodlesBigSegmentCounters
   gpu::BufferHandle tileFar_;   // a uint a tile of NOODLES_BOUND_TILE^2 pixels (declared a uint a pixel)
   uint32_t samplesPerAxis_;     // what the visibility buffer is declared for
+  DeviceBudget budget_;         // the dispatch limits a phase's rows of workgroups keep to
 };
 
 }  // namespace vitrine::noodles

@@ -76,22 +76,22 @@ StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget&
     chunk.strandCount = uint32_t(std::min<uint64_t>(perChunk, strands - first));
     chunk.offset = first * layout.strandBytes;
     chunk.bytes = chunk.strandCount * layout.strandBytes;
-    // Workgroups in rows, when there are more than one row may hold.
-    const auto rowsOf = [&](uint64_t invocations, uint32_t groupSize) {
-      const uint64_t groups = (invocations + groupSize - 1) / groupSize;
-      GroupRows rows{uint32_t(std::min<uint64_t>(groups, budget.maxGroupCountX)), 0};
-      const uint64_t y = (groups + rows.x - 1) / rows.x;
-      if (y > budget.maxGroupCountY)
-        throw Error(fmt::format("{}: {} workgroups exceed the compute dispatch limit of {} (maxComputeWorkGroupCount).",
-                                what, groups, uint64_t(budget.maxGroupCountX) * budget.maxGroupCountY));
-      rows.y = uint32_t(y);
-      return rows;
-    };
-    chunk.integrateGroups = rowsOf(chunk.strandCount, workgroups.integrate);
-    chunk.rasterGroups = rowsOf(uint64_t(chunk.strandCount) * segments, workgroups.raster);
+    chunk.integrateGroups = groupRows(chunk.strandCount, workgroups.integrate, budget, what);
+    chunk.rasterGroups = groupRows(uint64_t(chunk.strandCount) * segments, workgroups.raster, budget, what);
     layout.chunks.push_back(chunk);
   }
   return layout;
+}
+
+GroupRows groupRows(uint64_t invocations, uint32_t groupSize, const DeviceBudget& budget, const std::string& what) {
+  const uint64_t groups = (invocations + groupSize - 1) / groupSize;
+  GroupRows rows{uint32_t(std::min<uint64_t>(groups, budget.maxGroupCountX)), 0};
+  const uint64_t y = (groups + rows.x - 1) / std::max(rows.x, 1u);
+  if (y > budget.maxGroupCountY)
+    throw Error(fmt::format("{}: {} workgroups exceed the compute dispatch limit of {} (maxComputeWorkGroupCount).",
+                            what, groups, uint64_t(budget.maxGroupCountX) * budget.maxGroupCountY));
+  rows.y = uint32_t(y);
+  return rows;
 }
 
 }  // namespace vitrine::noodles

@@ -42,6 +42,10 @@ struct GroupRows {
   uint32_t x = 0, y = 0;
 };
 
+// `invocations` in workgroups of `groupSize`, in rows when one row cannot hold them; throws
+// vitrine::Error naming `what` past the device's dispatch limits.
+GroupRows groupRows(uint64_t invocations, uint32_t groupSize, const DeviceBudget& budget, const std::string& what);
+
 struct StrandChunk {
   uint32_t firstStrand = 0;
   uint32_t strandCount = 0;
