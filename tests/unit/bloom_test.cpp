@@ -232,6 +232,29 @@ TEST(BloomSettings, ALatticeMustFitTheDevicesImagesAndHalfItsMemory) {
 // The default rates at a 48^3 lattice (the CPU reference; the GPU runs at 96^3 and 160^3 are
 // tests/cli/bloom_phases.sh): a cursor that only hovers over the centre reaches every phase and the
 // climax, a second or so apart; once the vapour stops the crystal vents through every phase.
+// A tier's lattice: 2/3 and 0.8 of the side in multiples of 8, never under the parameter's minimum
+// (nor over the side set), the raymarch's samples in proportion.
+TEST(BloomSettings, LowerTiersTakeASmallerLatticeAndSamplesInProportion) {
+  EXPECT_EQ(tierLattice(96, Tier::High), 96);
+  EXPECT_EQ(tierLattice(96, Tier::Auto), 96);  // auto resolves to a tier before it gets here
+  EXPECT_EQ(tierLattice(96, Tier::Medium), 80);
+  EXPECT_EQ(tierLattice(96, Tier::Low), 64);
+  EXPECT_EQ(tierLattice(512, Tier::Low), 344);
+  EXPECT_EQ(tierLattice(256, Tier::Medium), 208);
+  EXPECT_EQ(tierLattice(60, Tier::Low), 48);
+  EXPECT_EQ(tierLattice(48, Tier::Low), 48);
+  for (int side = 48; side <= 512; ++side)
+    for (Tier tier : {Tier::Medium, Tier::Low}) {
+      const int n = tierLattice(side, tier);
+      EXPECT_GE(n, 48);
+      EXPECT_LE(n, side);
+      if (n < side) EXPECT_EQ(n % 8, 0) << side;
+    }
+  EXPECT_EQ(tierSamples(56, 96, 96), 56);
+  EXPECT_EQ(tierSamples(56, 96, 64), 37);
+  EXPECT_EQ(tierSamples(8, 96, 64), 8);
+}
+
 TEST(BloomCalibration, AHoverReachesEveryPhaseAndTheClimaxThenVents) {
   const Settings settings;
   const uint32_t n = 48;

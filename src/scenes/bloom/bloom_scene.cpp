@@ -85,6 +85,7 @@ class BloomScene final : public Scene {
         quality_(context),
         audio_(context.audio),
         fill_(context.programs, "bloom/fill.comp"),
+        resample_(context.programs, "bloom/resample.comp"),
         diffuse_(context.programs, "bloom/diffuse.comp"),
         statistics_(context.programs, "bloom/stats.comp"),
         chamber_(context.programs, "bloom/chamber.comp"),
@@ -110,7 +111,7 @@ class BloomScene final : public Scene {
                               context.device.properties().deviceName));
     lattice_ = resources_.declare(latticeDecl(settings_.lattice));
     stage_ = resources_.declare(stageDecl(settings_.lattice));
-    builtLattice_ = settings_.lattice;
+    builtLattice_ = builtSetting_ = settings_.lattice;
   }
   ~BloomScene() override { audio_.drone(time_, false); }
 
@@ -136,7 +137,7 @@ class BloomScene final : public Scene {
     // Without the cursor, the crystal breathes vapour in at its heart as strongly as `breath` says
     // (live input plays it with the music's level).
     const bool breathing = !near && settings_.breath > 0.0f;
-    source_.voxel = worldToVoxel(breathing ? glm::vec3(0.0f) : vapour.point, uint32_t(settings_.lattice));
+    source_.point = breathing ? glm::vec3(0.0f) : vapour.point;
     source_.rate = settings_.sourceRate * (breathing ? settings_.breath : input.cursor.dragging ? settings_.dragBoost : 1.0f);
     stepSeconds_ = input.dt;
     if (stepsPending_ < std::max(1, int(std::lround(kMaxSecondsPerFrame / stepSeconds_))))
@@ -161,12 +162,20 @@ class BloomScene final : public Scene {
     if (exhaling_ && !detector_.climax() && detector_.phase() == Phase::Pristine) exhaling_ = false;
     source_.on = (near || breathing) && !exhaling_;
     if (source_.on) lastVapour_ = time_;
-    // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins.
-    if (settings_.lattice != builtLattice_ || settings_.fill != builtFill_) restart(settings_.fill);
+    // Here, not in record: a new lattice's initial texels are uploaded as the next frame begins. A new
+    // lattice setting or fill starts afresh; a new tier's side (before the first frame: its own start)
+    // carries the vapour over.
+    const int wanted = tierLattice(settings_.lattice, quality_.active());
+    if (settings_.lattice != builtSetting_ || settings_.fill != builtFill_ || (!recorded_ && wanted != builtLattice_))
+      restart(settings_.fill);
+    else
+      advanceCarry(wanted);
   }
 
   void record(const FrameContext& frame) override {
+    recorded_ = true;
     fill(frame);
+    carry(frame);
     simulate(frame);
     measure(frame);  // the phases follow the lattice's statistics, seen or not
     if (!frame.draws) return;
@@ -184,7 +193,7 @@ class BloomScene final : public Scene {
   void simulationState(StateArchive& state) override {
     if (!state.isRestoring())
       while (auto reading = pollStatistics()) carried_.push_back(*reading);
-    state(droning_, appliedGain_, builtLattice_, builtFill_, time_, frame_, seed_, source_, stepsPending_,
+    state(droning_, appliedGain_, builtLattice_, builtSetting_, builtFill_, recorded_, time_, frame_, seed_, source_, stepsPending_,
           givenUpSeconds_, stepSeconds_, proxy_, stats_, detector_, history_, carried_, label_, labelTime_,
           chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_, statsTime_,
           lastVapour_);
@@ -192,6 +201,7 @@ class BloomScene final : public Scene {
       resources_.redeclare(lattice_, latticeDecl(builtLattice_));
       resources_.redeclare(stage_, stageDecl(builtLattice_));
       pendingFill_ = 0.0f;
+      carry_ = Carry::None;  // a carry half done starts again from the restored lattice
     }
     state.contents(resources_, lattice_);
   }
@@ -218,6 +228,7 @@ class BloomScene final : public Scene {
     ImGui::PlotLines("GPU peak", peak.data(), int(peak.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
     ImGui::PlotLines("GPU past rose", amber.data(), int(amber.size()), 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
     ImGui::PlotLines("CPU proxy V", proxy.data(), int(proxy.size()), 0, nullptr, 0.0f, 1.05f, ImVec2(0, 40));
+    ImGui::Text("lattice %d^3 at %s", builtLattice_, quality_.describe().c_str());
     const DiffusionPlan plan = this->plan();
     ImGui::Text("%u diffusion passes a frame (%s; %.1f explicit steps' worth)%s", plan.passes(),
                 plan.stages > 1 ? "Runge-Kutta-Legendre stages" : "explicit sub-steps",
@@ -274,16 +285,53 @@ class BloomScene final : public Scene {
     exhaling_ = false;
     pendingFill_ = fill;
     lastVapour_ = time_;
-    resources_.redeclare(lattice_, latticeDecl(settings_.lattice));
-    resources_.redeclare(stage_, stageDecl(settings_.lattice));
-    builtLattice_ = settings_.lattice;
+    builtLattice_ = tierLattice(settings_.lattice, quality_.active());
+    builtSetting_ = settings_.lattice;
     builtFill_ = settings_.fill;
+    resources_.redeclare(lattice_, latticeDecl(builtLattice_));
+    resources_.redeclare(stage_, stageDecl(builtLattice_));
+    carry_ = Carry::None;
+  }
+
+  // A tier's new side while the piece runs (the gallery's auto tier, or the panel) keeps the vapour:
+  // the stage lattice is redeclared at the new side and the old lattice resampled into it, then the
+  // pair is redeclared and the stage copied into it; one frame between skips its diffusion (its steps
+  // wait for the next), as the stage is not the pair's size. Steps advance here, in update, and the
+  // passes in record, so several updates before one record (a slow frame's) wait for it.
+  void advanceCarry(int wanted) {
+    if (carry_ == Carry::StageWritten) {
+      resources_.redeclare(lattice_, latticeDecl(carryTo_));
+      builtLattice_ = carryTo_;
+      carry_ = Carry::LatticeDeclared;
+    } else if (carry_ == Carry::None && wanted != builtLattice_) {
+      resources_.redeclare(stage_, stageDecl(wanted));
+      carryTo_ = wanted;
+      carry_ = Carry::StageDeclared;
+    }
+  }
+  void carry(const FrameContext& frame) {
+    if (carry_ != Carry::StageDeclared && carry_ != Carry::LatticeDeclared) return;
+    const auto pass = frame.pass("bloom carry");
+    const bool intoStage = carry_ == Carry::StageDeclared;
+    gpu::Image& from = intoStage ? frame.image(lattice_) : frame.image(stage_);
+    gpu::Image& to = intoStage ? frame.image(stage_) : frame.image(lattice_);
+    frame.transition(from, gpu::use::ComputeSample);
+    frame.transition(to, gpu::use::ComputeWrite);
+    resample_.bind(frame.cmd);
+    resample_.push(frame.cmd, gpu::Bindings()
+                                  .sampledImage("source", from.view(),
+                                                device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+                                                gpu::use::ComputeSample.layout)
+                                  .storageImage("lattice", to.view()));
+    const uint32_t n = uint32_t(carryTo_);
+    resample_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
+    carry_ = intoStage ? Carry::StageWritten : Carry::None;
   }
 
   std::array<float, 4> thresholds() const {
     return {settings_.thresholdAmber, settings_.thresholdRose, settings_.thresholdCrimson, settings_.thresholdChroma};
   }
-  float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(settings_.lattice)); }
+  float scaledD() const { return scaledDiffusion(settings_.diffusion, uint32_t(builtLattice_)); }
   // Whether the crystal is clear glass now: the newest statistics saw no voxel at half of kCoverFrom,
   // and no vapour has entered since (no source, no new fill); without a source the lattice only
   // spreads and decays, so its peak only falls (the half leaves room for a stage's rounding).
@@ -298,7 +346,7 @@ class BloomScene final : public Scene {
     fill_.bind(frame.cmd);
     fill_.push(frame.cmd, gpu::Bindings().storageImage("lattice", lattice.view()));
     fill_.constants(frame.cmd, shader::BloomFillPush{pendingFill_});
-    const uint32_t n = uint32_t(settings_.lattice);
+    const uint32_t n = uint32_t(builtLattice_);
     fill_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
     pendingFill_ = 0.0f;
   }
@@ -306,11 +354,11 @@ class BloomScene final : public Scene {
   // Each pending step is a frame of the plan: explicit sub-steps, or the stages of one super step
   // rotating the lattice pair and the stage lattice (bloom_math.h: resultSlot), ending in the pair.
   void simulate(const FrameContext& frame) {
-    if (stepsPending_ == 0) return;
+    if (stepsPending_ == 0 || carry_ == Carry::StageWritten) return;  // the stage is another side now
     const auto pass = frame.pass("bloom diffuse");
-    const uint32_t n = uint32_t(settings_.lattice);
+    const uint32_t n = uint32_t(builtLattice_);
     const DiffusionPlan plan = this->plan();
-    shader::BloomDiffusePush push{.source = source_.voxel,
+    shader::BloomDiffusePush push{.source = worldToVoxel(source_.point, n),
                                   .diffusion = scaledD(),
                                   .decay = source_.on ? settings_.decayRising : settings_.decayVenting,
                                   .sigma = scaledSigma(settings_.sigma, n),
@@ -353,7 +401,7 @@ class BloomScene final : public Scene {
                      gpu::Bindings().storageImage("lattice", lattice.view()).storageBuffer("Stats", counts.handle()));
     const auto [amber, rose, crimson, climax] = thresholds();
     statistics_.constants(frame.cmd, shader::BloomStatsThresholds{amber, rose, crimson, climax});
-    const uint32_t n = uint32_t(settings_.lattice);
+    const uint32_t n = uint32_t(builtLattice_);
     statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomStatsColumn - 1) / shader::kBloomStatsColumn});
     statsReadback_.record(frame.cmd, counts, time_);
   }
@@ -386,7 +434,7 @@ class BloomScene final : public Scene {
                                         .seed = seed_,
                                         .frame = reducedMotion_ ? 0u : uint32_t(frame_),
                                         .traceSteps = uint32_t(settings_.traceSteps),
-                                        .samples = uint32_t(settings_.samples),
+                                        .samples = uint32_t(tierSamples(settings_.samples, settings_.lattice, builtLattice_)),
                                         .shimmer = shimmer,
                                         .clearGlass = clearGlass() ? 1u : 0u};
     crystal_.bind(frame.cmd);
@@ -498,6 +546,7 @@ class BloomScene final : public Scene {
   bool droning_ = false;
   float appliedGain_ = -1.0f;
   gpu::ComputeProgram fill_;
+  gpu::ComputeProgram resample_;
   gpu::ComputeProgram diffuse_;
   gpu::ComputeProgram statistics_;
   gpu::ComputeProgram chamber_;
@@ -507,15 +556,20 @@ class BloomScene final : public Scene {
   gpu::ImageHandle lattice_;
   gpu::ImageHandle stage_;
   Settings settings_;
-  int builtLattice_ = 0;
+  int builtLattice_ = 0;  // the pair's side: the lattice setting at the tier in use
+  int builtSetting_ = 0;  // the lattice setting it was built for
   float builtFill_ = 0.0f;
+  bool recorded_ = false;  // a frame has run: a new tier's side carries the vapour over from now on
+  enum class Carry { None, StageDeclared, StageWritten, LatticeDeclared };
+  Carry carry_ = Carry::None;
+  int carryTo_ = 0;
   float aspect_ = 16.0f / 9.0f;
   double time_ = 0.0;
   uint64_t frame_ = 0;
   uint32_t seed_ = 0;
   struct {
     bool on = false;
-    glm::vec3 voxel{0.0f};
+    glm::vec3 point{0.0f};  // world: the pass places it in the lattice it runs on
     float rate = 0.0f;
   } source_;
   int stepsPending_ = 0;

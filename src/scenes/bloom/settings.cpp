@@ -1,14 +1,20 @@
 #include "scenes/bloom/settings.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace vitrine::bloom {
+namespace {
+constexpr int kSmallestLattice = 48;  // the lattice parameter's minimum
+}
 
 const params::Schema& schema() {
   using S = Settings;
   using params::kLogarithmic, params::kRebuilds, params::kTransient;
   static const params::Schema table = [] {
     auto s = params::Schema::forStruct<S>();
-    s.add(params::intParam<S>({"lattice", "lattice", "Voxels per side of the vapour lattice.", "vapour", kRebuilds},
-                              &S::lattice, 48, 512));
+    s.add(params::intParam<S>({"lattice", "lattice", "Voxels per side of the vapour lattice (at the high tier).", "vapour", kRebuilds},
+                              &S::lattice, kSmallestLattice, 512));
     s.add(params::floatParam<S>({"diffusion", "diffusion", "How fast vapour spreads, voxels^2 per second at 96^3 "
                                  "(scaled with the lattice).", "vapour", kLogarithmic},
                                 &S::diffusion, 0.5, 200.0));
@@ -61,10 +67,23 @@ const params::Schema& schema() {
     s.preset({"fine", "A 160^3 lattice with more samples.", {{"lattice", "160"}, {"samples", "96"}}});
     s.preset({"quick", "A 64^3 lattice, fast phases: for slow devices.",
               {{"lattice", "64"}, {"source", "3"}, {"samples", "40"}}});
-    addQualityParams<S>(s, "Render scale of the raymarch and the word", 16.0f);
+    addQualityParams<S>(s, "Render scale of the raymarch and the word, and the lattice's side (medium 0.8, low 2/3) "
+                           "with the samples in proportion", 16.0f);
     return s;
   }();
   return table;
+}
+
+int tierLattice(int lattice, Tier tier) {
+  const double share = tier == Tier::Low ? 2.0 / 3.0 : tier == Tier::Medium ? 0.8 : 1.0;
+  if (share == 1.0) return lattice;
+  const int side = int(std::lround(lattice * share / 8.0)) * 8;
+  return std::clamp(side, std::min(kSmallestLattice, lattice), lattice);
+}
+
+int tierSamples(int samples, int lattice, int latticeInUse) {
+  if (latticeInUse == lattice) return samples;
+  return std::max(8, int(std::lround(double(samples) * latticeInUse / lattice)));
 }
 
 }  // namespace vitrine::bloom

@@ -30,10 +30,18 @@ struct Settings {
   float reverbWet = 0.28f;         // how far the plate reverb opens at the climax
   float fill = 0.0f;               // transient: start (or restart) with the crystal at this concentration
   bool vent = false;               // transient action: empty the lattice now
-  Tier tier = Tier::Auto;  // render scale: high 1, medium 0.7, low 0.5 (scenes/quality.h)
+  Tier tier = Tier::Auto;  // render scale 1, 0.7, 0.5 (scenes/quality.h), and the lattice (tierLattice)
   float targetMs = 16.0f;
 };
 
 const params::Schema& schema();
+
+// What a quality tier costs beside its render scale: the lattice's side, and with it the diffusion's
+// passes (which grow with its square) and the statistics, and the raymarch's samples in proportion,
+// so that a sample spans the same share of a voxel. High: as set; medium 0.8 of the side; low 2/3
+// (96^3 -> 64^3: 30 % of the voxels). The physics are scaled to the side (bloom_math.h), so every tier
+// shows the same vapour in the same places. Sides stay multiples of 8 and within the parameter's range.
+int tierLattice(int lattice, Tier tier);
+int tierSamples(int samples, int lattice, int latticeInUse);
 
 }  // namespace vitrine::bloom
