@@ -4,6 +4,7 @@
 #include "maths/hash.h"
 #include "scenes/neon/chains.h"
 #include "scenes/neon/particle_engine.h"
+#include "scenes/neon/settings.h"
 
 #include <gtest/gtest.h>
 
@@ -243,6 +244,51 @@ TEST(NeonEngine, MoreReleasesInOneStepThanSlotsKeepTheNewest) {
   // 1 -> slot 0, 2 -> slot 1, 3 replaces 1, 4 replaces 2, 5 replaces 3.
   EXPECT_EQ(s.heads[0].serial, 5u);
   EXPECT_EQ(s.heads[1].serial, 4u);
+}
+
+// A lower tier's slots (setSlots): releases go below the limit, replacing the oldest there once it is
+// full, while heads above it swim on and die as they would (a tier change thins tubes out, never cuts
+// one); raised again, the slots above take releases.
+TEST(NeonEngine, ReleasesStayBelowTheSlotsAndHeadsAboveDieOnTheirOwn) {
+  ParticleEngine engine({8, 1.0f}, EngineMode::LockStep);
+  for (int i = 1; i <= 8; ++i) engine.release({float(i), 0.0f, 0.0f});  // serials 1..8 -> slots 0..7
+  engine.step(0.1f);
+  engine.setSlots(4);
+  engine.release({9.0f, 0.0f, 0.0f});
+  engine.release({10.0f, 0.0f, 0.0f});
+  engine.step(0.1f);
+  {
+    const std::vector<HeadState>& heads = engine.latest().heads;
+    EXPECT_EQ(heads[0].serial, 9u) << "the oldest below the limit is replaced";
+    EXPECT_EQ(heads[1].serial, 10u);
+    for (uint32_t slot = 2; slot < 8; ++slot) EXPECT_EQ(heads[slot].serial, slot + 1) << "slot " << slot << " swims on";
+  }
+  for (int i = 0; i < 14; ++i) engine.step(0.1f);  // two steps initialising, then 1 / s of life at 0.1 s
+  for (const HeadState& head : engine.latest().heads) ASSERT_EQ(chainState(head), ChainState::Inactive);
+  for (int i = 11; i <= 16; ++i) engine.release({float(i), 0.0f, 0.0f});
+  engine.step(0.1f);
+  {
+    const std::vector<HeadState>& heads = engine.latest().heads;
+    // 11..14 -> slots 0..3 (free, below the limit); 15 and 16 replace 11 and 12, not free slot 4.
+    constexpr std::array<uint32_t, 4> kSerials{15u, 16u, 13u, 14u};
+    for (uint32_t slot = 0; slot < 4; ++slot) EXPECT_EQ(heads[slot].serial, kSerials[slot]) << "slot " << slot;
+    for (uint32_t slot = 4; slot < 8; ++slot) EXPECT_EQ(chainState(heads[slot]), ChainState::Inactive);
+  }
+  engine.setSlots(8);
+  engine.release({17.0f, 0.0f, 0.0f});
+  engine.step(0.1f);
+  EXPECT_EQ(engine.latest().heads[4].serial, 17u) << "raised: the first free slot again";
+  EXPECT_THROW(engine.setSlots(0), std::invalid_argument);
+  EXPECT_THROW(engine.setSlots(9), std::invalid_argument);
+}
+
+TEST(NeonSettings, LowerTiersReleaseIntoFewerChains) {
+  EXPECT_EQ(tierChains(1024, Tier::High), 1024);
+  EXPECT_EQ(tierChains(1024, Tier::Medium), 768);
+  EXPECT_EQ(tierChains(1024, Tier::Low), 512);
+  EXPECT_EQ(tierChains(16384, Tier::Low), 8192);
+  EXPECT_EQ(tierChains(20, Tier::Low), 16) << "never under the parameter's 16";
+  EXPECT_EQ(tierChains(16, Tier::Low), 16);
 }
 
 TEST(NeonEngine, RejectsBadSettings) {

@@ -185,6 +185,8 @@ class NeonScene final : public Scene {
   std::optional<PlacementGuard> placement_;
   std::vector<HeadState> uploadHeads_;
   int builtChains_ = 0, builtParticles_ = 0;
+  uint32_t slots_ = 0;        // the chains the engine releases into: the tier's (tierChains)
+  uint32_t drawnChains_ = 0;  // the chains the passes step and draw: the slots, and any above still alive
   // current(particles_) holds the latest positions: the chain pass reads it, writes previous() and flips.
   gpu::BufferHandle heads_, particles_, boxes_;
   uint32_t boxCount_ = 0;
@@ -209,6 +211,7 @@ void NeonScene::startEngine() {
   builtParticles_ = settings_.particles;
   engine_ = std::make_unique<ParticleEngine>(EngineSettings{uint32_t(settings_.chains), settings_.decay}, mode_);
   placement_.emplace(uint32_t(settings_.chains));
+  slots_ = drawnChains_ = uint32_t(settings_.chains);
 }
 
 // The chains or their particles changed: a new engine, and buffers of the new sizes with every particle
@@ -283,6 +286,8 @@ void NeonScene::update(const FrameInput& input) {
     stepsPending_.clear();
   }
   engine_->setDecayPerSecond(settings_.decay);
+  if (const auto slots = uint32_t(tierChains(settings_.chains, quality_.active())); slots != slots_)
+    engine_->setSlots(slots_ = slots);
   handleCursor(input);
   for (const ActionCall& call : input.actions)  // checked against kActions by the host
     if (call.name == "release") {
@@ -332,12 +337,21 @@ void NeonScene::recordChains(const FrameContext& frame) {
   const Snapshot& snapshot = engine_->latest();
   uploadHeads_.resize(snapshot.heads.size());
   placement_->copy(snapshot.heads, uploadHeads_);
+  // Chains above a lowered tier's slots swim on until they die (ParticleEngine::setSlots): the passes
+  // take every slot up to the highest one alive. A slot left out holds a stale chain nobody draws;
+  // taken in again it is written before it is drawn (inactive: life 0; released: at its origin).
+  drawnChains_ = slots_;
+  for (auto slot = uint32_t(snapshot.heads.size()); slot > drawnChains_; --slot)
+    if (chainState(snapshot.heads[slot - 1]) != ChainState::Inactive) {
+      drawnChains_ = slot;
+      break;
+    }
   gpu::Buffer& heads = frame.buffer(heads_);
   frame.upload(heads, 0, std::as_bytes(std::span(uploadHeads_)), gpu::use::ComputeReadBuffer);
-  const glm::uvec2 groups = chainGroups(uint64_t(builtChains_) * uint64_t(builtParticles_), chains_.localSize()[0]);
+  const glm::uvec2 groups = chainGroups(uint64_t(drawnChains_) * uint64_t(builtParticles_), chains_.localSize()[0]);
   chains_.bind(frame.cmd);
   for (const ChainParams& params : std::exchange(stepsPending_, {})) {
-    chains_.constants(frame.cmd, chainPush(uint32_t(builtChains_), uint32_t(builtParticles_), params));
+    chains_.constants(frame.cmd, chainPush(drawnChains_, uint32_t(builtParticles_), params));
     gpu::Buffer& previous = frame.buffer(particles_);
     gpu::Buffer& next = frame.resources.previous(particles_);
     frame.transition(previous, gpu::use::ComputeReadBuffer);
@@ -396,7 +410,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
                                  .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
                                  .storageBuffer("Particles", positions.handle())
                                  .sampledImage("facadeDepth", facadeDepth.view(), nearest, kSampled));
-      vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), uint32_t(builtChains_), 0, 0);
+      vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), drawnChains_, 0, 0);
     }
   }
   const auto pass = frame.pass("neon merge");
@@ -463,7 +477,8 @@ void NeonScene::record(const FrameContext& frame) {
 
 void NeonScene::drawPanel() {
   const uint32_t alive = aliveChains();
-  ImGui::Text("%u of %d chains alive, %llu released", alive, builtChains_, (unsigned long long)releases_);
+  ImGui::Text("%u of %u chains alive (%d at the high tier), %llu released", alive, slots_, builtChains_,
+              (unsigned long long)releases_);
   ImGui::Text("particle engine: %s", mode_ == EngineMode::Worker ? "worker thread" : "lock-step");
   if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
 }

@@ -34,6 +34,7 @@ ParticleEngine::ParticleEngine(const EngineSettings& settings, EngineMode mode)
       mode_(mode),
       decayPerSecond_(checkedRate(settings.decayPerSecond, "decay per second")),
       heads_(maxChains_),
+      slots_(maxChains_),
       free_(std::greater<>(), allSlots(maxChains_)),
       snapshots_(Snapshot{0, 0, std::vector<HeadState>(maxChains_)}) {
   if (mode_ == EngineMode::Worker) worker_ = std::thread([this] { run(); });
@@ -63,6 +64,12 @@ void ParticleEngine::endSteer() { post({{}, 0.0f, 0.0f, Kind::EndSteer}); }
 
 void ParticleEngine::setDecayPerSecond(float decayPerSecond) {
   decayPerSecond_ = checkedRate(decayPerSecond, "decay per second");
+}
+
+void ParticleEngine::setSlots(uint32_t slots) {
+  if (slots == 0 || slots > maxChains_)
+    throw std::invalid_argument("neon: slots must be 1.." + std::to_string(maxChains_));
+  post({{}, 0.0f, 0.0f, Kind::Slots, slots});
 }
 
 void ParticleEngine::step(float dt) {
@@ -127,6 +134,7 @@ void ParticleEngine::apply(const std::vector<Command>& commands) {
         if (HeadState* head = pen()) head->origin = command.position;
         break;
       case Kind::EndSteer: letPenGo(); break;
+      case Kind::Slots: slots_ = command.slots; break;
       case Kind::Step:
         advance(command.dt, command.decayPerSecond);
         publish();
@@ -149,22 +157,22 @@ HeadState* ParticleEngine::pen() {
 void ParticleEngine::spawn(glm::vec3 position, bool steered) {
   if (steered) letPenGo();  // one pen at a time
   uint32_t slot;
-  if (!free_.empty()) {
+  if (!free_.empty() && free_.top() < slots_) {
     slot = free_.top();
     free_.pop();
   } else {
-    // Every slot is taken, so every slot has a live entry in occupants_ and the front live one is the
-    // oldest release. It also has the lowest life: all alive heads lose the same amount each step,
-    // and float subtraction of the same amount keeps their order, so an older head's life is lower
-    // or equal (equal lives, e.g. all still initialising at 1, go to the older release). The one
-    // exception is the pen, whose life is held: it is passed over (a single maxChains = 1 slot aside).
+    // Every slot below the limit is taken, so each has a live entry in occupants_, and the first live
+    // one below the limit is the oldest release there. It also has the lowest life: all alive heads
+    // lose the same amount each step, and float subtraction of the same amount keeps their order, so
+    // an older head's life is lower or equal (equal lives, e.g. all still initialising at 1, go to the
+    // older release). The one exception is the pen, whose life is held: it is passed over (a single
+    // slot aside).
     dropStaleOccupants();
-    auto oldest = occupants_.begin();
-    const auto live = [this](const Occupant& o) {
-      return chainState(heads_[o.slot]) != ChainState::Inactive && heads_[o.slot].serial == o.serial;
-    };
-    if (oldest->serial == pen_.serial && maxChains_ > 1)
-      oldest = std::find_if(std::next(oldest), occupants_.end(), live);
+    const bool spareThePen = slots_ > 1;
+    const auto oldest = std::find_if(occupants_.begin(), occupants_.end(), [&](const Occupant& o) {
+      return o.slot < slots_ && chainState(heads_[o.slot]) != ChainState::Inactive && heads_[o.slot].serial == o.serial &&
+             !(spareThePen && o.serial == pen_.serial);
+    });
     slot = oldest->slot;
     if (slot == pen_.slot) pen_ = {0, 0};
     occupants_.erase(oldest);
@@ -221,7 +229,7 @@ void ParticleEngine::simulationState(StateArchive& state) {
   std::vector<uint32_t> freeSlots;  // the heap's pop order is the slots' order, whatever its layout
   for (auto heap = free_; !heap.empty(); heap.pop()) freeSlots.push_back(heap.top());
   uint64_t applied = releasesApplied_.load(std::memory_order_relaxed);
-  state(decayPerSecond_, heads_, freeSlots, occupants_, serial_, pen_, steps_, applied);
+  state(decayPerSecond_, heads_, freeSlots, occupants_, serial_, slots_, pen_, steps_, applied);
   if (!state.isRestoring()) return;
   if (heads_.size() != maxChains_) throw std::invalid_argument("neon: the saved engine has another number of chains");
   free_ = decltype(free_)(std::greater<>(), std::move(freeSlots));

@@ -105,6 +105,10 @@ class ParticleEngine {
   void step(float dt);
   // The stepping thread. Takes effect from the next step().
   void setDecayPerSecond(float decayPerSecond);
+  // The stepping thread: releases from now on take slots below `slots` only (1 .. maxChains; a lower
+  // quality tier's), replacing the oldest there when those are full. Heads already above it swim on
+  // and die as they would: a lowered limit thins the tubes out over their lives, never cuts one.
+  void setSlots(uint32_t slots);
   // The stepping thread. Worker mode: returns once every step posted so far has been published
   // (tests, shutdown, a headless run that wants the worker's result); lock-step: returns at once.
   void flush();
@@ -122,12 +126,13 @@ class ParticleEngine {
   EngineMode mode() const { return mode_; }
 
  private:
-  enum class Kind : uint8_t { Release, ReleaseSteered, Steer, EndSteer, Step };
+  enum class Kind : uint8_t { Release, ReleaseSteered, Steer, EndSteer, Step, Slots };
   struct Command {
     glm::vec3 position;  // a release's or a steer's
     float dt;            // a step's
     float decayPerSecond;
     Kind kind;
+    uint32_t slots = 0;  // a Slots command's
     bool isStep() const { return kind == Kind::Step; }
   };
   struct Occupant {  // a slot taken by the release with this serial
@@ -155,6 +160,7 @@ class ParticleEngine {
   std::priority_queue<uint32_t, std::vector<uint32_t>, std::greater<>> free_;  // free slots, lowest first
   std::deque<Occupant> occupants_;  // taken slots in release order, plus stale entries for freed ones
   uint64_t serial_ = 0;
+  uint32_t slots_;      // releases take slots below this (setSlots)
   Occupant pen_{0, 0};  // the steered release (serial 0: none)
   uint64_t steps_ = 0;
   std::vector<Command> batch_;  // the commands being applied, swapped out of the inbox

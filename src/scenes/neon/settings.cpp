@@ -1,6 +1,11 @@
 #include "scenes/neon/settings.h"
 
+#include <algorithm>
+
 namespace vitrine::neon {
+namespace {
+constexpr int kFewestChains = 16;  // the chains parameter's minimum
+}
 
 const params::Schema& schema() {
   using S = Settings;
@@ -8,7 +13,7 @@ const params::Schema& schema() {
   static const params::Schema table = [] {
     auto s = params::Schema::forStruct<S>();
     s.add(params::intParam<S>({"chains", "chains", "Tubes alive at once at most.", "tubes", kRebuilds | kLogarithmic},
-                              &S::chains, 16, 16384));
+                              &S::chains, kFewestChains, 16384));
     s.add(params::intParam<S>({"particles", "particles per chain", "Particles in each tube's chain.", "tubes",
                                kRebuilds},
                               &S::particles, 4, 64));
@@ -74,10 +79,16 @@ const params::Schema& schema() {
               {{"chains", "4096"}, {"autopilot_rate", "1400"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",
               {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
-    addQualityParams<S>(s, "Render scale of the facade, tubes and post passes; the low tier takes half the depth of field's taps", 16.0f);
+    addQualityParams<S>(s, "Render scale of the facade, tubes and post passes; medium takes 3/4 of the chains, low half "
+                           "of them and half the depth of field's taps", 16.0f);
     return s;
   }();
   return table;
+}
+
+int tierChains(int chains, Tier tier) {
+  const int share = tier == Tier::Low ? chains / 2 : tier == Tier::Medium ? chains * 3 / 4 : chains;
+  return std::max(std::min(chains, kFewestChains), share);
 }
 
 }  // namespace vitrine::neon

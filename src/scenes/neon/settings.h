@@ -41,10 +41,16 @@ struct Settings {
   Stage stage = Stage::Final;
 
   bool operator==(const Settings&) const = default;
-  Tier tier = Tier::Auto;  // render scale: high 1, medium 0.7, low 0.5 (scenes/quality.h)
+  Tier tier = Tier::Auto;  // render scale 1, 0.7, 0.5 (scenes/quality.h), and the chains (tierChains)
   float targetMs = 16.0f;
 };
 
 const params::Schema& schema();
+
+// What a quality tier costs beside its render scale: the chains the engine releases into (high: as set;
+// medium 3/4; low 1/2, never under the parameter's 16), which the chains and tubes passes step and
+// draw. The default's autopilot keeps ~130 alive, under every tier's; a dense field thins out, each
+// tube the same, the bloom's exposure following the count (tube_light.h).
+int tierChains(int chains, Tier tier);
 
 }  // namespace vitrine::neon
