@@ -39,6 +39,8 @@ class QualityTiers : public GpuTest {
 
 TEST_F(QualityTiers, KifsLowTierMarchesTheSameFractal) { expectSamePicture("kifs", 3.0); }
 TEST_F(QualityTiers, NoodlesLowTierDrawsEveryStrand) { expectSamePicture("noodles", 12.0); }
+// Glass's lower tiers trace 12 and 8 of its 16 jittered wavelengths a frame: one frame, no history yet.
+TEST_F(QualityTiers, GlassLowTierTracesTheSameRainbow) { expectSamePicture("glass", 2.0); }
 
 }  // namespace
 }  // namespace vitrine::test

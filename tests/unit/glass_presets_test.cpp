@@ -64,6 +64,18 @@ TEST(GlassPresets, PhysicalOpticsThenTheDiamondIsTheOriginalsDiamond) {
   EXPECT_TRUE(diamond == withPreset(Settings{}, "diamond"));
 }
 
+// With jitter on, a lower tier traces fewer wavelengths a frame (the history averages the strata the
+// frames take); with jitter off the stratum centres are the picture and stay.
+TEST(GlassTiers, LowerTiersTraceFewerJitteredWavelengths) {
+  EXPECT_EQ(glass::tierWavelengths(16, Tier::High, true), 16);
+  EXPECT_EQ(glass::tierWavelengths(16, Tier::Medium, true), 12);
+  EXPECT_EQ(glass::tierWavelengths(16, Tier::Low, true), 8);
+  EXPECT_EQ(glass::tierWavelengths(64, Tier::Low, true), 32);
+  EXPECT_EQ(glass::tierWavelengths(8, Tier::Low, true), 8) << "never under 8";
+  EXPECT_EQ(glass::tierWavelengths(3, Tier::Low, true), 3) << "nor over what is set";
+  EXPECT_EQ(glass::tierWavelengths(16, Tier::Low, false), 16) << "fixed strata are the picture";
+}
+
 TEST(GlassPresets, AllTurnOnSmoothCurvatureAsTheOriginalsDo) {
   for (const std::string& name : presetNames()) {
     Settings round;

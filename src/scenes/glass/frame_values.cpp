@@ -42,7 +42,7 @@ shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& momen
     }
   const bool jitter = s.jitter && !moment.zHeld;
   b.heroLambda = heroLambda(uint32_t(moment.frame), moment.seed, jitter);
-  b.wavelengths = moment.zHeld ? 3 : sampleCount(s);
+  b.wavelengths = moment.zHeld ? 3 : tierWavelengths(sampleCount(s), moment.tier, jitter);
   b.approxExits = s.mode == RefractionMode::Approx ? 1u : 0u;
   b.jitter = jitter ? 1u : 0u;
   b.optics = s.optics == Optics::Physical ? 1 : 0;

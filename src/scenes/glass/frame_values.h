@@ -19,6 +19,7 @@ struct FrameMoment {
   uint64_t frame = 0;
   uint32_t seed = 0;
   bool zHeld = false;  // three wavelengths without jitter
+  Tier tier = Tier::High;  // the quality tier in use: its share of the wavelengths (tierWavelengths)
 };
 
 shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& moment, const Instances& instances);

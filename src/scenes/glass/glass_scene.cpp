@@ -112,6 +112,7 @@ void GlassScene::applyKeys(const KeyRequests& keys) {
 
 void GlassScene::update(const FrameInput& input) {
   quality_.update(settings_.tier, settings_.targetMs, input);
+  moment_.tier = quality_.active();
   moment_.seed = input.seed;
   moment_.frame = input.frame;
   moment_.previousTime = moment_.time;
@@ -169,7 +170,7 @@ void GlassScene::record(const FrameContext& frame) {
 }
 
 void GlassScene::drawPanel() {
-  const int n = moment_.zHeld ? 3 : sampleCount(settings_);
+  const int n = moment_.zHeld ? 3 : tierWavelengths(sampleCount(settings_), moment_.tier, settings_.jitter);
   ImGui::Text("%d wavelengths%s, %s optics", n, moment_.zHeld ? " (Z held: jitter off)" : "",
               settings_.optics == Optics::Physical ? "physical" : "seed");
   if (settings_.material > 0) {

@@ -4,6 +4,8 @@
 #include "scenes/glass/optics.h"
 #include "scenes/glass/studio.h"
 
+#include <algorithm>
+
 namespace vitrine::glass {
 namespace {
 
@@ -27,6 +29,12 @@ std::vector<std::string> materialNames() {
 }  // namespace
 
 int sampleCount(const Settings& settings) { return kSampleCounts[size_t(settings.samplesIndex)]; }
+
+int tierWavelengths(int wavelengths, Tier tier, bool jitter) {
+  if (!jitter || tier == Tier::High || tier == Tier::Auto) return wavelengths;
+  const int share = tier == Tier::Low ? wavelengths / 2 : wavelengths * 3 / 4;
+  return std::max(std::min(wavelengths, 8), share);
+}
 
 const params::Schema& schema() {
   using S = Settings;
@@ -195,7 +203,8 @@ const params::Schema& schema() {
             {"exposure", params::formatFloat(kDiamondExposure)},
             {"env_rotation", params::formatFloat(kDiamondRotation)}},
            true);
-    addQualityParams<S>(s, "Render scale of the glass and its history", 16.0f);
+    addQualityParams<S>(s, "Render scale of the glass and its history, and with jitter on the wavelengths a frame "
+                           "traces (medium 3/4, low half, at least 8)", 16.0f);
     return s;
   }();
   return table;

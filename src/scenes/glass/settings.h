@@ -62,6 +62,11 @@ struct Settings {
 };
 
 int sampleCount(const Settings& settings);
+// The wavelengths a frame traces at a quality tier: with jitter on, whose frames take new strata that
+// the history averages, medium 3/4 and low half of them (never fewer than 8, nor more than set): the
+// converged rainbow is the same, a frame costs less. Jitter off samples fixed stratum centres, whose
+// count is the picture: every tier keeps it.
+int tierWavelengths(int wavelengths, Tier tier, bool jitter);
 
 // The diamond preset's exposure and panorama rotation in the built-in studio, chosen by looking.
 inline constexpr float kDiamondExposure = 1.0f;
