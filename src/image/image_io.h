@@ -1,7 +1,7 @@
 #pragma once
-// The one module that touches image files. Built on OpenImageIO (every format) or, with
-// VITRINE_WITH_OIIO=OFF for the packed GPU-machine binary, on OpenEXR, libpng and libjpeg (EXR, PNG
-// and JPEG).
+// The one module that touches image files: EXR through OpenEXR, PNG through libpng, JPEG through
+// libjpeg; pictures in other formats through OpenImageIO, a module loaded on the first such picture
+// (none with VITRINE_WITH_OIIO=OFF, the packed GPU-machine binary).
 #include "image/image.h"
 
 #include <cstdint>
@@ -46,7 +46,7 @@ struct Picture {
 };
 // Reads any format the image library knows (JPEG, PNG, WebP, TIFF, EXR, ...) scaled down, keeping its
 // aspect, so that neither side exceeds maxSide; grey and RGB gain opaque alpha. Throws vitrine::Error
-// naming the path and the reason (the build without OpenImageIO reads PNG, JPEG and EXR only).
+// naming the path and the reason (the build without OpenImageIO's module reads PNG, JPEG and EXR only).
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide);
 bool canReadPictures();
 

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -145,6 +146,34 @@ TEST_F(ImageFiles, AFileReplacedUnderTheSameNameIsReadAsItIsNow) {
       }
     }
   }
+}
+
+// OpenImageIO (~260 shared libraries, ~0.3 s of CPU to load) is loaded by the first picture in a format
+// the image module does not read itself, never by EXR, PNG or JPEG. Checked in a fresh process (a
+// threadsafe death test runs this test alone in a new one), so no earlier test has loaded it.
+TEST_F(ImageFiles, OpenImageIoLoadsOnlyForAnOtherFormat) {
+#if VITRINE_WITH_OIIO
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto loaded = [] {
+    std::ifstream maps("/proc/self/maps");
+    for (std::string line; std::getline(maps, line);)
+      if (line.find("libOpenImageIO") != std::string::npos) return true;
+    return false;
+  };
+  const std::filesystem::path folder = folder_, kept = VITRINE_FUZZ_REGRESSION_DIR;
+  EXPECT_EXIT(
+      {
+        writeImage(folder / "a.png", flatImage(4, 4, 0.5f));
+        writeImage(folder / "a.exr", flatImage(4, 4, 0.5f));
+        const bool early = loaded() || readPicture(folder / "a.png", 64).width != 4 ||
+                           readPicture(folder / "a.exr", 64).width != 4 || loaded();
+        const Picture hdr = readPicture(kept / "image_hdr/stale-cache-2.hdr", 64);
+        std::exit(early ? 1 : !loaded() ? 2 : hdr.width != 8 || hdr.height != 6 ? 3 : 0);
+      },
+      ::testing::ExitedWithCode(0), "");
+#else
+  GTEST_SKIP() << "this build reads no other formats";
+#endif
 }
 
 // A fuzzed EXR (tests/fuzz-regressions/image_exr/huge-attribute-*, 857 bytes) whose first attribute

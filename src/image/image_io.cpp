@@ -1,6 +1,8 @@
-// The image module without OpenImageIO (the packed GPU-machine binary): EXR through OpenEXR, PNG
-// through libpng's simplified API and JPEG through libjpeg(-turbo), both of which the packed binary
-// already carries for FreeType and costs next to nothing.
+// The image module: EXR through OpenEXR, PNG through libpng's simplified API and JPEG through
+// libjpeg(-turbo), which the core links anyway (FreeType) and which load in milliseconds. Pictures in
+// other formats (WebP, TIFF, HDR, ...) go to OpenImageIO, a module loaded on the first such picture
+// (picture_oiio.cpp says why); a build without it (VITRINE_WITH_OIIO=OFF, the packed GPU-machine
+// binary) names the formats it reads instead.
 #include <ImfArray.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
@@ -21,10 +23,16 @@
 
 #include <cstring>
 
+#if VITRINE_WITH_OIIO
+#include <dlfcn.h>
+#include <unistd.h>
+#endif
+
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
+#include "image/picture_oiio.h"
 
 namespace vitrine {
 
@@ -84,6 +92,32 @@ Picture readJpeg(const std::filesystem::path& path) {
   return picture;
 }
 
+#if VITRINE_WITH_OIIO
+using ReadPicture = decltype(&vitrine_read_picture_oiio);
+
+// The OpenImageIO module's entry, loaded once: beside the executable (an installed or packed copy),
+// else where the build put it. Null, with the reason in `why`, when neither loads.
+ReadPicture openImageIoReader(std::string& why) {
+#if VITRINE_OIIO_LINKED
+  return &vitrine_read_picture_oiio;
+#else
+  static std::string failure;
+  static const ReadPicture reader = [] () -> ReadPicture {
+    std::error_code ec;
+    const std::filesystem::path beside = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / VITRINE_OIIO_MODULE_NAME;
+    for (const std::filesystem::path& module : {beside, std::filesystem::path(VITRINE_OIIO_MODULE)}) {
+      if (void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL))
+        if (void* entry = dlsym(handle, "vitrine_read_picture_oiio")) return reinterpret_cast<ReadPicture>(entry);
+      failure = dlerror();
+    }
+    return nullptr;
+  }();
+  why = failure;
+  return reader;
+#endif
+}
+#endif
+
 // A box filter down to fit maxSide: each output texel the mean of the source texels it covers.
 Picture fitWithin(Picture source, uint32_t maxSide) {
   const uint32_t longest = std::max(source.width, source.height);
@@ -124,6 +158,7 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
     in.read(reinterpret_cast<char*>(head.data()), head.size());
     head.back() = in.gcount() == std::streamsize(head.size()) ? head.back() : 0;
   }
+  checkImageHeader(path);  // whatever its name: the readers below pick by content
   const std::string_view format = sniffImageFormat(head);
   Picture picture;
   if (format == "PNG") {
@@ -134,10 +169,17 @@ Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
     const ImageRgba linear = readImage(path);
     picture = {linear.width, linear.height, srgb8(linear)};
   } else {
+#if VITRINE_WITH_OIIO
+    std::string why;
+    const ReadPicture reader = openImageIoReader(why);
+    if (!reader) throw Error(fmt::format("Cannot read {}: OpenImageIO's module did not load ({}).", path.string(), why));
+    if (!reader(path.c_str(), &picture, &why)) throw Error(fmt::format("Cannot read {}: {}", path.string(), why));
+#else
     throw Error(fmt::format("Cannot read {}: {} this build reads PNG, JPEG and EXR only (built with "
                             "VITRINE_WITH_OIIO=OFF).", path.string(),
                             format.empty() ? std::string("it is no image format known, and") :
                                              fmt::format("it is a {} file, and", format)));
+#endif
   }
   return fitWithin(std::move(picture), maxSide);
 }
@@ -185,25 +227,66 @@ std::vector<uint16_t> srgb16(const ImageRgba& image) {
   return out;
 }
 
+namespace {
+
+// 8-bit RGBA rows as a PNG in memory, each note a tEXt chunk (libpng's simplified API writes no text).
+// libpng reports a fatal error by calling its error function, which must not return: it jumps back.
+std::vector<unsigned char> encodePng(const std::filesystem::path& path, const std::vector<uint8_t>& rgba, uint32_t width,
+                                     uint32_t height, const ImageNotes& notes) {
+  struct Writer {
+    std::vector<unsigned char> bytes;
+    std::string error;
+    std::jmp_buf jump;
+  } writer;
+  png_structp png = png_create_write_struct(
+      PNG_LIBPNG_VER_STRING, &writer,
+      [](png_structp p, png_const_charp message) {
+        auto* w = static_cast<Writer*>(png_get_error_ptr(p));
+        w->error = message;
+        std::longjmp(w->jump, 1);
+      },
+      nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    throw Error(fmt::format("Cannot write {}: libpng has no memory", path.string()));
+  }
+  std::vector<png_text> texts(notes.size());
+  if (setjmp(writer.jump)) {
+    png_destroy_write_struct(&png, &info);
+    throw Error(fmt::format("Cannot write {}: {}", path.string(), writer.error));
+  }
+  png_set_write_fn(
+      png, &writer,
+      [](png_structp p, png_bytep data, png_size_t size) {
+        auto& out = static_cast<Writer*>(png_get_io_ptr(p))->bytes;
+        out.insert(out.end(), data, data + size);
+      },
+      nullptr);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  for (size_t i = 0; i < notes.size(); ++i) {
+    texts[i].compression = PNG_TEXT_COMPRESSION_NONE;
+    texts[i].key = const_cast<char*>(notes[i].first.c_str());
+    texts[i].text = const_cast<char*>(notes[i].second.c_str());
+  }
+  if (!texts.empty()) png_set_text(png, info, texts.data(), int(texts.size()));
+  png_write_info(png, info);
+  for (uint32_t y = 0; y < height; ++y) png_write_row(png, rgba.data() + size_t(y) * width * 4);
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return std::move(writer.bytes);
+}
+
+}  // namespace
+
 void writeImage(const std::filesystem::path& path, const ImageRgba& image, const ImageNotes& notes) {
   const std::optional<ImageFormat> format = imageFormatFromName(path);
   if (!format)
     throw Error(fmt::format("Cannot write {}: name it .exr (linear half float) or .png (8-bit sRGB).", path.string()));
-  if (*format == ImageFormat::Png) {  // libpng's simplified API writes no text: such a PNG has no notes
-    const std::vector<uint8_t> encoded = srgb8(image);
-    // Into memory (asked for its size first), then to the disk through writeFileAtomically, which
-    // checks every write.
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    png.width = image.width, png.height = image.height, png.format = PNG_FORMAT_RGBA;
-    png_alloc_size_t size = 0;
-    if (!png_image_write_to_memory(&png, nullptr, &size, 0, encoded.data(), 0, nullptr))
-      throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
-    std::vector<unsigned char> bytes(size);
-    if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, encoded.data(), 0, nullptr))
-      throw Error(fmt::format("Cannot write {}: {}", path.string(), png.message));
-    bytes.resize(size);
-    writeFileAtomically(path, bytes);
+  if (*format == ImageFormat::Png) {
+    // Into memory, then to the disk through writeFileAtomically, which checks every write.
+    writeFileAtomically(path, encodePng(path, srgb8(image), image.width, image.height, notes));
     return;
   }
   MemoryStream memory;
