@@ -319,7 +319,8 @@ void NeonScene::simulationState(StateArchive& state) {
   }
   engine_->simulationState(state);
   placement_->simulationState(state);
-  state(releases_, lastInput_, drawing_, autopilotNext_, time_, reducedMotion_, stepsPending_);
+  // slots_ too: the engine restores its own limit, and the scene must know it to post the next change.
+  state(releases_, lastInput_, drawing_, autopilotNext_, time_, reducedMotion_, stepsPending_, slots_);
   state.contents(resources_, particles_);
 }
 
