@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -67,5 +69,18 @@ class AutoTier {
 
 // A render scale per tier, the common case: high 1, medium 0.7, low 0.5 (a quarter of the pixels).
 inline float tierScale(Tier tier) { return tier == Tier::Low ? 0.5f : tier == Tier::Medium ? 0.7f : 1.0f; }
+
+// What a tier keeps of a count a frame's cost grows with (a lattice's side, chains, wavelengths): all of
+// it at high (and auto, resolved before it gets here), `medium` and `low` shares of it below, rounded to
+// a multiple of `step`, never under `fewest` nor over the count itself.
+struct TierShares {
+  double medium = 0.75, low = 0.5;
+};
+inline int tierCount(int count, Tier tier, int fewest, TierShares shares = {}, int step = 1) {
+  if (tier != Tier::Medium && tier != Tier::Low) return count;
+  const double share = tier == Tier::Low ? shares.low : shares.medium;
+  const int kept = int(std::lround(count * share / step)) * step;
+  return std::clamp(kept, std::min(fewest, count), count);
+}
 
 }  // namespace vitrine

@@ -74,12 +74,7 @@ const params::Schema& schema() {
   return table;
 }
 
-int tierLattice(int lattice, Tier tier) {
-  const double share = tier == Tier::Low ? 2.0 / 3.0 : tier == Tier::Medium ? 0.8 : 1.0;
-  if (share == 1.0) return lattice;
-  const int side = int(std::lround(lattice * share / 8.0)) * 8;
-  return std::clamp(side, std::min(kSmallestLattice, lattice), lattice);
-}
+int tierLattice(int lattice, Tier tier) { return tierCount(lattice, tier, kSmallestLattice, {0.8, 2.0 / 3.0}, 8); }
 
 int tierSamples(int samples, int lattice, int latticeInUse) {
   if (latticeInUse == lattice) return samples;

@@ -4,8 +4,6 @@
 #include "scenes/glass/optics.h"
 #include "scenes/glass/studio.h"
 
-#include <algorithm>
-
 namespace vitrine::glass {
 namespace {
 
@@ -31,9 +29,7 @@ std::vector<std::string> materialNames() {
 int sampleCount(const Settings& settings) { return kSampleCounts[size_t(settings.samplesIndex)]; }
 
 int tierWavelengths(int wavelengths, Tier tier, bool jitter) {
-  if (!jitter || tier == Tier::High || tier == Tier::Auto) return wavelengths;
-  const int share = tier == Tier::Low ? wavelengths / 2 : wavelengths * 3 / 4;
-  return std::max(std::min(wavelengths, 8), share);
+  return jitter ? tierCount(wavelengths, tier, 8) : wavelengths;
 }
 
 const params::Schema& schema() {

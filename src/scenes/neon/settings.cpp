@@ -1,7 +1,5 @@
 #include "scenes/neon/settings.h"
 
-#include <algorithm>
-
 namespace vitrine::neon {
 namespace {
 constexpr int kFewestChains = 16;  // the chains parameter's minimum
@@ -86,9 +84,6 @@ const params::Schema& schema() {
   return table;
 }
 
-int tierChains(int chains, Tier tier) {
-  const int share = tier == Tier::Low ? chains / 2 : tier == Tier::Medium ? chains * 3 / 4 : chains;
-  return std::max(std::min(chains, kFewestChains), share);
-}
+int tierChains(int chains, Tier tier) { return tierCount(chains, tier, kFewestChains); }
 
 }  // namespace vitrine::neon
