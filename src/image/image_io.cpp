@@ -1,8 +1,8 @@
-// The image module: EXR through OpenEXR, PNG through libpng's simplified API and JPEG through
-// libjpeg(-turbo), which the core links anyway (FreeType) and which load in milliseconds. Pictures in
-// other formats (WebP, TIFF, HDR, ...) go to OpenImageIO, a module loaded on the first such picture
-// (picture_oiio.cpp says why); a build without it (VITRINE_WITH_OIIO=OFF, the packed GPU-machine
-// binary) names the formats it reads instead.
+// The image module: EXR through OpenEXR, PNG through libpng and JPEG through libjpeg(-turbo), which
+// the core links anyway (FreeType) and which load in milliseconds. Pictures in other formats (WebP,
+// TIFF, HDR, ...) go to OpenImageIO, a module loaded on the first such picture (picture_oiio.cpp says
+// why); a build without it (VITRINE_WITH_OIIO=OFF, the packed GPU-machine binary) names the formats
+// it reads instead.
 #include <ImfArray.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
@@ -25,7 +25,6 @@
 
 #if VITRINE_WITH_OIIO
 #include <dlfcn.h>
-#include <unistd.h>
 #endif
 
 #include "core/error.h"
@@ -108,7 +107,7 @@ ReadPicture openImageIoReader(std::string& why) {
     for (const std::filesystem::path& module : {beside, std::filesystem::path(VITRINE_OIIO_MODULE)}) {
       if (void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL))
         if (void* entry = dlsym(handle, "vitrine_read_picture_oiio")) return reinterpret_cast<ReadPicture>(entry);
-      failure = dlerror();
+      if (const char* error = dlerror()) failure = error;
     }
     return nullptr;
   }();
