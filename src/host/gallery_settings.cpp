@@ -70,8 +70,8 @@ void GallerySettings::remember(std::string_view scene, params::KeyValues values,
   };
   for (const auto& [key, text] : values)
     if (effectiveText(scene, stored, key) != text) mark(key);
-  for (const auto& [key, text] : stored)
-    if (std::none_of(values.begin(), values.end(), [&](const auto& kv) { return kv.first == key; })) mark(key);
+  for (const auto& [key, text] : stored)  // an init-capture: clang 14 (the sanitizer build) cannot capture a binding
+    if (std::none_of(values.begin(), values.end(), [&name = key](const auto& kv) { return kv.first == name; })) mark(key);
   stored = std::move(values);
   if (changed) saver_.markDirty(now);
 }

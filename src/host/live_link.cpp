@@ -152,8 +152,9 @@ void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* event
       lastRefusal_ = why;
     } else if (events) {
       for (const auto& [key, value] : out.values) {
+        // An init-capture: clang 14 (the sanitizer build) cannot capture a structured binding itself.
         const auto by = std::find_if(modulator_.mappings().rbegin(), modulator_.mappings().rend(),
-                                     [&](const live::Mapping& m) { return m.target == key; });
+                                     [&target = key](const live::Mapping& m) { return m.target == target; });
         events->emit(input.time, scene_->name, {"mapped", {{"key", key}, {"value", value}, {"by", by->source}}});
       }
     }

@@ -128,7 +128,7 @@ TEST_F(EventLogFiles, WritesOneLinePerEventWhenClosed) {
             eventJsonLine(0.5, "kifs", kStage) + "\n" + eventJsonLine(1.0, "kifs", SceneEvent{"reset", {}}) + "\n");
   std::ifstream lines(path);
   int count = 0;
-  for (std::string line; std::getline(lines, line); ++count) EXPECT_NO_THROW(nlohmann::json::parse(line));
+  for (std::string line; std::getline(lines, line); ++count) EXPECT_TRUE(nlohmann::json::accept(line)) << line;
   EXPECT_EQ(count, 2);
   log.close();  // a second close changes nothing
   EXPECT_THROW(log.emit(2.0, "kifs", kStage), Error);
