@@ -57,7 +57,7 @@ std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
 
 OutputWindow::OutputWindow(const gpu::Instance& instance, const gpu::Device& device, const OutputPlacement& placement,
                            bool vsync, uint32_t framesInFlight, int index)
-    : device_(device), warp_(placement.warp.value_or(maths::OutputWarp{})), name_(placement.name) {
+    : warp_(placement.warp.value_or(maths::OutputWarp{})), name_(placement.name) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);  // a projector shows the picture, not a title bar
   glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);

@@ -56,7 +56,6 @@ class OutputWindow {
   VkExtent2D extent() const { return swapchain_->extent(); }
 
  private:
-  const gpu::Device& device_;
   GLFWwindow* window_ = nullptr;
   std::optional<Surface> surface_;
   std::optional<Swapchain> swapchain_;

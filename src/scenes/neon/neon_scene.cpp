@@ -373,7 +373,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   gpu::Image& facadeColour = frame.image(facadeColour_);
   gpu::Image& facadeDepth = frame.image(facadeDepth_);
   const VkSampler nearest = device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp);
-  constexpr VkImageLayout kSampled = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  constexpr VkImageLayout kReadOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   if (!facadeDrawn_) {
     const auto pass = frame.pass("neon facade");
     gpu::Image& lighting = frame.image(lighting_);
@@ -390,7 +390,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
                                 .sampledImage("lighting", lighting.view(),
                                               device_.sampler(gpu::Device::Filter::Linear,
                                                               gpu::Device::Address::Clamp, true),
-                                              kSampled)
+                                              kReadOnly)
                                 .storageImage("colour", facadeColour.view())
                                 .storageImage("depth", facadeDepth.view()));
     facade_.dispatchOver(frame.cmd, extent_);
@@ -410,7 +410,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
       tubes_.push(frame.cmd, gpu::Bindings()
                                  .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
                                  .storageBuffer("Particles", positions.handle())
-                                 .sampledImage("facadeDepth", facadeDepth.view(), nearest, kSampled));
+                                 .sampledImage("facadeDepth", facadeDepth.view(), nearest, kReadOnly));
       vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), drawnChains_, 0, 0);
     }
   }

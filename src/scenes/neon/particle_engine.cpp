@@ -34,8 +34,8 @@ ParticleEngine::ParticleEngine(const EngineSettings& settings, EngineMode mode)
       mode_(mode),
       decayPerSecond_(checkedRate(settings.decayPerSecond, "decay per second")),
       heads_(maxChains_),
-      slots_(maxChains_),
       free_(std::greater<>(), allSlots(maxChains_)),
+      slots_(maxChains_),
       snapshots_(Snapshot{0, 0, std::vector<HeadState>(maxChains_)}) {
   if (mode_ == EngineMode::Worker) worker_ = std::thread([this] { run(); });
 }
