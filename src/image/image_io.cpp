@@ -17,6 +17,8 @@
 #include <cctype>
 #include <cmath>
 #include <csetjmp>
+#include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -325,7 +327,14 @@ ImageRgba readImage(const std::filesystem::path& path) {
     const int width = window.max.x - window.min.x + 1;
     const int height = window.max.y - window.min.y + 1;
     Imf::Array2D<Imf::Rgba> half(height, width);
-    file.setFrameBuffer(&half[0][0] - window.min.x - size_t(window.min.y) * width, 1, width);
+    // OpenEXR addresses pixel (x, y) as base + x + y * width, so the base sits before the buffer by the
+    // data window's origin, which may be anywhere (a fuzzed file put it far below zero). Pointer
+    // arithmetic that leaves the buffer is undefined (UBSan caught the old `&half[0][0] - min...`):
+    // the offset is taken in integers, and OpenEXR adds it back inside its own code.
+    const std::ptrdiff_t origin = std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * width;
+    auto* base = reinterpret_cast<Imf::Rgba*>(reinterpret_cast<std::uintptr_t>(&half[0][0]) -
+                                              std::uintptr_t(origin) * sizeof(Imf::Rgba));
+    file.setFrameBuffer(base, 1, width);
     file.readPixels(window.min.y, window.max.y);
     ImageRgba image{uint32_t(width), uint32_t(height), std::vector<float>(size_t(width) * height * 4)};
     for (int y = 0; y < height; ++y)
