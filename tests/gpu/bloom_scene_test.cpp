@@ -29,7 +29,7 @@ class BloomScene : public GpuTest {
     config.parameters = {{"lattice", "48"}, {"mute", "on"}};
     config.parameters.insert(config.parameters.end(), values.begin(), values.end());
     host::Offscreen offscreen(device(), config);
-    for (uint32_t i = 0; i < frames; ++i) offscreen.renderFrame();
+    for (uint32_t i = 0; i < frames; ++i) offscreen.renderFrame(1, i + 1 == frames);  // the last one drawn: it is read
     return offscreen.readback();
   }
 };

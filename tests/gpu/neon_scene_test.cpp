@@ -31,7 +31,7 @@ ImageRgba render(const gpu::Device& device, const Render& r) {
   if (r.script) config.input = host::parseInputScript(r.script, "test script");
   host::Offscreen offscreen(device, config);
   const int frames = int(std::lround(r.seconds / r.step));
-  for (int i = 0; i < frames; ++i) offscreen.renderFrame();
+  for (int i = 0; i < frames; ++i) offscreen.renderFrame(1, i + 1 == frames);  // the last one drawn: it is read
   return offscreen.readback();
 }
 
