@@ -9,6 +9,16 @@
 // The most instances of a shape the scene shows at once (the diamond stands alone).
 #define GLASS_MAX_INSTANCES 4
 
+// The options that choose shade.glsl's paths, as the bits of its specialization constant 1
+// (GLASS_SHADE_OPTIONS), which the host takes from this block's fields (frame_values.h: shadeOptions):
+// each combination's pipelines carry only their own paths. A uniform branch costs a GPU little, but
+// llvmpipe paid for every path not taken: lavapipe's spectral pass 85 -> 44 ms at the low tier.
+#define GLASS_SHADE_PHYSICAL 1u     // optics == 1
+#define GLASS_SHADE_ENVIRONMENT 2u  // environment == 1
+#define GLASS_SHADE_APPROX 4u       // approxExits == 1
+#define GLASS_SHADE_SELLMEIER 8u    // sellmeier == 1
+#define GLASS_SHADE_OPTION_COMBINATIONS 16u
+
 VITRINE_SHARED_BEGIN
 // One instance of the shape: its place now and last frame (the motion vectors), and the pixels its
 // turned proxy box covers, which the compute path tests before shading.
@@ -41,7 +51,7 @@ struct GlassFrame {
   int wavelengths;        // N, stratified over 380-700 nm
   uint approxExits;       // 1: one back exit at heroLambda, shared by every wavelength; 0: each its own
   uint jitter;            // 1: the wavelengths jitter per pixel and frame; 0: stratum centres
-  int optics;             // 0 seed, 1 physical (OPTICS_PHYSICAL)
+  int optics;             // 0 seed, 1 physical
   vec3 shapeSize;         // along x, y, z, world units (shapes.glsl's GlassShapeDims::sizeEdge.xyz)
   float shapeEdge;        // the rim's rounding radius (pill, cube, plate)
   float waveAmplitude;    // the plate's waves; the other shapes have amplitude 0 and length 1

@@ -1,6 +1,6 @@
 // The push blocks of the glass scene's screen passes, one declaration for both sides
-// (shaders/common/interop.h says how): compose_pass.cpp, resolve_pass.cpp and post_pass.cpp fill them,
-// compose.comp, resolve.comp and post.comp read them.
+// (shaders/common/interop.h says how): compose_pass.cpp and resolve_pass.cpp fill them, compose.comp and
+// resolve.comp read them; post.comp's two options are its specialization constant's bits.
 #ifndef GLASS_PASS_PUSH_H
 #define GLASS_PASS_PUSH_H
 #include "../common/interop.h"
@@ -9,6 +9,13 @@
 #define GLASS_SOURCE_GRADIENT 0
 #define GLASS_SOURCE_CHECKER 1
 #define GLASS_SOURCE_PHOTO 2
+
+// post.comp's specialization constant 0 (GLASS_POST_OPTIONS): each combination is its own pipeline, as
+// llvmpipe pays for the paths a uniform branch does not take (the FXAA path cost the plain tone map
+// 7.5 -> 1.2 ms at lavapipe's low tier).
+#define GLASS_POST_FXAA 1u    // FXAA after the tone map
+#define GLASS_POST_FILMIC 2u  // physical optics' filmic roll-off; without it, the seed's clip at 1
+#define GLASS_POST_OPTION_COMBINATIONS 4u
 
 VITRINE_SHARED_BEGIN
 // The backdrop: what to draw, and the page's paper under its text.
@@ -27,11 +34,6 @@ struct GlassResolvePush {
   uint reproject;     // 1: read the history where the surface was last frame; 0: where it is (the world stands)
 };
 
-// The accumulated picture to the output.
-struct GlassPostPush {
-  uint fxaa;         // 1: FXAA after the tone map
-  uint filmicCurve;  // 1: physical optics' filmic roll-off; 0: the seed's clip at 1
-};
 VITRINE_SHARED_END
 
 #endif

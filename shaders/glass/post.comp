@@ -10,9 +10,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D accumulated;
 layout(set = 0, binding = 1, rgba16f) uniform writeonly image2D target;
-layout(push_constant) uniform Push { GlassPostPush pc; };
+layout(constant_id = 0) const uint GLASS_POST_OPTIONS = 0u;  // pass_push.h: GLASS_POST_*
+bool postOption(uint bit) { return (GLASS_POST_OPTIONS & bit) != 0u; }
 
-vec3 tone(vec3 c) { return pc.filmicCurve != 0u ? filmic(max(c, 0.0)) : clamp(c, 0.0, 1.0); }
+vec3 tone(vec3 c) { return postOption(GLASS_POST_FILMIC) ? filmic(max(c, 0.0)) : clamp(c, 0.0, 1.0); }
 vec3 at(vec2 uv) { return tone(textureLod(accumulated, uv, 0.0).rgb); }
 float perceptual(vec3 c) { return sqrt(luminance(c)); }
 
@@ -43,5 +44,5 @@ void main() {
   if (any(greaterThanEqual(p, size))) return;
   const vec2 texel = 1.0 / vec2(size);
   const vec2 uv = (vec2(p) + 0.5) * texel;
-  imageStore(target, p, vec4(pc.fxaa != 0u ? fxaa(uv, texel) : at(uv), 1.0));
+  imageStore(target, p, vec4(postOption(GLASS_POST_FXAA) ? fxaa(uv, texel) : at(uv), 1.0));
 }

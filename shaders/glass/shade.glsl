@@ -14,22 +14,25 @@ layout(set = 0, binding = 1) uniform sampler2D backdrop;
 layout(set = 0, binding = 2) uniform sampler2D panorama;
 
 
-const int OPTICS_PHYSICAL = 1;  // GlassFrame::optics
 // GlassFrame::diamondDebug
 const int DIAMOND_DEBUG_WIREFRAME = 1;
 const int DIAMOND_DEBUG_FACETS = 2;
 const int DIAMOND_DEBUG_TIR = 3;
 
-bool physical() { return F.optics == OPTICS_PHYSICAL; }
+// The frame's options, fixed per pipeline (frame_block.h's GLASS_SHADE_* bits, from F's optics,
+// environment, approxExits and sellmeier): only the paths they choose are compiled.
+layout(constant_id = 1) const uint GLASS_SHADE_OPTIONS = 0u;
+bool shadeOption(uint bit) { return (GLASS_SHADE_OPTIONS & bit) != 0u; }
+bool physical() { return shadeOption(GLASS_SHADE_PHYSICAL); }
 
 float iorAt(float lambda) {
-  if (F.sellmeier != 0u) return sellmeierIor(lambda, F.sellmeierB, F.sellmeierC);
+  if (shadeOption(GLASS_SHADE_SELLMEIER)) return sellmeierIor(lambda, F.sellmeierB, F.sellmeierC);
   return cauchyIor(lambda, F.ior, F.abbe);
 }
 
 // What a ray leaving the glass at world point o along world direction d sees.
 vec3 sceneAlong(vec3 o, vec3 d, float lod) {
-  if (F.environment != 0u) return textureLod(panorama, equirectUv(d), 0.0).rgb * F.exposure;
+  if (shadeOption(GLASS_SHADE_ENVIRONMENT)) return textureLod(panorama, equirectUv(d), 0.0).rgb * F.exposure;
   // The photo hangs `depth` behind the glass, screen-aligned: a ray that does not bend lands on the
   // texel of its own pixel. Rays heading back toward the camera see its mirror image.
   d.z = -max(abs(d.z), 1e-3);
@@ -88,7 +91,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
   }
 
   const int n = F.wavelengths;
-  const bool approx = F.approxExits != 0u;
+  const bool approx = shadeOption(GLASS_SHADE_APPROX);
   const float phase = spectralPhase(pixel, F.frame, F.seed, F.jitter != 0u);
   const float cosI = -dot(rd, n1);
   const vec3 reflected = toWorld * reflectDir(rd, n1);
@@ -142,7 +145,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
       float trapped = max(1.0 - emitted, 0.0);
       if (trapped > 0.0) {
         vec3 fallback = physical() ? sceneAlong(centre + toWorld * walk.p, toWorld * walk.d, 0.0)
-                                   : (F.environment != 0u ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
+                                   : (shadeOption(GLASS_SHADE_ENVIRONMENT) ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
         light += trapped * fallback;
       }
       transmitted = light;

@@ -56,17 +56,20 @@ void main() {
   weight = 1.0 / spread(centreCoc);
   sum = texelFetch(colour, p, 0).rgb * weight;
 
-  const float c = cos(pc.spin), s = sin(pc.spin);
-  const mat2 turn = mat2(c, s, -s, c);
+  // Both spirals start turned by `spin` and are walked tap by tap (look.glsl: nextHeading).
+  const vec2 spun = vec2(cos(pc.spin), sin(pc.spin));
   const uint inner = pc.taps / 2u, outer = pc.taps - inner;
   const float ownRadius = clamp(abs(centreCoc), 1.0, pc.maxRadius);
   const float innerArea = kPi * ownRadius * ownRadius / float(max(inner, 1u));
-  for (uint i = 0u; i < inner; ++i) gather(turn * spiralTap(i, inner) * ownRadius, innerArea, 1.0);
+  vec2 heading = spun;
+  for (uint i = 0u; i < inner; ++i, heading = nextHeading(heading))
+    gather(heading * (spiralRadius(i, inner) * ownRadius), innerArea, 1.0);
   const float outerArea = kPi * pc.maxRadius * pc.maxRadius / float(max(outer, 1u));
   const float spacing = max(sqrt(outerArea), 1.0);
-  for (uint i = 0u; i < outer; ++i) {
-    const vec2 offset = turn * spiralTap(i, outer) * pc.maxRadius;
-    if (length(offset) > ownRadius) gather(offset, outerArea, spacing);  // inside, the first spiral has it
+  heading = spun;
+  for (uint i = 0u; i < outer; ++i, heading = nextHeading(heading)) {
+    const float reach = spiralRadius(i, outer) * pc.maxRadius;
+    if (reach > ownRadius) gather(heading * reach, outerArea, spacing);  // inside, the first spiral has it
   }
   imageStore(target, p, vec4(sum / weight, 1.0));
 }

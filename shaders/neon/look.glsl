@@ -3,8 +3,6 @@
 #ifndef NEON_LOOK_GLSL
 #define NEON_LOOK_GLSL
 
-const float kGoldenAngle = 2.39996323;  // pi * (3 - sqrt(5)): successive taps never line up
-
 // The seed's colour mask: darkens by how far `blend` is from white; white leaves `base` alone.
 vec3 linearBurn(vec3 base, vec3 blend) { return max(base + blend - 1.0, vec3(0.0)); }
 
@@ -25,11 +23,13 @@ float vignette(float r, float strength) { return 1.0 - strength * smoothstep(0.3
 float mirrorY(float y, float horizonY) { return 2.0 * horizonY - y; }
 
 // Tap i of n on a golden-angle (Vogel) spiral filling the unit disc: radius sqrt((i + 0.5) / n) puts
-// equal numbers of taps in equal areas, the golden angle spreads them evenly around.
-vec2 spiralTap(uint i, uint n) {
-  const float r = sqrt((float(i) + 0.5) / float(n));
-  const float a = float(i) * kGoldenAngle;
-  return r * vec2(cos(a), sin(a));
+// equal numbers of taps in equal areas, the golden angle spreads them evenly around. A pass walks the
+// spiral: each tap's direction is the one before turned by the golden angle, one complex product,
+// rather than a cos and a sin a tap (look.h's spiralTap is the same spiral, taken tap by tap).
+const vec2 kGoldenTurn = vec2(-0.737368822, 0.675490379);  // (cos, sin) of pi * (3 - sqrt(5)), look.h's kGoldenAngle
+float spiralRadius(uint i, uint n) { return sqrt((float(i) + 0.5) / float(n)); }
+vec2 nextHeading(vec2 heading) {
+  return vec2(heading.x * kGoldenTurn.x - heading.y * kGoldenTurn.y, heading.x * kGoldenTurn.y + heading.y * kGoldenTurn.x);
 }
 
 #endif

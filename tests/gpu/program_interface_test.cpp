@@ -78,7 +78,7 @@ TEST_F(ProgramInterface, APushBlockOfAnotherSizeIsRefused) {
               march.bind(cmd);
               march.constants(cmd, Short{});
             }),
-            "kifs/kifs.comp: the push block is 36 bytes in the shader, 8 given");
+            "kifs/kifs.comp: the push block is 32 bytes in the shader, 8 given");
 }
 
 }  // namespace

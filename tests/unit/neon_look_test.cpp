@@ -107,6 +107,18 @@ TEST(Spiral, TapsStayInsideTheUnitDisc) {
     for (uint32_t i = 0; i < n; ++i) EXPECT_LE(glm::length(spiralTap(i, n)), 1.0f + 1e-6f) << i << " of " << n;
 }
 
+// The depth of field walks the spiral (each direction the last one turned by the golden angle) rather
+// than taking a cos and a sin a tap: the same taps, to within float rounding, up to the most it takes.
+TEST(Spiral, WalkingTheSpiralReachesTheSameTaps) {
+  for (uint32_t n : {1u, 8u, 24u, 32u}) {
+    glm::vec2 heading(1.0f, 0.0f);
+    for (uint32_t i = 0; i < n; ++i, heading = nextHeading(heading))
+      EXPECT_LT(glm::length(heading * spiralRadius(i, n) - spiralTap(i, n)), 2e-6f) << i << " of " << n;
+  }
+  EXPECT_NEAR(glm::length(kGoldenTurn), 1.0f, 1e-7f);
+  EXPECT_NEAR(std::atan2(kGoldenTurn.y, kGoldenTurn.x), kGoldenAngle, 1e-6f);
+}
+
 TEST(Spiral, TapsCoverTheDiscEvenly) {
   constexpr uint32_t n = 32;
   int inner = 0, quadrants[4] = {};

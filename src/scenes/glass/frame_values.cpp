@@ -86,4 +86,9 @@ shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& momen
   return b;
 }
 
+uint32_t shadeOptions(const shader::GlassFrame& block) {
+  return (block.optics == 1 ? GLASS_SHADE_PHYSICAL : 0u) | (block.environment != 0u ? GLASS_SHADE_ENVIRONMENT : 0u) |
+         (block.approxExits != 0u ? GLASS_SHADE_APPROX : 0u) | (block.sellmeier != 0u ? GLASS_SHADE_SELLMEIER : 0u);
+}
+
 }  // namespace vitrine::glass

@@ -23,5 +23,7 @@ struct FrameMoment {
 };
 
 shader::GlassFrame frameBlock(const Settings& settings, const FrameMoment& moment, const Instances& instances);
+// The block's options as shade.glsl's specialization constant (frame_block.h: GLASS_SHADE_*).
+uint32_t shadeOptions(const shader::GlassFrame& block);
 
 }  // namespace vitrine::glass

@@ -153,11 +153,12 @@ void GlassScene::record(const FrameContext& frame) {
                     moment_.extent);
     backdropDirty_ = false;
   }
-  const FrameSources sources{frame.uniform(frameBlock(settings_, moment_, instances_)), backdrop,
-                             frame.image(pictures_.panorama())};
+  const shader::GlassFrame block = frameBlock(settings_, moment_, instances_);
+  const FrameSources sources{frame.uniform(block), backdrop, frame.image(pictures_.panorama())};
   {
     const auto pass = frame.pass("glass spectral");
-    spectral_.record(frame, sources, screen_, diamond_, settings_.pass, settings_.shape, moment_.extent);
+    spectral_.record(frame, sources, screen_, diamond_, settings_.pass, {settings_.shape, shadeOptions(block)},
+                     moment_.extent);
   }
   {
     const auto pass = frame.pass("glass resolve");

@@ -5,13 +5,14 @@
 
 namespace vitrine::glass {
 
-PostPass::PostPass(gpu::ProgramLibrary& programs) : program_(programs, "glass/post.comp") {}
-
-void PostPass::record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings,
-                      VkExtent2D extent) const {
-  const shader::GlassPostPush push{.fxaa = settings.aa == Antialiasing::Fxaa ? 1u : 0u,
-                                   .filmicCurve = settings.optics == Optics::Physical ? 1u : 0u};
-  sampleInto(frame, program_, {"accumulated", "target"}, accumulated, frame.target, frame.target.view(), extent, push);
+void PostPass::record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings, VkExtent2D extent) {
+  const uint32_t options = (settings.aa == Antialiasing::Fxaa ? GLASS_POST_FXAA : 0u) |
+                           (settings.optics == Optics::Physical ? GLASS_POST_FILMIC : 0u);
+  auto& program = byOptions_[options];
+  if (!program)
+    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/post.comp",
+                                                    gpu::ProgramOptions{.specialization = {int32_t(options)}});
+  sampleInto(frame, *program, {"accumulated", "target"}, accumulated, frame.target, frame.target.view(), extent);
 }
 
 }  // namespace vitrine::glass

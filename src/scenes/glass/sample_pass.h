@@ -1,12 +1,13 @@
 #pragma once
 // The compute step the compose and post passes share: one invocation a pixel of the view reads
 // `source` through a linear, clamped sampler and writes `target` through `targetView`, with `push`
-// as its constants. Each shader names its two images as it likes (compose: photo and backdrop; post:
+// as its constants (if it has any). Each shader names its two images as it likes (compose: photo and backdrop; post:
 // accumulated and target): the pass says which name is which.
 #include "gpu/resources.h"
 #include "scenes/scene.h"
 
 #include <string_view>
+#include <type_traits>
 
 namespace vitrine::glass {
 
@@ -15,13 +16,15 @@ struct SampleNames {
   std::string_view target;  // its storage image
 };
 
-template <typename Push>
+struct NoConstants {};  // for a shader without a push block
+
+template <typename Push = NoConstants>
 void sampleInto(const FrameContext& frame, const gpu::ComputeProgram& program, SampleNames names, gpu::Image& source,
-                gpu::Image& target, VkImageView targetView, VkExtent2D extent, const Push& push) {
+                gpu::Image& target, VkImageView targetView, VkExtent2D extent, const Push& push = {}) {
   frame.transition(source, gpu::use::ComputeSample);
   frame.transition(target, gpu::use::ComputeWrite);
   program.bind(frame.cmd);
-  program.constants(frame.cmd, push);
+  if constexpr (!std::is_same_v<Push, NoConstants>) program.constants(frame.cmd, push);
   program.push(frame.cmd,
                gpu::Bindings()
                    .sampledImage(names.source, source.view(),

@@ -5,9 +5,11 @@
 namespace vitrine::glass {
 namespace {
 
-// Each shape's programs are the same shaders specialised (instance.glsl's GLASS_SHAPE), so that a
-// cube's pipeline carries no diamond code.
-gpu::ProgramOptions specialisedFor(ShapeKind shape) { return {.specialization = {int32_t(shape)}}; }
+// Each variant's programs are the same shaders specialised (instance.glsl's GLASS_SHAPE, shade.glsl's
+// GLASS_SHADE_OPTIONS), so that a cube's pipeline carries no diamond code, nor seed optics physical ones.
+gpu::ProgramOptions specialisedFor(ShadeVariant variant) {
+  return {.specialization = {int32_t(variant.shape), int32_t(variant.options)}};
+}
 
 gpu::GraphicsState proxyState() {
   gpu::GraphicsState state;
@@ -21,21 +23,21 @@ gpu::GraphicsState proxyState() {
 
 }  // namespace
 
-const gpu::ComputeProgram& SpectralShadePass::computeProgram(ShapeKind shape) {
-  auto& program = compute_[size_t(shape)];
+const gpu::ComputeProgram& SpectralShadePass::computeProgram(ShadeVariant variant) {
+  auto& program = compute_[variant.index()];
   if (!program)
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp", specialisedFor(shape));
+    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp", specialisedFor(variant));
   return *program;
 }
 
-const gpu::GraphicsProgram& SpectralShadePass::rasterProgram(ShapeKind shape) {
-  auto& program = raster_[size_t(shape)];
-  if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, proxyState(), specialisedFor(shape));
+const gpu::GraphicsProgram& SpectralShadePass::rasterProgram(ShadeVariant variant) {
+  auto& program = raster_[variant.index()];
+  if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, proxyState(), specialisedFor(variant));
   return *program;
 }
 
 void SpectralShadePass::record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
-                               const DiamondBuffers& diamond, SpectralPass path, ShapeKind shape, VkExtent2D extent) {
+                               const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent) {
   const bool compute = path == SpectralPass::Compute;
   const gpu::ImageUse sampled = compute ? gpu::use::ComputeSample : gpu::use::FragmentSample;
   frame.transition(sources.backdrop, sampled);
@@ -49,7 +51,7 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
   if (compute) {
     frame.transition(colour, gpu::use::ComputeWrite);
     frame.transition(motion, gpu::use::ComputeWrite);
-    const gpu::ComputeProgram& program = computeProgram(shape);
+    const gpu::ComputeProgram& program = computeProgram(variant);
     program.bind(frame.cmd);
     program.push(frame.cmd, bindings.storageImage("colourOut", colour.view()).storageImage("motionOut", motion.view()));
     program.dispatchOver(frame.cmd, extent);
@@ -61,11 +63,11 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
   desc.colors = {{&colour, VkClearColorValue{}}, {&motion, VkClearColorValue{}}};
   desc.depth = gpu::DepthAttachment{&frame.image(images.depth)};
   const auto rendering = frame.rendering(desc);
-  const gpu::GraphicsProgram& program = rasterProgram(shape);
+  const gpu::GraphicsProgram& program = rasterProgram(variant);
   program.bind(frame.cmd);
   program.push(frame.cmd, bindings.storageBuffer("Hull", hull.handle()));
-  const uint32_t vertices = shape == ShapeKind::Diamond ? diamond.hullVertices() : 36u;  // the hull, or a box
-  vkCmdDraw(frame.cmd, vertices, uint32_t(instanceCount(shape)), 0, 0);
+  const uint32_t vertices = variant.shape == ShapeKind::Diamond ? diamond.hullVertices() : 36u;  // the hull, or a box
+  vkCmdDraw(frame.cmd, vertices, uint32_t(instanceCount(variant.shape)), 0, 0);
 }
 
 }  // namespace vitrine::glass

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <array>
+#include <memory>
 
 namespace vitrine::kifs {
 namespace {
@@ -22,9 +23,7 @@ TierMarch settingsFor(Tier tier) { return kTierMarch[int(tier)]; }
 
 class KifsScene final : public Scene {
  public:
-  explicit KifsScene(const SceneContext& context)
-      : quality_(context),
-        march_(context.programs, "kifs/kifs.comp") {}
+  explicit KifsScene(const SceneContext& context) : quality_(context), programs_(context.programs) {}
 
   void update(const FrameInput& input) override {
     if (input.cursor.dragging) {
@@ -43,16 +42,16 @@ class KifsScene final : public Scene {
     const shader::KifsMarchPush push{angles_,
                     uint32_t(frame.input.frame),
                     frame.input.seed,
-                    settings_.step,
                     settingsFor(activeTier()).marchSteps,
                     reducedMotion_ ? 0.0f : 0.045f,
                     reducedMotion_ ? 0u : uint32_t(frame.input.frame),
                     settings_.fold};
     frame.transition(frame.target, gpu::use::ComputeWrite);
-    march_.bind(frame.cmd);
-    march_.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));
-    march_.constants(frame.cmd, push);
-    march_.dispatchOver(frame.cmd, frame.target.extent2d());
+    const gpu::ComputeProgram& march = marchFor(settings_.step);
+    march.bind(frame.cmd);
+    march.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));
+    march.constants(frame.cmd, push);
+    march.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 
   float renderScale() const override { return settingsFor(activeTier()).renderScale; }
@@ -69,9 +68,18 @@ class KifsScene final : public Scene {
 
  private:
   Tier activeTier() const { return quality_.active(); }
+  // The stage's march (kifs.comp specialised: KIFS_STAGE), built the first time the stage is shown.
+  const gpu::ComputeProgram& marchFor(int stage) {
+    auto& program = marches_[size_t(stage - 1)];
+    if (!program)
+      program = std::make_unique<gpu::ComputeProgram>(programs_, "kifs/kifs.comp",
+                                                      gpu::ProgramOptions{.specialization = {stage}});
+    return *program;
+  }
 
   AdaptiveQuality quality_;
-  gpu::ComputeProgram march_;
+  gpu::ProgramLibrary& programs_;
+  std::array<std::unique_ptr<gpu::ComputeProgram>, 9> marches_;  // by stage - 1
   Settings settings_;
   glm::vec2 angles_{0.0f};
   bool reducedMotion_ = false;

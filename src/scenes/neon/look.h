@@ -54,10 +54,16 @@ inline float vignette(float r, float strength) { return 1.0f - strength * glm::s
 inline float mirrorY(float y, float horizonY) { return 2.0f * horizonY - y; }
 
 // Tap i of n on a golden-angle spiral filling the unit disc evenly.
+inline float spiralRadius(uint32_t i, uint32_t n) { return std::sqrt((float(i) + 0.5f) / float(n)); }
 inline glm::vec2 spiralTap(uint32_t i, uint32_t n) {
-  const float r = std::sqrt((float(i) + 0.5f) / float(n));
   const float a = float(i) * kGoldenAngle;
-  return r * glm::vec2(std::cos(a), std::sin(a));
+  return spiralRadius(i, n) * glm::vec2(std::cos(a), std::sin(a));
+}
+// The shaders walk the spiral instead: tap i + 1's direction is tap i's turned by the golden angle (one
+// complex product, where a cos and a sin a tap took llvmpipe half of its depth of field).
+inline constexpr glm::vec2 kGoldenTurn{-0.737368822f, 0.675490379f};  // (cos, sin) of kGoldenAngle
+inline glm::vec2 nextHeading(glm::vec2 heading) {
+  return {heading.x * kGoldenTurn.x - heading.y * kGoldenTurn.y, heading.x * kGoldenTurn.y + heading.y * kGoldenTurn.x};
 }
 
 // The pixel row a world point projects to, for the composite's horizonY. Pass the facade's foot

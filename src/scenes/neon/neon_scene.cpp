@@ -149,7 +149,7 @@ class NeonScene final : public Scene {
   void update(const FrameInput& input) override;
   void record(const FrameContext& frame) override;
   params::Bound parameters() override { return {&schema(), &settings_}; }
-  float renderScale() const override { return tierScale(quality_.active()); }
+  float renderScale() const override { return tierRenderScale(quality_.active()); }
   double frameCost(const void* values) const override {  // particles stepped and tubes drawn
     const auto& v = *static_cast<const Settings*>(values);
     return double(v.chains) * double(v.particles);

@@ -85,5 +85,6 @@ const params::Schema& schema() {
 }
 
 int tierChains(int chains, Tier tier) { return tierCount(chains, tier, kFewestChains); }
+float tierRenderScale(Tier tier) { return tier == Tier::Low ? 0.4f : tierScale(tier); }
 
 }  // namespace vitrine::neon

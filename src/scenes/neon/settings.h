@@ -41,7 +41,7 @@ struct Settings {
   Stage stage = Stage::Final;
 
   bool operator==(const Settings&) const = default;
-  Tier tier = Tier::Auto;  // render scale 1, 0.7, 0.5 (scenes/quality.h), and the chains (tierChains)
+  Tier tier = Tier::Auto;  // render scale 1, 0.7, 0.4 (tierRenderScale), and the chains (tierChains)
   float targetMs = 16.0f;
 };
 
@@ -52,5 +52,10 @@ const params::Schema& schema();
 // draw. The default's autopilot keeps ~130 alive, under every tier's; a dense field thins out, each
 // tube the same, the bloom's exposure following the count (tube_light.h).
 int tierChains(int chains, Tier tier);
+// The render scale: quality.h's, but 0.4 rather than 0.5 at the low tier. There, on a CPU device, the
+// look's passes over the frame (bloom, depth of field, composite: texture taps, which llvmpipe pays
+// for one by one) are three quarters of the frame; lavapipe's 1280x720 frame 41.6 -> 30.5 ms, and
+// the gallery 13.5 -> 16 fps (docs/PERFORMANCE.md). The tubes stay lines; the facade is softer.
+float tierRenderScale(Tier tier);
 
 }  // namespace vitrine::neon
