@@ -1,5 +1,7 @@
 // The integrate pass's push block, one declaration for both sides: integrate_pass.cpp fills it,
-// integrate.comp reads it (shaders/common/interop.h says how one header serves GLSL and C++).
+// integrate.comp reads it (shaders/common/interop.h says how one header serves GLSL and C++). The field,
+// the integrator, the tangent and the frames are not here: they specialise the pipeline
+// (integrate_strands.glsl).
 // std430: each vec3 starts a 16-byte slot, which the 4-byte member after it shares.
 #ifndef NOODLES_INTEGRATE_PUSH_H
 #define NOODLES_INTEGRATE_PUSH_H
@@ -17,10 +19,6 @@ struct NoodlesIntegratePush {
   float lift;              // uniform upward flow added to the field
   uint firstStrand;        // the chunk's first strand
   uint chunkStrands;       // strands in this chunk
-  uint fieldKind;          // FIELD_CURL or FIELD_BITANGENT
-  uint integrator;         // INTEGRATOR_EULER or INTEGRATOR_RK4
-  uint tangentMode;        // TANGENT_NORMALIZED or TANGENT_RAW
-  uint frameMethod;        // FRAMES_UP or FRAMES_RMF
   uint invocationsPerRow;  // workgroups in x times their size, when the dispatch needs a second dimension
   uint pad0, pad1, pad2;    // the next vec3 starts a 16-byte slot
   vec3 bakeOrigin;          // integrate_baked.comp: world position of the baked flow's first texel centre
@@ -34,7 +32,7 @@ struct NoodlesBakePush {
   vec3 offsetY;  // as above
   float noiseScale;
   vec3 offsetZ;
-  uint fieldKind;
+  uint pad;      // the field specialises the pipeline (bake.comp); the next vec3 starts a 16-byte slot
   vec3 origin;  // world position of texel (0, 0, 0)'s centre
   float spacing;
   float range;  // a component v is stored as v / (2 range) + 0.5 (kBakeRange in field_bake.h)

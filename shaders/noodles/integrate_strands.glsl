@@ -13,6 +13,15 @@ layout(binding = 0, std430) writeonly buffer Nodes { uvec4 nodes[]; };  // this 
 
 layout(push_constant) uniform Push { NoodlesIntegratePush pc; };
 
+// The options that choose whole paths are specialization constants (integrate_pass.cpp builds a
+// pipeline per combination when it is first used): each pipeline carries only its own field, step,
+// tangent and frames. llvmpipe pays for the paths a uniform branch does not take, and on a GPU they
+// hold registers (docs/PERFORMANCE.md).
+layout(constant_id = 0) const uint INTEGRATE_FIELD = FIELD_CURL;
+layout(constant_id = 1) const uint INTEGRATE_STEP = INTEGRATOR_EULER;
+layout(constant_id = 2) const uint INTEGRATE_TANGENT = TANGENT_RAW;
+layout(constant_id = 3) const uint INTEGRATE_FRAMES = FRAMES_RMF;
+
 vec3 strandStart(uint strand) {
   uvec3 index = uvec3(strand % pc.grid.x, (strand / pc.grid.x) % pc.grid.y, strand / (pc.grid.x * pc.grid.y));
   return (vec3(index) - (vec3(pc.grid) - 1.0) * 0.5) * pc.spacing;
@@ -21,17 +30,17 @@ vec3 strandStart(uint strand) {
 void main() {
   uint local = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
   if (local >= pc.chunkStrands) return;
-  FieldSettings field = FieldSettings(pc.fieldKind, pc.noiseScale, pc.offsetY, pc.offsetZ, pc.lift);
+  FieldSettings field = FieldSettings(INTEGRATE_FIELD, pc.noiseScale, pc.offsetY, pc.offsetZ, pc.lift);
 
   vec3 p = strandStart(pc.firstStrand + local);
   vec3 v = strandVelocity(p, field);
   Frame frame = upVectorFrame(directionOf(v, WORLD_UP));
   nodes[nodeSlot(pc.chunkStrands, local, 0u)] = packNode(p, frame);
   for (uint k = 1u; k <= pc.segmentsPerStrand; ++k) {
-    vec3 next = advance(p, travel(v, pc.tangentMode), pc.step, pc.integrator, pc.tangentMode, field);
+    vec3 next = advance(p, travel(v, INTEGRATE_TANGENT), pc.step, INTEGRATE_STEP, INTEGRATE_TANGENT, field);
     v = strandVelocity(next, field);
     vec3 tangent = directionOf(v, frame.tangent);
-    frame = pc.frameMethod == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
+    frame = INTEGRATE_FRAMES == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
     p = next;
     nodes[nodeSlot(pc.chunkStrands, local, k)] = packNode(p, frame);
   }

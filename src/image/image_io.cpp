@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <span>
 
 #include <cstring>
 
@@ -230,19 +231,44 @@ std::vector<uint16_t> srgb16(const ImageRgba& image) {
 
 namespace {
 
+// Where libpng writes the PNG, and what its error handler leaves before it jumps back.
+struct PngWriter {
+  std::vector<unsigned char> bytes;
+  std::string error;
+  std::jmp_buf jump;
+};
+
+// libpng's part of encodePng, from setjmp on: libpng reports a fatal error by calling its error
+// function, which must not return, so it jumps back here. Nothing in this function has a destructor
+// for the jump to skip, nor a local that the jump could leave stale (GCC's -Wclobbered warned when
+// the notes' vector was built beside the setjmp). False on an error, in writer.error.
+bool writePng(png_structp png, png_infop info, PngWriter& writer, std::span<png_text> texts, const uint8_t* rgba,
+              uint32_t width, uint32_t height) {
+  if (setjmp(writer.jump)) return false;
+  png_set_write_fn(
+      png, &writer,
+      [](png_structp p, png_bytep data, png_size_t size) {
+        auto& out = static_cast<PngWriter*>(png_get_io_ptr(p))->bytes;
+        out.insert(out.end(), data, data + size);
+      },
+      nullptr);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  if (!texts.empty()) png_set_text(png, info, texts.data(), int(texts.size()));
+  png_write_info(png, info);
+  for (uint32_t y = 0; y < height; ++y) png_write_row(png, rgba + size_t(y) * width * 4);
+  png_write_end(png, info);
+  return true;
+}
+
 // 8-bit RGBA rows as a PNG in memory, each note a tEXt chunk (libpng's simplified API writes no text).
-// libpng reports a fatal error by calling its error function, which must not return: it jumps back.
 std::vector<unsigned char> encodePng(const std::filesystem::path& path, const std::vector<uint8_t>& rgba, uint32_t width,
                                      uint32_t height, const ImageNotes& notes) {
-  struct Writer {
-    std::vector<unsigned char> bytes;
-    std::string error;
-    std::jmp_buf jump;
-  } writer;
+  PngWriter writer;
   png_structp png = png_create_write_struct(
       PNG_LIBPNG_VER_STRING, &writer,
       [](png_structp p, png_const_charp message) {
-        auto* w = static_cast<Writer*>(png_get_error_ptr(p));
+        auto* w = static_cast<PngWriter*>(png_get_error_ptr(p));
         w->error = message;
         std::longjmp(w->jump, 1);
       },
@@ -253,29 +279,14 @@ std::vector<unsigned char> encodePng(const std::filesystem::path& path, const st
     throw Error(fmt::format("Cannot write {}: libpng has no memory", path.string()));
   }
   std::vector<png_text> texts(notes.size());
-  if (setjmp(writer.jump)) {
-    png_destroy_write_struct(&png, &info);
-    throw Error(fmt::format("Cannot write {}: {}", path.string(), writer.error));
-  }
-  png_set_write_fn(
-      png, &writer,
-      [](png_structp p, png_bytep data, png_size_t size) {
-        auto& out = static_cast<Writer*>(png_get_io_ptr(p))->bytes;
-        out.insert(out.end(), data, data + size);
-      },
-      nullptr);
-  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
   for (size_t i = 0; i < notes.size(); ++i) {
     texts[i].compression = PNG_TEXT_COMPRESSION_NONE;
     texts[i].key = const_cast<char*>(notes[i].first.c_str());
     texts[i].text = const_cast<char*>(notes[i].second.c_str());
   }
-  if (!texts.empty()) png_set_text(png, info, texts.data(), int(texts.size()));
-  png_write_info(png, info);
-  for (uint32_t y = 0; y < height; ++y) png_write_row(png, rgba.data() + size_t(y) * width * 4);
-  png_write_end(png, info);
+  const bool written = writePng(png, info, writer, texts, rgba.data(), width, height);
   png_destroy_write_struct(&png, &info);
+  if (!written) throw Error(fmt::format("Cannot write {}: {}", path.string(), writer.error));
   return std::move(writer.bytes);
 }
 

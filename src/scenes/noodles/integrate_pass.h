@@ -6,6 +6,9 @@
 #include "scenes/noodles/strand.h"
 #include "scenes/noodles/strand_layout.h"
 
+#include <array>
+#include <memory>
+
 namespace vitrine::noodles {
 
 // The baked flow as integrate_baked.comp samples it (linear filter, clamped).
@@ -24,12 +27,19 @@ class IntegratePass {
   // Integrates every strand; `baked` is the volume recordBake filled, needed when settings.bake is baked.
   void record(VkCommandBuffer cmd, const StrandLayout& layout, VkBuffer nodes, const StrandSettings& settings,
               const BakedFlow& baked = {}) const;
-  uint32_t workgroupSize() const { return exact_.localSize()[0]; }  // strands a workgroup integrates
+  uint32_t workgroupSize() const { return kWorkgroupSize; }  // strands a workgroup integrates
 
  private:
-  gpu::ComputeProgram exact_;
-  gpu::ComputeProgram baked_;
-  gpu::ComputeProgram bake_;
+  // integrate_strands.glsl's local size (checked against the shader when a program is built).
+  static constexpr uint32_t kWorkgroupSize = 64;
+  // One program a flow source (exact, baked) and combination of the options that specialise it (the
+  // field, the integrator, the tangent, the frames: 16), and a bake a field; built when first used.
+  const gpu::ComputeProgram& integrateProgram(bool baked, const StrandSettings& settings) const;
+  const gpu::ComputeProgram& bakeProgram(maths::FieldKind field) const;
+
+  gpu::ProgramLibrary& programs_;
+  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2 * 16> integrate_;
+  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> bake_;
 };
 
 }  // namespace vitrine::noodles
