@@ -2,6 +2,9 @@
 // The strands in the flow bake.comp baked this frame: a step takes one filtered fetch where the
 // volume reaches and the exact noise beyond it; src/scenes/noodles/field_bake.h says when and why.
 #extension GL_GOOGLE_include_directive : require
+// The field and the integrator from the push block, not specialised (integrate_strands.glsl says why).
+#define STRAND_FIELD pc.fieldKind
+#define STRAND_INTEGRATOR pc.integrator
 #include "noodles/integrate_strands.glsl"
 
 layout(binding = 1) uniform sampler3D bakedFlow;  // the noise part of the flow, RGB10A2 over -bakeRange..bakeRange, linear filter

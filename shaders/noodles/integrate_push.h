@@ -1,7 +1,7 @@
 // The integrate pass's push block, one declaration for both sides: integrate_pass.cpp fills it,
-// integrate.comp reads it (shaders/common/interop.h says how one header serves GLSL and C++). The field,
-// the integrator, the tangent and the frames are not here: they specialise the pipeline
-// (integrate_strands.glsl).
+// integrate.comp reads it (shaders/common/interop.h says how one header serves GLSL and C++). The tangent
+// and the frames are not here: they specialise the pipeline, as the field and the integrator do for
+// integrate.comp (integrate_strands.glsl).
 // std430: each vec3 starts a 16-byte slot, which the 4-byte member after it shares.
 #ifndef NOODLES_INTEGRATE_PUSH_H
 #define NOODLES_INTEGRATE_PUSH_H
@@ -19,8 +19,10 @@ struct NoodlesIntegratePush {
   float lift;              // uniform upward flow added to the field
   uint firstStrand;        // the chunk's first strand
   uint chunkStrands;       // strands in this chunk
+  uint fieldKind;          // FIELD_CURL or FIELD_BITANGENT: integrate_baked.comp's (integrate.comp's is specialised)
+  uint integrator;         // INTEGRATOR_EULER or INTEGRATOR_RK4: likewise
   uint invocationsPerRow;  // workgroups in x times their size, when the dispatch needs a second dimension
-  uint pad0, pad1, pad2;    // the next vec3 starts a 16-byte slot
+  uint pad0;               // the next vec3 starts a 16-byte slot
   vec3 bakeOrigin;          // integrate_baked.comp: world position of the baked flow's first texel centre
   float bakeInverseSpacing; // texels per world unit
   vec3 bakeLastTexel;       // the last texel's index along x, y, z

@@ -9,9 +9,11 @@ namespace vitrine::noodles {
 IntegratePass::IntegratePass(gpu::ProgramLibrary& programs) : programs_(programs) {}
 
 const gpu::ComputeProgram& IntegratePass::integrateProgram(bool baked, const StrandSettings& settings) const {
-  // integrate_strands.glsl's constant_id 0..3, each option a bit of the index.
-  const std::array<uint32_t, 4> options{uint32_t(settings.field.kind), uint32_t(settings.integrator),
-                                        uint32_t(settings.tangent), uint32_t(settings.frames)};
+  // integrate_strands.glsl's constant_id 0..3, each a bit of the index. The baked pass reads its field
+  // and integrator from the push block, so its pipelines differ only in the tangent and the frames.
+  const std::array<uint32_t, 4> options{baked ? 0u : uint32_t(settings.field.kind),
+                                        baked ? 0u : uint32_t(settings.integrator), uint32_t(settings.tangent),
+                                        uint32_t(settings.frames)};
   size_t index = baked ? 16 : 0;
   for (size_t i = 0; i < options.size(); ++i) index |= size_t(options[i] & 1u) << i;
   auto& program = integrate_[index];
@@ -63,7 +65,9 @@ void IntegratePass::record(VkCommandBuffer cmd, const StrandLayout& layout, VkBu
                                     .grid = layout.grid,
                                     .segmentsPerStrand = layout.segments,
                                     .noiseScale = settings.field.noiseScale,
-                                    .lift = settings.field.lift};
+                                    .lift = settings.field.lift,
+                                    .fieldKind = uint32_t(settings.field.kind),
+                                    .integrator = uint32_t(settings.integrator)};
   if (bakedFlow) {
     push.bakeOrigin = settings.bake.origin;
     push.bakeInverseSpacing = 1.0f / settings.bake.spacing;

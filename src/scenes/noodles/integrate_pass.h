@@ -33,7 +33,7 @@ class IntegratePass {
   // integrate_strands.glsl's local size (checked against the shader when a program is built).
   static constexpr uint32_t kWorkgroupSize = 64;
   // One program a flow source (exact, baked) and combination of the options that specialise it (the
-  // field, the integrator, the tangent, the frames: 16), and a bake a field; built when first used.
+  // field, the integrator, the tangent, the frames), and a bake a field; built when first used.
   const gpu::ComputeProgram& integrateProgram(bool baked, const StrandSettings& settings) const;
   const gpu::ComputeProgram& bakeProgram(maths::FieldKind field) const;
 
