@@ -19,12 +19,12 @@ void main() {
   if (invocation >= phaseSegments()) return;
   uint index = phaseSegment(invocation);
   Segment s = loadSegment(index);
-  ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.tubeRadius, pc.samplesPerAxis);
+  ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.tubeRadius, SAMPLES_PER_AXIS);
   if (cells.x > cells.z || cells.y > cells.w) return;
   if (pc.phase == NOODLES_RASTER_REST && hiddenByTiles(cells, s.nearestBits)) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
   if (size.x * size.y <= MOST_CELLS_INLINE) {
-    if (pc.samplesPerAxis == 2u) {
+    if (SAMPLES_PER_AXIS == 2u) {
       for (int y = cells.y >> 1; y <= cells.w >> 1; ++y)
         for (int x = cells.x >> 1; x <= cells.z >> 1; ++x) rasterPixel(uvec2(x, y), cells, s);
       return;

@@ -57,7 +57,7 @@ Segment loadSegment(uint index) {
 // segment can put nothing there: then no ray and no key needs reading. Boxes over more than four
 // tiles are left to the per-sample test (near the camera, where they are few).
 bool hiddenByTiles(ivec4 cells, uint nearestBits) {
-  uvec4 tiles = uvec4(cells) / (pc.samplesPerAxis * NOODLES_BOUND_TILE);
+  uvec4 tiles = uvec4(cells) / (SAMPLES_PER_AXIS * NOODLES_BOUND_TILE);
   if ((tiles.z - tiles.x + 1u) * (tiles.w - tiles.y + 1u) > 4u) return false;
   for (uint y = tiles.y; y <= tiles.w; ++y)
     for (uint x = tiles.x; x <= tiles.z; ++x)
@@ -68,7 +68,7 @@ bool hiddenByTiles(ivec4 cells, uint nearestBits) {
 // The ray of sample cell `cell` (key `sample_`, whose depth bits read `held`) at the segment: its
 // hit, if nearer than what the key holds, goes in with an atomicMin.
 void castSample(uvec2 cell, uint sample_, uint held, Segment s) {
-  vec3 direction = normalize(rayThrough(screenView(), cellSamplePosition(cell, pc.samplesPerAxis)));
+  vec3 direction = normalize(rayThrough(screenView(), cellSamplePosition(cell, SAMPLES_PER_AXIS)));
   float t = capsuleHit(pc.eye, direction, s.a, s.b, pc.tubeRadius);
   if (t == NO_HIT || t * dot(direction, pc.forward) < pc.nearPlane) return;
   vec3 hit = pc.eye + t * direction;
@@ -84,10 +84,10 @@ void castSample(uvec2 cell, uint sample_, uint held, Segment s) {
 // ray's hit spares the atomic: at ~16 hits a sample (10^6 segments at 1080p) most are skipped so.
 // (The ray test before the read: 4.0 ms for 10^6 segments on the H100; the read first: 3.25 ms.)
 void rasterSample(uvec2 cell, Segment s) {
-  uvec2 pixel = cell / pc.samplesPerAxis;
-  uvec2 quarter = cell - pixel * pc.samplesPerAxis;
-  uint sample_ = (pixel.y * uint(pc.pixels.x) + pixel.x) * pc.samplesPerAxis * pc.samplesPerAxis +
-                 quarter.y * pc.samplesPerAxis + quarter.x;
+  uvec2 pixel = cell / SAMPLES_PER_AXIS;
+  uvec2 quarter = cell - pixel * SAMPLES_PER_AXIS;
+  uint sample_ = (pixel.y * uint(pc.pixels.x) + pixel.x) * SAMPLES_PER_AXIS * SAMPLES_PER_AXIS +
+                 quarter.y * SAMPLES_PER_AXIS + quarter.x;
   uint held = uint(keys[sample_] >> 32);
   if (s.nearestBits <= held) castSample(cell, sample_, held, s);
 }

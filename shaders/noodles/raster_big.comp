@@ -14,18 +14,18 @@ void main() {
   ScreenView view = screenView();
   // With four samples a pixel an invocation takes a pixel, so a tile is 16 x 16 cells, started on a
   // pixel's first cell.
-  uint side = TILE_SIDE * pc.samplesPerAxis;
+  uint side = TILE_SIDE * SAMPLES_PER_AXIS;
   for (uint entry = gl_WorkGroupID.x; entry < listed; entry += gl_NumWorkGroups.x) {
     Segment s = loadSegment(bigSegments[entry]);
-    ivec4 cells = capsuleCells(view, s.a, s.b, pc.tubeRadius, pc.samplesPerAxis);
-    uvec2 start = uvec2(cells.xy) & ~uvec2(pc.samplesPerAxis - 1u);
+    ivec4 cells = capsuleCells(view, s.a, s.b, pc.tubeRadius, SAMPLES_PER_AXIS);
+    uvec2 start = uvec2(cells.xy) & ~uvec2(SAMPLES_PER_AXIS - 1u);
     uvec2 tiles = (uvec2(cells.zw) - start) / side + 1u;
     for (uint t = 0u; t < tiles.x * tiles.y; ++t) {  // the same tiles, in step, for the whole group
       uvec2 first = start + uvec2(t % tiles.x, t / tiles.x) * side;
-      if (!tileMayHit(view, s.a, s.b, pc.tubeRadius, first, side, pc.samplesPerAxis)) continue;
-      uvec2 cell = first + gl_LocalInvocationID.xy * pc.samplesPerAxis;
+      if (!tileMayHit(view, s.a, s.b, pc.tubeRadius, first, side, SAMPLES_PER_AXIS)) continue;
+      uvec2 cell = first + gl_LocalInvocationID.xy * SAMPLES_PER_AXIS;
       if (any(greaterThan(ivec2(cell), cells.zw))) continue;
-      if (pc.samplesPerAxis == 2u) rasterPixel(cell / 2u, cells, s);
+      if (SAMPLES_PER_AXIS == 2u) rasterPixel(cell / 2u, cells, s);
       else rasterSample(cell, s);
     }
   }

@@ -27,8 +27,7 @@ struct NoodlesRasterPush {
   float tanHalfY;
   vec3 forward;
   float nearPlane;
-  vec2 pixels;             // the target's size
-  uint samplesPerAxis;     // 2: four samples a pixel, one in each quarter; 1: one at the centre
+  vec2 pixels;             // the target's size (the samples a pixel specialise the pipeline: raster_push.glsl)
   uint segmentsPerStrand;
   uint totalStrands;       // in the whole grid, for colour
   uint colouring;          // COLOURING_GRADIENT or COLOURING_HSV

@@ -6,6 +6,10 @@
 #include "noodles/raster_blocks.h"
 
 layout(push_constant) uniform Push { NoodlesRasterPush pc; };
+// Samples along a pixel's side, 2 (four a pixel, one in each quarter) or 1 (one at the centre): a
+// specialization constant, each pipeline built for one (raster_pass.h), so the cell arithmetic
+// divides by a constant.
+layout(constant_id = 0) const uint SAMPLES_PER_AXIS = 2u;
 
 ScreenView screenView() {
   return ScreenView(pc.eye, pc.right, pc.up, pc.forward, pc.tanHalfX, pc.tanHalfY, pc.nearPlane, pc.pixels);

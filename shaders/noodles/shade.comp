@@ -64,14 +64,14 @@ vec3 shadeSample(uint index, vec2 position) {
 }
 
 vec2 samplePosition(uvec2 pixel, uint q) {
-  uvec2 quarter = uvec2(q % pc.samplesPerAxis, q / pc.samplesPerAxis);
-  return vec2(pixel) + sampleOffset(quarter.y * 2u + quarter.x, pc.samplesPerAxis);
+  uvec2 quarter = uvec2(q % SAMPLES_PER_AXIS, q / SAMPLES_PER_AXIS);
+  return vec2(pixel) + sampleOffset(quarter.y * 2u + quarter.x, SAMPLES_PER_AXIS);
 }
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
   if (pixel.x >= uint(pc.pixels.x) || pixel.y >= uint(pc.pixels.y)) return;
-  uint samples = pc.samplesPerAxis * pc.samplesPerAxis;
+  uint samples = SAMPLES_PER_AXIS * SAMPLES_PER_AXIS;
   uint first = (pixel.y * uint(pc.pixels.x) + pixel.x) * samples;
   vec3 sum = vec3(0.0);
   for (uint q = 0u; q < samples; ++q) {

@@ -33,9 +33,10 @@ gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
 
 }  // namespace
 
+gpu::ProgramOptions withSamples(uint32_t samplesPerAxis) { return {.specialization = {int32_t(samplesPerAxis)}}; }
+
 RasterPass::RasterPass(const SceneContext& context)
-    : segments_(programsWithInt64Atomics(context), "noodles/raster.comp"),
-      bigSegments_(context.programs, "noodles/raster_big.comp"),
+    : programs_(programsWithInt64Atomics(context)),
       tileBound_(context.programs, "noodles/tile_bound.comp"),
       visibility_(context.resources.declare(visibilityDecl(kMultisampledAxis))),
       bigList_(context.resources.declare({.name = "noodles big segments",
@@ -65,12 +66,28 @@ void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
   samplesPerAxis_ = samplesPerAxis;
 }
 
+const gpu::ComputeProgram& RasterPass::segments() const {
+  auto& program = segments_[samplesPerAxis_ - 1];
+  if (!program) {
+    program = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/raster.comp", withSamples(samplesPerAxis_));
+    if (program->localSize()[0] != kWorkgroupSize) throw Error("noodles: raster.comp's local size changed");
+  }
+  return *program;
+}
+
+const gpu::ComputeProgram& RasterPass::bigSegments() const {
+  auto& program = bigSegments_[samplesPerAxis_ - 1];
+  if (!program)
+    program = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/raster_big.comp", withSamples(samplesPerAxis_));
+  return *program;
+}
+
 void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
   followSamples(frame, view.multisample);
   gpu::Buffer& visibility = frame.buffer(visibility_);
   gpu::fillBuffer(frame.cmd, visibility, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
-  shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis_);
+  shader::NoodlesRasterPush push = rasterPush(view, layout);
   push.bigListCapacity = kBigListCapacity;
   const VkExtent2D extent = frame.target.extent2d();
   push.tilesPerRow = (extent.width + shader::NOODLES_BOUND_TILE - 1) / shader::NOODLES_BOUND_TILE;
@@ -114,16 +131,18 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
     push.invocationsPerRow = groups.x * workgroupSize();
-    segments_.bind(frame.cmd);
-    segments_.push(frame.cmd, bindings);
-    segments_.constants(frame.cmd, push);
-    segments_.dispatchGroups(frame.cmd, {groups.x, groups.y, 1});  // one invocation a segment
+    const gpu::ComputeProgram& segmentProgram = segments();
+    segmentProgram.bind(frame.cmd);
+    segmentProgram.push(frame.cmd, bindings);
+    segmentProgram.constants(frame.cmd, push);
+    segmentProgram.dispatchGroups(frame.cmd, {groups.x, groups.y, 1});  // one invocation a segment
 
     frame.transition(bigList, gpu::use::ComputeReadBuffer);
     frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
-    bigSegments_.bind(frame.cmd);
-    bigSegments_.push(frame.cmd, bindings);
-    bigSegments_.constants(frame.cmd, push);
+    const gpu::ComputeProgram& bigProgram = bigSegments();
+    bigProgram.bind(frame.cmd);
+    bigProgram.push(frame.cmd, bindings);
+    bigProgram.constants(frame.cmd, push);
     gpu::dispatchIndirect(frame.cmd, counters);
   }
 }

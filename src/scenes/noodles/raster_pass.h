@@ -13,6 +13,9 @@
 #include "scenes/scene.h"
 #include "shaders/noodles/raster_blocks.h"
 
+#include <array>
+#include <memory>
+
 namespace vitrine::noodles {
 
 // Listed big segments (16 MiB): past it raster.comp casts a big box itself.
@@ -21,6 +24,10 @@ inline constexpr uint32_t kBigListCapacity = 1u << 22;
 // a tile, the rest. Below it the occluders cover too little of the screen for the bound to pay.
 inline constexpr uint64_t kTwoPhasesFrom = uint64_t(1) << 22;
 
+// The raster and shade programs for `samplesPerAxis` samples along a pixel's side (raster_push.glsl's
+// specialization constant SAMPLES_PER_AXIS).
+gpu::ProgramOptions withSamples(uint32_t samplesPerAxis);
+
 class RasterPass {
  public:
   explicit RasterPass(const SceneContext& context);  // throws vitrine::Error without 64-bit buffer atomics
@@ -28,7 +35,7 @@ class RasterPass {
 
   gpu::Buffer& visibility(const FrameContext& frame) const { return frame.buffer(visibility_); }
   uint32_t samplesPerAxis() const { return samplesPerAxis_; }
-  uint32_t workgroupSize() const { return segments_.localSize()[0]; }  // segments a workgroup takes
+  uint32_t workgroupSize() const { return kWorkgroupSize; }  // segments a workgroup takes
 
  private:
   // Redeclares the visibility buffer when the sample count changes (msaa, or a target too large for
@@ -39,8 +46,16 @@ class RasterPass {
                    shader::NoodlesRasterPush push, uint32_t phase);
   void recordTileBound(const FrameContext& frame, uint32_t tilesPerRow);
 
-  gpu::ComputeProgram segments_;
-  gpu::ComputeProgram bigSegments_;
+  // raster.comp's local size (checked against the shader when a program is built).
+  static constexpr uint32_t kWorkgroupSize = 64;
+  // raster.comp and raster_big.comp for the samples a pixel in use (raster_push.glsl's
+  // SAMPLES_PER_AXIS), built when first used; index samples along an axis - 1.
+  const gpu::ComputeProgram& segments() const;
+  const gpu::ComputeProgram& bigSegments() const;
+
+  gpu::ProgramLibrary& programs_;
+  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> segments_;
+  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> bigSegments_;
   gpu::ComputeProgram tileBound_;
   gpu::BufferHandle visibility_;
   gpu::BufferHandle bigList_;

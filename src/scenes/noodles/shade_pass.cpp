@@ -1,16 +1,18 @@
 #include "scenes/noodles/shade_pass.h"
 
+#include "scenes/noodles/raster_pass.h"
 #include "shaders/noodles/raster_blocks.h"
 
 namespace vitrine::noodles {
 
-ShadePass::ShadePass(gpu::ProgramLibrary& programs) : program_(programs, "noodles/shade.comp") {}
-
 void ShadePass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, gpu::Buffer& visibility,
                        uint32_t samplesPerAxis, const TubeView& view) const {
   frame.transition(visibility, gpu::use::ComputeReadBuffer);
-  shader::NoodlesRasterPush push = rasterPush(view, layout, samplesPerAxis);
-  program_.bind(frame.cmd);
+  shader::NoodlesRasterPush push = rasterPush(view, layout);
+  auto& built = bySamples_[samplesPerAxis - 1];
+  if (!built) built = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/shade.comp", withSamples(samplesPerAxis));
+  const gpu::ComputeProgram& program = *built;
+  program.bind(frame.cmd);
   for (size_t i = 0; i < layout.chunks.size(); ++i) {
     const StrandChunk& chunk = layout.chunks[i];
     // The first chunk writes every pixel; later ones read it back and add theirs.
@@ -18,12 +20,12 @@ void ShadePass::record(const FrameContext& frame, const StrandLayout& layout, Vk
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
     push.accumulate = i == 0 ? 0u : 1u;
-    program_.push(frame.cmd, gpu::Bindings()
+    program.push(frame.cmd, gpu::Bindings()
                                  .storageBuffer("Nodes", nodes, chunk.offset, chunk.bytes)
                                  .storageBuffer("Visibility", visibility.handle())
                                  .storageImage("target", frame.target.view()));
-    program_.constants(frame.cmd, push);
-    program_.dispatchOver(frame.cmd, frame.target.extent2d());
+    program.constants(frame.cmd, push);
+    program.dispatchOver(frame.cmd, frame.target.extent2d());
   }
 }
 

@@ -9,16 +9,21 @@
 #include "scenes/noodles/tube_view.h"
 #include "scenes/scene.h"
 
+#include <array>
+#include <memory>
+
 namespace vitrine::noodles {
 
 class ShadePass {
  public:
-  explicit ShadePass(gpu::ProgramLibrary& programs);
+  explicit ShadePass(gpu::ProgramLibrary& programs) : programs_(programs) {}
   void record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, gpu::Buffer& visibility,
               uint32_t samplesPerAxis, const TubeView& view) const;
 
  private:
-  gpu::ComputeProgram program_;
+  gpu::ProgramLibrary& programs_;
+  // shade.comp for 1 or 2 samples along a pixel's side (raster_pass.h: withSamples), built when first used.
+  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> bySamples_;
 };
 
 }  // namespace vitrine::noodles

@@ -43,7 +43,7 @@ inline ScreenView screenViewOf(const CameraPose& pose, glm::vec2 pixels) {
 }
 
 // The push block's per-frame part; the passes fill in the rest (the big list, the chunk).
-inline shader::NoodlesRasterPush rasterPush(const TubeView& view, const StrandLayout& layout, uint32_t samplesPerAxis) {
+inline shader::NoodlesRasterPush rasterPush(const TubeView& view, const StrandLayout& layout) {
   const ScreenView& s = view.screen;
   return {.eye = s.eye,
           .tubeRadius = view.radius,
@@ -54,7 +54,6 @@ inline shader::NoodlesRasterPush rasterPush(const TubeView& view, const StrandLa
           .forward = s.forward,
           .nearPlane = s.nearPlane,
           .pixels = s.pixels,
-          .samplesPerAxis = samplesPerAxis,
           .segmentsPerStrand = layout.segments,
           .totalStrands = layout.strands,
           .colouring = uint32_t(view.colouring),
