@@ -17,7 +17,6 @@
 #define GLASS_SHADE_ENVIRONMENT 2u  // environment == 1
 #define GLASS_SHADE_APPROX 4u       // approxExits == 1
 #define GLASS_SHADE_SELLMEIER 8u    // sellmeier == 1
-#define GLASS_SHADE_OPTION_COMBINATIONS 16u
 
 VITRINE_SHARED_BEGIN
 // One instance of the shape: its place now and last frame (the motion vectors), and the pixels its

@@ -15,7 +15,6 @@
 // 7.5 -> 1.2 ms at lavapipe's low tier).
 #define GLASS_POST_FXAA 1u    // FXAA after the tone map
 #define GLASS_POST_FILMIC 2u  // physical optics' filmic roll-off; without it, the seed's clip at 1
-#define GLASS_POST_OPTION_COMBINATIONS 4u
 
 VITRINE_SHARED_BEGIN
 // The backdrop: what to draw, and the page's paper under its text.

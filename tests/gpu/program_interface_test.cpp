@@ -3,6 +3,7 @@
 // with a message that names the shader, the binding and what it expected.
 #include "core/error.h"
 #include "gpu/program.h"
+#include "gpu/program_variants.h"
 #include "gpu/resources.h"
 #include "shaders/kifs/march_push.h"
 #include "support/gpu_test.h"
@@ -79,6 +80,19 @@ TEST_F(ProgramInterface, APushBlockOfAnotherSizeIsRefused) {
               march.constants(cmd, Short{});
             }),
             "kifs/kifs.comp: the push block is 32 bytes in the shader, 8 given");
+}
+
+// A scene's options that choose shader paths are specialization constants: one pipeline for each set
+// of them, built the first time it is asked for and handed out again after that.
+TEST_F(ProgramInterface, AVariantIsBuiltOnceForEachSetOfConstants) {
+  const gpu::ComputeVariants marches(library_, "kifs/kifs.comp");
+  const gpu::ComputeProgram& stageOne = marches({1});
+  EXPECT_EQ(&marches({1}), &stageOne);
+  const gpu::ComputeProgram& stageTwo = marches({2});
+  EXPECT_NE(&stageTwo, &stageOne);
+  EXPECT_NE(stageTwo.pipeline(), stageOne.pipeline());
+  EXPECT_EQ(&marches({1}), &stageOne);  // still there after another was built
+  EXPECT_THROW(marches({1, 0, 0, 0, 0}), Error);
 }
 
 }  // namespace

@@ -5,12 +5,6 @@
 namespace vitrine::glass {
 namespace {
 
-// Each variant's programs are the same shaders specialised (instance.glsl's GLASS_SHAPE, shade.glsl's
-// GLASS_SHADE_OPTIONS), so that a cube's pipeline carries no diamond code, nor seed optics physical ones.
-gpu::ProgramOptions specialisedFor(ShadeVariant variant) {
-  return {.specialization = {int32_t(variant.shape), int32_t(variant.options)}};
-}
-
 gpu::GraphicsState proxyState() {
   gpu::GraphicsState state;
   state.vertex = "glass/proxy.vert";
@@ -23,18 +17,8 @@ gpu::GraphicsState proxyState() {
 
 }  // namespace
 
-const gpu::ComputeProgram& SpectralShadePass::computeProgram(ShadeVariant variant) {
-  auto& program = compute_[variant.index()];
-  if (!program)
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "glass/spectral.comp", specialisedFor(variant));
-  return *program;
-}
-
-const gpu::GraphicsProgram& SpectralShadePass::rasterProgram(ShadeVariant variant) {
-  auto& program = raster_[variant.index()];
-  if (!program) program = std::make_unique<gpu::GraphicsProgram>(programs_, proxyState(), specialisedFor(variant));
-  return *program;
-}
+SpectralShadePass::SpectralShadePass(gpu::ProgramLibrary& programs)
+    : compute_(programs, "glass/spectral.comp"), raster_(programs, proxyState()) {}
 
 void SpectralShadePass::record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
                                const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent) {
@@ -51,7 +35,7 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
   if (compute) {
     frame.transition(colour, gpu::use::ComputeWrite);
     frame.transition(motion, gpu::use::ComputeWrite);
-    const gpu::ComputeProgram& program = computeProgram(variant);
+    const gpu::ComputeProgram& program = compute_({int32_t(variant.shape), int32_t(variant.options)});
     program.bind(frame.cmd);
     program.push(frame.cmd, bindings.storageImage("colourOut", colour.view()).storageImage("motionOut", motion.view()));
     program.dispatchOver(frame.cmd, extent);
@@ -63,7 +47,7 @@ void SpectralShadePass::record(const FrameContext& frame, const FrameSources& so
   desc.colors = {{&colour, VkClearColorValue{}}, {&motion, VkClearColorValue{}}};
   desc.depth = gpu::DepthAttachment{&frame.image(images.depth)};
   const auto rendering = frame.rendering(desc);
-  const gpu::GraphicsProgram& program = rasterProgram(variant);
+  const gpu::GraphicsProgram& program = raster_({int32_t(variant.shape), int32_t(variant.options)});
   program.bind(frame.cmd);
   program.push(frame.cmd, bindings.storageBuffer("Hull", hull.handle()));
   const uint32_t vertices = variant.shape == ShapeKind::Diamond ? diamond.hullVertices() : 36u;  // the hull, or a box

@@ -9,6 +9,7 @@
 //   the eye inside; depth from the surface hit sorts overlapping instances (proxy.vert, glass.frag).
 // Each shape and combination of shading options has its own programs (specialization constants:
 // instance.glsl's shape, shade.glsl's options), built the first time they are shown.
+#include "gpu/program_variants.h"
 #include "scenes/glass/diamond_buffers.h"
 #include "scenes/glass/frame_sources.h"
 #include "scenes/glass/screen_images.h"
@@ -16,8 +17,6 @@
 #include "scenes/scene.h"
 #include "shaders/glass/frame_block.h"
 
-#include <array>
-#include <memory>
 
 namespace vitrine::glass {
 
@@ -25,23 +24,19 @@ namespace vitrine::glass {
 struct ShadeVariant {
   ShapeKind shape;
   uint32_t options;  // frame_values.h: shadeOptions
-  size_t index() const { return size_t(shape) * GLASS_SHADE_OPTION_COMBINATIONS + options; }
 };
 
 class SpectralShadePass {
  public:
-  explicit SpectralShadePass(gpu::ProgramLibrary& programs) : programs_(programs) {}
+  explicit SpectralShadePass(gpu::ProgramLibrary& programs);
   void record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
               const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent);
 
  private:
-  const gpu::ComputeProgram& computeProgram(ShadeVariant variant);
-  const gpu::GraphicsProgram& rasterProgram(ShadeVariant variant);
-
-  static constexpr size_t kVariants = 5 * GLASS_SHADE_OPTION_COMBINATIONS;  // ShapeKind's five
-  gpu::ProgramLibrary& programs_;
-  std::array<std::unique_ptr<gpu::ComputeProgram>, kVariants> compute_;  // by ShadeVariant::index
-  std::array<std::unique_ptr<gpu::GraphicsProgram>, kVariants> raster_;
+  // Both paths' shaders specialised on the variant (instance.glsl's GLASS_SHAPE, shade.glsl's
+  // GLASS_SHADE_OPTIONS), so that a cube's pipeline carries no diamond code, nor seed optics physical ones.
+  gpu::ComputeVariants compute_;
+  gpu::GraphicsVariants raster_;
 };
 
 }  // namespace vitrine::glass

@@ -1,5 +1,6 @@
 // kifs: the volumetric KIFS fractal of seed 003, rebuilt stage by stage in one compute pass.
 #include "scenes/kifs/kifs_scene.h"
+#include "gpu/program_variants.h"
 #include "scenes/adaptive_quality.h"
 
 #include "scenes/kifs/kifs_math.h"
@@ -9,8 +10,6 @@
 
 #include <imgui.h>
 
-#include <array>
-#include <memory>
 
 namespace vitrine::kifs {
 namespace {
@@ -23,7 +22,7 @@ TierMarch settingsFor(Tier tier) { return kTierMarch[int(tier)]; }
 
 class KifsScene final : public Scene {
  public:
-  explicit KifsScene(const SceneContext& context) : quality_(context), programs_(context.programs) {}
+  explicit KifsScene(const SceneContext& context) : quality_(context), marches_(context.programs, "kifs/kifs.comp") {}
 
   void update(const FrameInput& input) override {
     if (input.cursor.dragging) {
@@ -47,7 +46,7 @@ class KifsScene final : public Scene {
                     reducedMotion_ ? 0u : uint32_t(frame.input.frame),
                     settings_.fold};
     frame.transition(frame.target, gpu::use::ComputeWrite);
-    const gpu::ComputeProgram& march = marchFor(settings_.step);
+    const gpu::ComputeProgram& march = marches_({settings_.step});
     march.bind(frame.cmd);
     march.push(frame.cmd, gpu::Bindings().storageImage("target", frame.target.view()));
     march.constants(frame.cmd, push);
@@ -68,18 +67,9 @@ class KifsScene final : public Scene {
 
  private:
   Tier activeTier() const { return quality_.active(); }
-  // The stage's march (kifs.comp specialised: KIFS_STAGE), built the first time the stage is shown.
-  const gpu::ComputeProgram& marchFor(int stage) {
-    auto& program = marches_[size_t(stage - 1)];
-    if (!program)
-      program = std::make_unique<gpu::ComputeProgram>(programs_, "kifs/kifs.comp",
-                                                      gpu::ProgramOptions{.specialization = {stage}});
-    return *program;
-  }
 
   AdaptiveQuality quality_;
-  gpu::ProgramLibrary& programs_;
-  std::array<std::unique_ptr<gpu::ComputeProgram>, 9> marches_;  // by stage - 1
+  gpu::ComputeVariants marches_;  // kifs.comp specialised on the teaching stage (KIFS_STAGE)
   Settings settings_;
   glm::vec2 angles_{0.0f};
   bool reducedMotion_ = false;

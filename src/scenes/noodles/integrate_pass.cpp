@@ -6,38 +6,26 @@
 
 namespace vitrine::noodles {
 
-IntegratePass::IntegratePass(gpu::ProgramLibrary& programs) : programs_(programs) {}
+IntegratePass::IntegratePass(gpu::ProgramLibrary& programs)
+    : exact_(programs, "noodles/integrate.comp"),
+      baked_(programs, "noodles/integrate_baked.comp"),
+      bake_(programs, "noodles/bake.comp") {}
 
 const gpu::ComputeProgram& IntegratePass::integrateProgram(bool baked, const StrandSettings& settings) const {
-  // integrate_strands.glsl's constant_id 0..3, each a bit of the index. The baked pass reads its field
-  // and integrator from the push block, so its pipelines differ only in the tangent and the frames.
-  const std::array<uint32_t, 4> options{baked ? 0u : uint32_t(settings.field.kind),
-                                        baked ? 0u : uint32_t(settings.integrator), uint32_t(settings.tangent),
-                                        uint32_t(settings.frames)};
-  size_t index = baked ? 16 : 0;
-  for (size_t i = 0; i < options.size(); ++i) index |= size_t(options[i] & 1u) << i;
-  auto& program = integrate_[index];
-  if (!program) {
-    gpu::ProgramOptions specialised;
-    for (uint32_t option : options) specialised.specialization.push_back(int32_t(option));
-    program = std::make_unique<gpu::ComputeProgram>(
-        programs_, baked ? "noodles/integrate_baked.comp" : "noodles/integrate.comp", specialised);
-    if (program->localSize()[0] != kWorkgroupSize) throw Error("noodles: the integrate shader's local size changed");
-  }
-  return *program;
-}
-
-const gpu::ComputeProgram& IntegratePass::bakeProgram(maths::FieldKind field) const {
-  auto& program = bake_[size_t(field)];
-  if (!program)
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/bake.comp",
-                                                    gpu::ProgramOptions{.specialization = {int32_t(field)}});
-  return *program;
+  // integrate_strands.glsl's constant_id 0..3. The baked pass reads its field and integrator from the
+  // push block (specialised, the H200 ran its RK4 a third slower), so its variants differ only in the
+  // tangent and the frames.
+  const int32_t tangent = int32_t(settings.tangent), frames = int32_t(settings.frames);
+  const gpu::ComputeProgram& program =
+      baked ? baked_({0, 0, tangent, frames})
+            : exact_({int32_t(settings.field.kind), int32_t(settings.integrator), tangent, frames});
+  if (program.localSize()[0] != kWorkgroupSize) throw Error("noodles: the integrate shader's local size changed");
+  return program;
 }
 
 void IntegratePass::recordBake(VkCommandBuffer cmd, const StrandSettings& settings, VkImageView volume) const {
   if (!settings.bake.baked()) throw Error("noodles: asked to bake a flow the settings do not bake");
-  const gpu::ComputeProgram& bake = bakeProgram(settings.field.kind);
+  const gpu::ComputeProgram& bake = bake_({int32_t(settings.field.kind)});
   bake.bind(cmd);
   bake.push(cmd, gpu::Bindings().storageImage("bakedFlow", volume));
   bake.constants(cmd, shader::NoodlesBakePush{.offsetY = settings.field.offsetY,

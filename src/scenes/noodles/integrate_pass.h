@@ -2,12 +2,9 @@
 // The compute passes that integrate every strand into the node buffer, one invocation per strand and
 // one dispatch per chunk (strand_layout.h), in the exact flow or in a bake of it (field_bake.h),
 // and the pass that bakes the flow. The caller owns the node buffer, the volume and their barriers.
-#include "gpu/program.h"
+#include "gpu/program_variants.h"
 #include "scenes/noodles/strand.h"
 #include "scenes/noodles/strand_layout.h"
-
-#include <array>
-#include <memory>
 
 namespace vitrine::noodles {
 
@@ -30,16 +27,14 @@ class IntegratePass {
   uint32_t workgroupSize() const { return kWorkgroupSize; }  // strands a workgroup integrates
 
  private:
-  // integrate_strands.glsl's local size (checked against the shader when a program is built).
+  // integrate_strands.glsl's local size (checked against the shader's each time a program is taken).
   static constexpr uint32_t kWorkgroupSize = 64;
-  // One program a flow source (exact, baked) and combination of the options that specialise it (the
-  // field, the integrator, the tangent, the frames), and a bake a field; built when first used.
+  // The program for a flow source (exact, baked), specialised on the options integrate_strands.glsl
+  // takes as constants (the field, the integrator, the tangent, the frames).
   const gpu::ComputeProgram& integrateProgram(bool baked, const StrandSettings& settings) const;
-  const gpu::ComputeProgram& bakeProgram(maths::FieldKind field) const;
 
-  gpu::ProgramLibrary& programs_;
-  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2 * 16> integrate_;
-  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> bake_;
+  gpu::ComputeVariants exact_, baked_;
+  gpu::ComputeVariants bake_;  // bake.comp, specialised on the field
 };
 
 }  // namespace vitrine::noodles

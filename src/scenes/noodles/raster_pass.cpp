@@ -33,10 +33,9 @@ gpu::ProgramLibrary& programsWithInt64Atomics(const SceneContext& context) {
 
 }  // namespace
 
-gpu::ProgramOptions withSamples(uint32_t samplesPerAxis) { return {.specialization = {int32_t(samplesPerAxis)}}; }
-
 RasterPass::RasterPass(const SceneContext& context)
-    : programs_(programsWithInt64Atomics(context)),
+    : segments_(programsWithInt64Atomics(context), "noodles/raster.comp"),
+      bigSegments_(context.programs, "noodles/raster_big.comp"),
       tileBound_(context.programs, "noodles/tile_bound.comp"),
       visibility_(context.resources.declare(visibilityDecl(kMultisampledAxis))),
       bigList_(context.resources.declare({.name = "noodles big segments",
@@ -64,22 +63,6 @@ void RasterPass::followSamples(const FrameContext& frame, bool multisample) {
   if (samplesPerAxis == samplesPerAxis_) return;
   frame.resources.redeclare(visibility_, visibilityDecl(samplesPerAxis));  // the old one is retired
   samplesPerAxis_ = samplesPerAxis;
-}
-
-const gpu::ComputeProgram& RasterPass::segments() const {
-  auto& program = segments_[samplesPerAxis_ - 1];
-  if (!program) {
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/raster.comp", withSamples(samplesPerAxis_));
-    if (program->localSize()[0] != kWorkgroupSize) throw Error("noodles: raster.comp's local size changed");
-  }
-  return *program;
-}
-
-const gpu::ComputeProgram& RasterPass::bigSegments() const {
-  auto& program = bigSegments_[samplesPerAxis_ - 1];
-  if (!program)
-    program = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/raster_big.comp", withSamples(samplesPerAxis_));
-  return *program;
 }
 
 void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, VkBuffer nodes, const TubeView& view) {
@@ -131,7 +114,8 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
     push.invocationsPerRow = groups.x * workgroupSize();
-    const gpu::ComputeProgram& segmentProgram = segments();
+    const gpu::ComputeProgram& segmentProgram = segments_({int32_t(samplesPerAxis_)});
+    if (segmentProgram.localSize()[0] != kWorkgroupSize) throw Error("noodles: raster.comp's local size changed");
     segmentProgram.bind(frame.cmd);
     segmentProgram.push(frame.cmd, bindings);
     segmentProgram.constants(frame.cmd, push);
@@ -139,7 +123,7 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
 
     frame.transition(bigList, gpu::use::ComputeReadBuffer);
     frame.transition(visibility, gpu::use::ComputeReadWriteBuffer);
-    const gpu::ComputeProgram& bigProgram = bigSegments();
+    const gpu::ComputeProgram& bigProgram = bigSegments_({int32_t(samplesPerAxis_)});
     bigProgram.bind(frame.cmd);
     bigProgram.push(frame.cmd, bindings);
     bigProgram.constants(frame.cmd, push);

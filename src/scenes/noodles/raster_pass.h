@@ -7,14 +7,11 @@
 // The pass declares the visibility buffer (per pixel of the target, a key for each sample), the
 // big-segment list and its counters; shade_pass.h reads the visibility buffer after it.
 #include "gpu/frame_resources.h"
-#include "gpu/program.h"
+#include "gpu/program_variants.h"
 #include "scenes/noodles/strand_layout.h"
 #include "scenes/noodles/tube_view.h"
 #include "scenes/scene.h"
 #include "shaders/noodles/raster_blocks.h"
-
-#include <array>
-#include <memory>
 
 namespace vitrine::noodles {
 
@@ -23,10 +20,6 @@ inline constexpr uint32_t kBigListCapacity = 1u << 22;
 // Nests of this many segments and more are drawn in two phases (raster_blocks.h): occluders, a bound
 // a tile, the rest. Below it the occluders cover too little of the screen for the bound to pay.
 inline constexpr uint64_t kTwoPhasesFrom = uint64_t(1) << 22;
-
-// The raster and shade programs for `samplesPerAxis` samples along a pixel's side (raster_push.glsl's
-// specialization constant SAMPLES_PER_AXIS).
-gpu::ProgramOptions withSamples(uint32_t samplesPerAxis);
 
 class RasterPass {
  public:
@@ -46,16 +39,11 @@ class RasterPass {
                    shader::NoodlesRasterPush push, uint32_t phase);
   void recordTileBound(const FrameContext& frame, uint32_t tilesPerRow);
 
-  // raster.comp's local size (checked against the shader when a program is built).
+  // raster.comp's local size (checked against the shader's each time its program is taken).
   static constexpr uint32_t kWorkgroupSize = 64;
-  // raster.comp and raster_big.comp for the samples a pixel in use (raster_push.glsl's
-  // SAMPLES_PER_AXIS), built when first used; index samples along an axis - 1.
-  const gpu::ComputeProgram& segments() const;
-  const gpu::ComputeProgram& bigSegments() const;
-
-  gpu::ProgramLibrary& programs_;
-  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> segments_;
-  mutable std::array<std::unique_ptr<gpu::ComputeProgram>, 2> bigSegments_;
+  // raster.comp and raster_big.comp, specialised on the samples along a pixel's side
+  // (raster_push.glsl's SAMPLES_PER_AXIS, constant_id 0), as shade.comp is.
+  gpu::ComputeVariants segments_, bigSegments_;
   gpu::ComputeProgram tileBound_;
   gpu::BufferHandle visibility_;
   gpu::BufferHandle bigList_;

@@ -9,9 +9,7 @@ void ShadePass::record(const FrameContext& frame, const StrandLayout& layout, Vk
                        uint32_t samplesPerAxis, const TubeView& view) const {
   frame.transition(visibility, gpu::use::ComputeReadBuffer);
   shader::NoodlesRasterPush push = rasterPush(view, layout);
-  auto& built = bySamples_[samplesPerAxis - 1];
-  if (!built) built = std::make_unique<gpu::ComputeProgram>(programs_, "noodles/shade.comp", withSamples(samplesPerAxis));
-  const gpu::ComputeProgram& program = *built;
+  const gpu::ComputeProgram& program = bySamples_({int32_t(samplesPerAxis)});
   program.bind(frame.cmd);
   for (size_t i = 0; i < layout.chunks.size(); ++i) {
     const StrandChunk& chunk = layout.chunks[i];
