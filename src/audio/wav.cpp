@@ -81,7 +81,7 @@ void writeWav(const std::filesystem::path& path, std::span<const float> samples,
       out.write(chunk.data(), std::streamsize(chunk.size()));
     }
     out.close();
-    if (!out) throw Error(fmt::format("Cannot write {}: {}", path.string(), std::system_category().message(errno)));
+    if (!out) throw Error(fmt::format("Cannot write {}: {}", path.string(), osReason(errno)));
   });
 }
 

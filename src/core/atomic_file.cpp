@@ -68,8 +68,6 @@ const std::regex& temporaryPattern() {
   return pattern;
 }
 
-std::string osReason(int error) { return std::system_category().message(error); }
-
 // Writes all of `bytes` to the new file `path`, flushes it to the disk and closes it, checking each
 // step: a full disk or a file size limit shows up in one of them, with the operating system's reason.
 void writeAll(const std::filesystem::path& path, const std::filesystem::path& target,

@@ -37,8 +37,6 @@ std::string_view fileKind(mode_t mode) {
   return "not a regular file";
 }
 
-std::string osReason(int error) { return std::system_category().message(error); }
-
 // OpenEXR's first complaint about a header, kept for the error message (its messages quote attribute
 // names and types straight from the file: bytes that are not printable ASCII are written as \xNN).
 thread_local std::string exrComplaint;

@@ -99,7 +99,7 @@ using ReadPicture = decltype(&vitrine_read_picture_oiio);
 
 // The OpenImageIO module's entry, loaded once: beside the executable (an installed or packed copy),
 // else where the build put it. Null, with the reason in `why`, when neither loads.
-ReadPicture openImageIoReader(std::string& why) {
+ReadPicture openImageIoReader([[maybe_unused]] std::string& why) {
 #if VITRINE_OIIO_LINKED
   return &vitrine_read_picture_oiio;
 #else

@@ -248,7 +248,9 @@ TEST(BloomSettings, LowerTiersTakeASmallerLatticeAndSamplesInProportion) {
       const int n = tierLattice(side, tier);
       EXPECT_GE(n, 48);
       EXPECT_LE(n, side);
-      if (n < side) EXPECT_EQ(n % 8, 0) << side;
+      if (n < side) {
+        EXPECT_EQ(n % 8, 0) << side;
+      }
     }
   EXPECT_EQ(tierSamples(56, 96, 96), 56);
   EXPECT_EQ(tierSamples(56, 96, 64), 37);
@@ -338,7 +340,7 @@ TEST(BloomPhases, UpInOrderDownInReverseWithHysteresis) {
 TEST(BloomSettings, TheSchemaCoversThePanelTheIssueAsksFor) {
   for (const char* key : {"lattice", "diffusion", "decay_rising", "decay_venting", "source", "sigma", "phase_source",
                           "threshold_amber", "threshold_rose", "threshold_crimson", "threshold_chroma",
-                          "trace_steps", "samples", "volume", "mute", "reverb_wet", "vent"})
+                          "samples", "volume", "mute", "reverb_wet", "vent"})
     EXPECT_NE(schema().find(key), nullptr) << key;
   EXPECT_TRUE(schema().find("vent")->has(params::kTransient));
 }
