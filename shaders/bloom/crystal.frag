@@ -1,7 +1,6 @@
 #version 460
-// The crystal: sphere-trace the octahedron from the proxy's box to its entry, find the exit
-// analytically (a convex polytope of 8 planes), integrate the vapour front to back over jittered
-// samples in the crystal's state colour, add a Fresnel rim and facet shading at the entry; during the
+// The crystal: the ray's entry and exit found analytically (a convex polytope of 8 planes), the vapour
+// integrated front to back over jittered samples in the crystal's state colour, and a Fresnel rim and facet shading at the entry; during the
 // climax a spectral shimmer. The silhouette is antialiased from the ray's analytic chord through the
 // octahedron, so a lower render scale is softer, never stair-stepped. Output is premultiplied: the
 // chamber shows through what the crystal lets pass.
@@ -33,32 +32,12 @@ void main() {
   const float slope = max(length(vec2(dFdx(chord), dFdy(chord))), 1e-6);
   const float coverage = clamp(0.5 + chord / slope, 0.0, 1.0);
 
-  // Only the box's far faces do the work (one invocation a pixel, also with the eye inside the box).
-  const vec3 w = abs(world);
-  const vec3 face = w.x >= max(w.y, w.z) ? vec3(sign(world.x), 0, 0) : w.y >= w.z ? vec3(0, sign(world.y), 0)
-                                                                                 : vec3(0, 0, sign(world.z));
-  if (dot(face, rd) < 0.0 || coverage <= 0.0) discard;
-  // The box [-R, R]^3: start where the ray enters it (or at the eye when inside).
-  const vec3 inv = 1.0 / rd;
-  const vec3 a = (-kCrystalRadius - ro) * inv, b = (kCrystalRadius - ro) * inv;
-  const vec3 lo = min(a, b), hi = max(a, b);
-  const float boxIn = max(max(max(lo.x, lo.y), lo.z), 0.0), boxOut = min(min(hi.x, hi.y), hi.z);
-
-  float t = boxIn;
-  bool hit = false;
-  for (uint i = 0u; i < pc.traceSteps && t < boxOut; ++i) {
-    const float d = octahedronDistance(ro + rd * t, kCrystalRadius);
-    if (d < 1e-4) {
-      hit = true;
-      break;
-    }
-    t += d;
-  }
-  // A pixel the silhouette only partly covers, or one the trace's budget fell short of: the analytic entry.
-  if (!hit) t = max(chordIn, 0.0);
-  const float exitT = min(chordOut, boxOut);
+  if (coverage <= 0.0) discard;
+  // The entry and the exit are the chord's ends (the eye is never inside the crystal, but a ray from
+  // inside would start at the eye).
+  const float t = max(chordIn, 0.0);
   const vec3 entry = ro + rd * t;
-  const float span = max(exitT - t, 0.0);
+  const float span = max(chordOut - t, 0.0);
 
   // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity). The
   // samples follow the chord's length (crystalSamples): a step no longer than the longest chord's.

@@ -23,7 +23,6 @@ ivec2 crystalColumnRun(ivec2 xy, int n, int run, int length) {
                min(min((run + 1) * length, n), int(ceil((1.0 + halfHeight) * 0.5 * float(n))) + 1));
 }
 
-float octahedronDistance(vec3 p, float radius) { return (abs(p.x) + abs(p.y) + abs(p.z) - radius) * 0.57735027; }
 uint crystalSamples(float span, float radius, uint samples) {
   const float wanted = ceil(span / (2.0 * radius) * float(samples));
   return clamp(uint(max(wanted, 1.0)), 1u, max(samples, 1u));

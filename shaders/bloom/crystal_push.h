@@ -12,7 +12,6 @@ struct BloomCrystalPush {
   vec3 tint;         // the crystal's state colour (bloom_math.h: flipColour), linear
   uint seed;
   uint frame;        // 0 under reduced motion: the jitter holds still
-  uint traceSteps;   // sphere-trace budget to the entry (48)
   uint samples;      // volume samples along the longest chord (56); shorter chords take fewer
   float shimmer;     // climax: 0..1 (0 under reduced motion)
   uint clearGlass;   // 1: no voxel is past kCoverFrom, so every sample would be the glass's density

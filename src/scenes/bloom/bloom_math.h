@@ -36,10 +36,6 @@ inline constexpr float kCoreRadius = 0.7f;  // of the crystal's radius
 inline bool insideCore(glm::vec3 normalised) {
   return std::abs(normalised.x) + std::abs(normalised.y) + std::abs(normalised.z) <= kCoreRadius;
 }
-// A lower bound of the distance to the octahedron surface (exact on the faces): safe to sphere-trace.
-inline float octahedronDistance(glm::vec3 p, float radius) {
-  return (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) - radius) * 0.57735027f;
-}
 
 // The volume samples for a chord of `span` through the crystal when its longest chord (2R, vertex to
 // vertex) takes `samples`: the step is never longer than that chord's, so a short chord near an edge or

@@ -53,7 +53,7 @@ gpu::GraphicsState crystalState() {
   state.fragment = "bloom/crystal.frag";
   state.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
   state.blend = gpu::GraphicsState::Blend::Premultiplied;
-  state.cull = VK_CULL_MODE_FRONT_BIT;  // the box's far faces only: one fragment a covered pixel
+  state.cull = VK_CULL_MODE_FRONT_BIT;  // the proxy's far faces only: one fragment a covered pixel
   return state;
 }
 
@@ -433,7 +433,6 @@ class BloomScene final : public Scene {
                                         .tint = tint(),
                                         .seed = seed_,
                                         .frame = reducedMotion_ ? 0u : uint32_t(frame_),
-                                        .traceSteps = uint32_t(settings_.traceSteps),
                                         .samples = uint32_t(tierSamples(settings_.samples, settings_.lattice, builtLattice_)),
                                         .shimmer = shimmer,
                                         .clearGlass = clearGlass() ? 1u : 0u};
@@ -443,7 +442,7 @@ class BloomScene final : public Scene {
                                  device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                                  gpu::use::FragmentSample.layout));
     crystal_.constants(frame.cmd, push);
-    vkCmdDraw(frame.cmd, 36, 1, 0, 0);
+    vkCmdDraw(frame.cmd, 24, 1, 0, 0);  // crystal.vert: the octahedron's 8 faces
   }
 
   // The type is the chemistry's voice, time-locked to the phases: the new phase's name types in above

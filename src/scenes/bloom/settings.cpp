@@ -49,9 +49,6 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"threshold_chroma", "climax at", "The concentration half the crystal's interior "
                                  "must pass for the climax.", "phases"},
                                 &S::thresholdChroma, 0.05, 1.05));
-    s.add(params::intParam<S>({"trace_steps", "trace steps", "Sphere-trace budget to the crystal's entry.",
-                               "render"},
-                              &S::traceSteps, 8, 128));
     s.add(params::intParam<S>({"samples", "samples", "Volume samples along the crystal's longest chord (vertex to vertex); shorter chords take fewer, at the same spacing.", "render"}, &S::samples,
                               8, 256));
     s.add(params::floatParam<S>({"volume", "volume", "Master volume.", "sound"}, &S::volume, 0.0, 1.0));

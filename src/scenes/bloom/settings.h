@@ -23,7 +23,6 @@ struct Settings {
   float thresholdRose = 0.45f;
   float thresholdCrimson = 0.65f;
   float thresholdChroma = 0.82f;
-  int traceSteps = 48;             // sphere-trace budget to the entry
   int samples = 56;                // volume samples entry to exit
   float volume = 0.8f;
   bool mute = false;
