@@ -15,6 +15,18 @@ layout(push_constant) uniform Push { BloomCrystalPush pc; };
 
 const vec3 kLight = normalize(vec3(-0.4, 0.8, 0.6));
 
+// The facet whose outward normal has these signs, over a path of `volumeAlpha`: premultiplied colour
+// and alpha.
+vec4 shadeFacet(vec3 signs, vec3 rd, float volumeAlpha) {
+  const vec3 normal = signs * 0.57735027;
+  // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
+  const float fresnel = 0.02 + 0.98 * pow(1.0 - abs(dot(normal, rd)), 5.0);
+  const float alpha = volumeAlpha + (1.0 - volumeAlpha) * (0.22 + 0.5 * fresnel);
+  // Facets catch the light; the rim brightens towards grazing angles.
+  const vec3 lit = pc.tint * alpha * (0.72 + 0.38 * max(dot(normal, kLight), 0.0)) + vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
+  return vec4(lit, alpha);
+}
+
 void main() {
   const vec3 ro = pc.eye;
   const vec3 rd = normalize(world - ro);
@@ -32,11 +44,14 @@ void main() {
   const float slope = max(length(vec2(dFdx(chord), dFdy(chord))), 1e-6);
   const float coverage = clamp(0.5 + chord / slope, 0.0, 1.0);
 
-  if (coverage <= 0.0) discard;
   // The entry and the exit are the chord's ends (the eye is never inside the crystal, but a ray from
   // inside would start at the eye).
   const float t = max(chordIn, 0.0);
   const vec3 entry = ro + rd * t;
+  // The entry's facet is the signs of its coordinates. Where an edge between facets (a coordinate's
+  // zero) crosses the pixel, each side's share of it, as the silhouette's coverage is found.
+  const vec3 positiveShare = clamp(0.5 + entry / max(fwidth(entry), vec3(1e-6)), 0.0, 1.0);
+  if (coverage <= 0.0) discard;
   const float span = max(chordOut - t, 0.0);
 
   // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity). The
@@ -54,15 +69,23 @@ void main() {
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
     depth += sampleDensity(v) * step;
   }
-  float alpha = 1.0 - exp(-depth);
-  // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
-  const vec3 normal = sign(entry) * 0.57735027;
-  const float facing = abs(dot(normal, rd));
-  const float fresnel = 0.02 + 0.98 * pow(1.0 - facing, 5.0);
-  alpha += (1.0 - alpha) * (0.22 + 0.5 * fresnel);
-  // Facets catch the light; the rim brightens towards grazing angles.
-  vec3 sum = pc.tint * alpha * (0.72 + 0.38 * max(dot(normal, kLight), 0.0));
-  sum += vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
+  const float volumeAlpha = 1.0 - exp(-depth);
+  // The facet the pixel sees, shaded; where an edge between facets crosses it, each facet weighted by
+  // its share: a hard switch there, between facets shaded differently, showed as stair-steps.
+  vec4 shaded;  // premultiplied colour, alpha
+  if (all(equal(positiveShare, round(positiveShare)))) {
+    shaded = shadeFacet(positiveShare * 2.0 - 1.0, rd, volumeAlpha);
+  } else {
+    shaded = vec4(0.0);
+    for (int k = 0; k < 8; ++k) {
+      const vec3 signs = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
+      const vec3 shares = mix(1.0 - positiveShare, positiveShare, greaterThan(signs, vec3(0.0)));
+      const float share = shares.x * shares.y * shares.z;
+      if (share > 0.0) shaded += share * shadeFacet(signs, rd, volumeAlpha);
+    }
+  }
+  vec3 sum = shaded.rgb;
+  const float alpha = shaded.a;
 
   if (pc.shimmer > 0.0) {  // the chamber sings: a slow spectral wash across the crystal
     const vec2 uv = gl_FragCoord.xy * 0.004;

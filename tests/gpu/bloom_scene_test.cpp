@@ -197,5 +197,35 @@ TEST_F(BloomScene, TheLowTierKeepsTheCrystalsEdgesSmooth) {
   EXPECT_LT(roughest(low), roughest(high) * 1.1f + 0.02f);
 }
 
+// The edge between the crystal's upper and lower facets (its equator, seen from a little above) is
+// shaded apart on each side. Antialiased, a column that crosses it where the edge falls between pixel
+// centres takes the step from one shade to the other over two pixels, not in one: so the largest step
+// between neighbours is well under the whole step, on average over the columns.
+TEST_F(BloomScene, TheEdgesBetweenFacetsAreAntialiased) {
+  const ImageRgba image = render({}, 3, nullptr, false, {320, 180});
+  const auto grey = [&](int x, int y) {
+    const float* p = image.at(uint32_t(x), uint32_t(y));
+    return 0.2126f * linearToSrgb(std::clamp(p[0], 0.0f, 1.0f)) + 0.7152f * linearToSrgb(std::clamp(p[1], 0.0f, 1.0f)) +
+           0.0722f * linearToSrgb(std::clamp(p[2], 0.0f, 1.0f));
+  };
+  const int w = int(image.width), h = int(image.height);
+  double shares = 0.0;
+  int columns = 0;
+  for (int x = int(0.36f * float(w)); x < int(0.47f * float(w)); ++x) {  // the left half, away from the centre's edge
+    float largest = 0.0f;
+    int at = 0;
+    for (int y = int(0.44f * float(h)); y < int(0.60f * float(h)); ++y)
+      if (const float step = std::abs(grey(x, y + 1) - grey(x, y)); step > largest) largest = step, at = y;
+    const float whole = std::abs(grey(x, at + 3) - grey(x, at - 2));
+    if (whole < 0.03f) continue;
+    shares += largest / whole;
+    ++columns;
+  }
+  ASSERT_GT(columns, 15) << "the equator was not found";
+  std::printf("bloom's equator: the largest step between neighbours is %.2f of the whole (%d columns)\n",
+              shares / columns, columns);
+  EXPECT_LT(shares / columns, 0.8) << "the facets' shades switch in one pixel";
+}
+
 }  // namespace
 }  // namespace vitrine::test

@@ -1,5 +1,5 @@
 // bloom: a vapochromic octahedral crystal (seed 000, "The Bloom"). The cursor is the vapour: it
-// diffuses through a 3D lattice in a compute pass, the crystal is raymarched over a bounding-box
+// diffuses through a 3D lattice in a compute pass, the crystal is raymarched over an octahedral
 // proxy so only its pixels pay, and its colour flips white -> amber -> rose -> crimson at sharp
 // thresholds. The phases are read from the lattice itself (statistics reduced on the GPU, read back
 // a few frames later, never a stall) and reported as scene events.
