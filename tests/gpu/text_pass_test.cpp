@@ -45,8 +45,8 @@ class TextScene final : public TestScene {
   std::vector<text::TextDraw> draws;
 };
 
-TextScene* lastScene = nullptr;
-const SceneInfo& kTextScene = testSceneInfo(lastScene);
+TextScene* lastTextScene = nullptr;
+const SceneInfo& kTextScene = testSceneInfo(lastTextScene);
 
 // One frame at a time through the host's scene renderer, the target read back once it is done.
 class TextFrames {
@@ -54,7 +54,7 @@ class TextFrames {
   explicit TextFrames(const gpu::Device& device)
       : device_(device), assets_(Assets::locate()), programs_(device), renderer_(device, programs_, assets_, 1) {
     renderer_.setScene(kTextScene);
-    scene_ = lastScene;
+    scene_ = lastTextScene;
   }
   ~TextFrames() { device_.waitIdle(); }
 

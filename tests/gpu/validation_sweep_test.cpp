@@ -17,16 +17,16 @@ TEST_P(ValidationSweep, EveryPresetAndStageThroughResizesAndSwitches) {
   FramesInFlight run(device(), Assets::locate());
   // Small sizes: the sweep is about synchronisation and lifetimes, not pixels. noodles is drawn
   // with fewer strands so lavapipe gets through it in seconds.
-  const params::KeyValues light = info.name == "noodles" ? params::KeyValues{{"grid", "6"}, {"segments", "24"}}
-                                                         : params::KeyValues{};
+  const params::KeyValues fewerStrands =
+      info.name == "noodles" ? params::KeyValues{{"grid", "6"}, {"segments", "24"}} : params::KeyValues{};
   const std::array<VkExtent2D, 3> sizes{{{48, 27}, {64, 36}, {40, 40}}};
   run.renderer().setScene(info);
-  ASSERT_EQ(run.renderer().applyParameters(light), "");
+  ASSERT_EQ(run.renderer().applyParameters(fewerStrands), "");
   run.frames(3, sizes[0]);
   size_t n = 0;
   for (const params::Preset& preset : info.schema().presets()) {
     ASSERT_EQ(run.renderer().applyPreset(preset.name), "") << preset.name;
-    ASSERT_EQ(run.renderer().applyParameters(light), "");
+    ASSERT_EQ(run.renderer().applyParameters(fewerStrands), "");
     run.frames(2, sizes[++n % sizes.size()]);
   }
   // From here on through the flash guard: its held frame follows the output's size, and the card's
@@ -50,7 +50,7 @@ TEST_P(ValidationSweep, EveryPresetAndStageThroughResizesAndSwitches) {
   run.renderer().setScene(other);  // away and back, with frames of the old scene still in flight
   run.frames(2, sizes[1]);
   run.renderer().setScene(info);
-  ASSERT_EQ(run.renderer().applyParameters(light), "");
+  ASSERT_EQ(run.renderer().applyParameters(fewerStrands), "");
   run.frames(3, sizes[2]);
 }
 

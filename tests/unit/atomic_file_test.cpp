@@ -1,6 +1,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "support/temp_folder.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -28,11 +29,6 @@ class AtomicFile : public test::TempFolderTest {
     return names;
   }
 };
-
-std::string readAll(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -78,7 +74,7 @@ TEST_F(AtomicFile, ConcurrentWritersToOnePathAllSucceedAndOneWins) {
       if (!e.empty()) return e;
     return std::string();
   }();
-  EXPECT_TRUE(written.count(readAll(target))) << "the file is not any one writer's whole content";
+  EXPECT_TRUE(written.count(test::readFile(target))) << "the file is not any one writer's whole content";
   EXPECT_EQ(entries(), std::vector<std::string>{"out.exr"}) << "temporary files were left behind";
 }
 
@@ -93,7 +89,7 @@ TEST_F(AtomicFile, TemporaryKeepsTheExtensionLastAndSitsBesideTheTarget) {
   EXPECT_EQ(seen.extension(), ".exr");
   EXPECT_EQ(seen.filename().string().front(), '.');  // hidden
   EXPECT_NE(seen.filename(), target.filename());
-  EXPECT_EQ(readAll(target), "x");
+  EXPECT_EQ(test::readFile(target), "x");
 }
 
 TEST_F(AtomicFile, LongTargetNamesGetATemporaryNameTheFileSystemTakes) {
@@ -106,7 +102,7 @@ TEST_F(AtomicFile, LongTargetNamesGetATemporaryNameTheFileSystemTakes) {
   });
   EXPECT_LE(seen.filename().string().size(), 255u);
   EXPECT_EQ(seen.extension(), ".png");
-  EXPECT_EQ(readAll(target), "long");
+  EXPECT_EQ(test::readFile(target), "long");
   EXPECT_EQ(entries().size(), 1u);
 }
 
@@ -132,7 +128,7 @@ TEST_F(AtomicFile, AFailingWriterLeavesTheOldFileAndNoTemporary) {
                                    throw Error("writer gave up");
                                  }),
                Error);
-  EXPECT_EQ(readAll(target), "old");
+  EXPECT_EQ(test::readFile(target), "old");
   EXPECT_EQ(entries(), std::vector<std::string>{"keep.txt"});
 }
 
@@ -142,7 +138,7 @@ TEST_F(AtomicFile, WriteFileAtomicallyPutsEveryByteInPlace) {
   std::vector<unsigned char> bytes(100000);
   for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 7);
   writeFileAtomically(target, bytes);
-  const std::string back = readAll(target);
+  const std::string back = test::readFile(target);
   ASSERT_EQ(back.size(), bytes.size());
   EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), back.begin(),
                          [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); }));

@@ -33,6 +33,7 @@
 #include "audio/wav.h"
 #include "core/error.h"
 #include "support/temp_folder.h"
+#include "support/files.h"
 
 // Counts heap allocations, so a test can show that rendering makes none. Replacing the global
 // operators is per program; every other test just allocates through malloc as before.
@@ -480,10 +481,6 @@ TEST(AudioQueue, SynthTakesCommandsFromAnotherThread) {
 
 class AudioWav : public test::TempFolderTest {};
 
-std::string readFile(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), {}};
-}
 uint32_t u32(const std::string& b, size_t at) {
   return uint32_t(uint8_t(b[at])) | uint32_t(uint8_t(b[at + 1])) << 8 | uint32_t(uint8_t(b[at + 2])) << 16 |
          uint32_t(uint8_t(b[at + 3])) << 24;
@@ -495,7 +492,7 @@ const std::vector<float> kFrames{0.0f, -0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 2.0f, -3
 TEST_F(AudioWav, Pcm16HeaderAndSamples) {
   const auto path = folder_ / "out.wav";
   writeWav(path, kFrames, WavFormat::Pcm16);
-  const std::string b = readFile(path);
+  const std::string b = test::readFile(path);
   ASSERT_EQ(b.size(), 44u + 20u);
   EXPECT_EQ(b.substr(0, 4), "RIFF");
   EXPECT_EQ(u32(b, 4), 36u + 20u) << "RIFF size: the file less 8 bytes";
@@ -516,7 +513,7 @@ TEST_F(AudioWav, Pcm16HeaderAndSamples) {
 TEST_F(AudioWav, Float32RoundTripsExactly) {
   const auto path = folder_ / "out.wav";
   writeWav(path, kFrames, WavFormat::Float32);
-  const std::string b = readFile(path);
+  const std::string b = test::readFile(path);
   ASSERT_EQ(b.size(), 58u + 40u);
   EXPECT_EQ(u32(b, 4), b.size() - 8);
   EXPECT_EQ(u32(b, 16), 18u);
@@ -544,7 +541,7 @@ TEST_F(AudioWav, RefusesHalfFramesAndUnwritablePaths) {
   }
   // An empty run is a valid, empty file.
   writeWav(folder_ / "empty.wav", {});
-  EXPECT_EQ(u32(readFile(folder_ / "empty.wav"), 40), 0u);
+  EXPECT_EQ(u32(test::readFile(folder_ / "empty.wav"), 40), 0u);
 }
 
 // --- Output device ---

@@ -12,18 +12,12 @@
 
 #include "core/error.h"
 #include "support/temp_folder.h"
+#include "support/files.h"
 
 namespace vitrine::host {
 namespace {
 
 const SceneEvent kStage{"stage_changed", {{"stage", 3}, {"label", "fold"}, {"warped", true}, {"scale", 0.25f}}};
-
-std::string read(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 std::string errorOf(const SceneEvent& event) {
   try {
@@ -124,7 +118,7 @@ TEST_F(EventLogFiles, WritesOneLinePerEventWhenClosed) {
   log.emit(1.0, "kifs", SceneEvent{"reset", {}});
   EXPECT_FALSE(std::filesystem::exists(path));  // nothing on disk until the run is done
   log.close();
-  EXPECT_EQ(read(path),
+  EXPECT_EQ(test::readFile(path),
             eventJsonLine(0.5, "kifs", kStage) + "\n" + eventJsonLine(1.0, "kifs", SceneEvent{"reset", {}}) + "\n");
   std::ifstream lines(path);
   int count = 0;
@@ -139,7 +133,7 @@ TEST_F(EventLogFiles, AnEmptyRunWritesAnEmptyFile) {
   const auto path = folder_ / "none.jsonl";
   JsonLinesEventLog(path).close();
   EXPECT_TRUE(std::filesystem::exists(path));
-  EXPECT_EQ(read(path), "");
+  EXPECT_EQ(test::readFile(path), "");
 }
 
 TEST_F(EventLogFiles, ARunThatNeverClosesLeavesThePreviousLog) {
@@ -149,11 +143,11 @@ TEST_F(EventLogFiles, ARunThatNeverClosesLeavesThePreviousLog) {
     JsonLinesEventLog log(path);
     log.emit(0.5, "kifs", kStage);
   }  // the run failed: destroyed without close()
-  EXPECT_EQ(read(path), "previous\n");
+  EXPECT_EQ(test::readFile(path), "previous\n");
   JsonLinesEventLog log(path);
   log.emit(0.5, "kifs", kStage);
   log.close();
-  EXPECT_EQ(read(path), eventJsonLine(0.5, "kifs", kStage) + "\n");
+  EXPECT_EQ(test::readFile(path), eventJsonLine(0.5, "kifs", kStage) + "\n");
 }
 
 TEST_F(EventLogFiles, RefusesAnUnwritablePathBeforeTheRun) {

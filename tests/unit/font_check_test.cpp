@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/temp_folder.h"
+#include "support/files.h"
 #include <unistd.h>
 
 #include <fstream>
@@ -20,11 +21,6 @@ class FontCheck : public test::TempFolderTest {
   }
 };
 
-std::string readAll(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // A font that a fetch cut short: the header promises tables the file no longer holds.
 TEST_F(FontCheck, ATruncatedFontIsReportedWithFreeTypesReason) {
   const auto woff2 = write("Fraunces.woff2", std::string("wOF2\0\1\0\0", 8) + std::string(40, '\0'));
@@ -40,7 +36,7 @@ TEST_F(FontCheck, AFontCutInHalfIsReportedAndTheWholeOneIsNot) {
   const std::filesystem::path dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   if (!std::filesystem::exists(dejavu)) GTEST_SKIP() << dejavu << " is not installed";
   EXPECT_EQ(fontProblem(dejavu), "");
-  const std::string bytes = readAll(dejavu);
+  const std::string bytes = test::readFile(dejavu);
   const auto half = write("DejaVuSans.ttf", bytes.substr(0, bytes.size() / 2));
   EXPECT_FALSE(fontProblem(half).empty());
 }

@@ -2,6 +2,7 @@
 // registered scene's parameter declarations.
 #include "host/gallery_settings.h"
 #include "scenes/scene.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,13 +20,6 @@ std::filesystem::path freshFolder(const std::string& name) {
   return folder;
 }
 
-std::string read(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwitch) {
   const auto path = freshFolder("roundtrip") / "settings.json";
   const auto now = GallerySettings::Clock::now();
@@ -40,7 +34,7 @@ TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwit
     settings.tick(now + std::chrono::seconds(2));
     EXPECT_TRUE(std::filesystem::exists(path));
   }
-  EXPECT_EQ(read(path).find("drag_x"), std::string::npos) << "a cursor drag is not a setting";
+  EXPECT_EQ(test::readFile(path).find("drag_x"), std::string::npos) << "a cursor drag is not a setting";
   GallerySettings again(path, false);
   EXPECT_EQ(again.lastScene(), "kifs");
   EXPECT_EQ(again.valuesFor("kifs"), (params::KeyValues{{"step", "4"}, {"tier", "low"}}));
@@ -95,7 +89,7 @@ TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
   second.remember("noodles", {{"segments", "24"}}, now);
   second.showing("noodles", now);
   second.flush();
-  const auto json = nlohmann::json::parse(read(path));
+  const auto json = nlohmann::json::parse(test::readFile(path));
   EXPECT_EQ(json["scenes"]["kifs"]["step"], 6) << "the second gallery did not change step: " << json.dump();
   EXPECT_EQ(json["scenes"]["noodles"]["segments"], 24);
   EXPECT_EQ(json["scene"], "noodles");
@@ -118,7 +112,7 @@ TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
   second.setWarp("left", nlohmann::ordered_json(), now);  // set up back to the whole frame
   second.setWarp("right", nlohmann::ordered_json{{"region", {0.5, 0, 1, 1}}}, now);
   second.flush();
-  const auto json = nlohmann::json::parse(read(path));
+  const auto json = nlohmann::json::parse(test::readFile(path));
   EXPECT_EQ(json["outputs"]["main"]["mirror"], true) << json.dump();
   EXPECT_EQ(json["outputs"]["right"]["region"][0], 0.5) << json.dump();
   EXPECT_FALSE(json["outputs"].contains("left")) << json.dump();
@@ -135,7 +129,7 @@ TEST(GallerySettings, AKioskKeepsTheGallerysLastScene) {
     kiosk.showing("neon", now);
     kiosk.remember("neon", {{"chains", "256"}}, now);
   }
-  const auto json = nlohmann::json::parse(read(path));
+  const auto json = nlohmann::json::parse(test::readFile(path));
   EXPECT_EQ(json["scene"], "glass");
   EXPECT_EQ(json["scenes"]["neon"]["chains"], 256);
 }

@@ -1,4 +1,3 @@
-#include "app/options.h"
 #include "gpu/check.h"
 #include "image/image_compare.h"
 #include "core/stats.h"
@@ -59,34 +58,6 @@ TEST(Stats, NearestRankPercentiles) {
   EXPECT_EQ(percentile(v, 50), 50);
   EXPECT_EQ(percentile(v, 95), 95);
   EXPECT_EQ(percentile({}, 50), 0);
-}
-
-Options parse(std::vector<const char*> args) {
-  args.insert(args.begin(), "vitrine");
-  return parseOptions(int(args.size()), args.data());
-}
-
-TEST(Options, HeadlessCommandLine) {
-  const auto o = parse({"--headless", "--scene", "kifs", "--size", "320x180", "--frames", "4", "--time", "2.5",
-                        "--seed", "9", "--set", "step=3", "--out", "x.exr"});
-  EXPECT_EQ(o.mode, Mode::Headless);
-  EXPECT_EQ(o.size->width, 320u);
-  EXPECT_EQ(o.size->height, 180u);
-  EXPECT_EQ(o.frames, 4u);
-  EXPECT_DOUBLE_EQ(o.time, 2.5);
-  EXPECT_EQ(o.seed, 9u);
-  ASSERT_EQ(o.parameters.size(), 1u);
-  EXPECT_EQ(o.parameters[0].value, "3");
-}
-
-TEST(Options, BadInputIsAnError) {
-  EXPECT_THROW(parse({"--bogus"}), Error);
-  EXPECT_THROW(parse({"--size", "12by4"}), Error);
-  EXPECT_THROW(parse({"--size", "0x10"}), Error);
-  EXPECT_THROW(parse({"--frames", "-1"}), Error);
-  EXPECT_THROW(parse({"--headless", "--scene", "kifs"}), Error);  // no --out
-  EXPECT_THROW(parse({"--set", "novalue"}), Error);
-  EXPECT_THROW(parse({"--seed"}), Error);
 }
 
 }  // namespace

@@ -9,9 +9,9 @@
 namespace vitrine::host {
 namespace {
 
-constexpr VkExtent2D kOutput{1000, 500};
+constexpr VkExtent2D kProjectorOutput{1000, 500};
 
-Pointer at(glm::vec2 pixels, bool held, bool pressed = false) { return {pixels, kOutput, held, pressed, 0.0f, true}; }
+Pointer at(glm::vec2 pixels, bool held, bool pressed = false) { return {pixels, kProjectorOutput, held, pressed, 0.0f, true}; }
 
 TEST(ProjectorSetup, APressNearACornerTakesItAndDraggingMovesIt) {
   ProjectorSetup setup;
@@ -59,20 +59,20 @@ TEST(ProjectorSetup, AFoldIsNotTaken) {
 TEST(ProjectorSetup, ArrowsNudgeAndEnterKeepsAndEscapeUndoes) {
   ProjectorSetup setup;
   maths::OutputWarp warp;
-  EXPECT_EQ(setup.key(GLFW_KEY_LEFT, false, kOutput, warp), ProjectorSetup::Key::Ignored);  // not in setup
+  EXPECT_EQ(setup.key(GLFW_KEY_LEFT, false, kProjectorOutput, warp), ProjectorSetup::Key::Ignored);  // not in setup
   setup.start(warp);
-  EXPECT_EQ(setup.key(GLFW_KEY_TAB, false, kOutput, warp), ProjectorSetup::Key::Used);  // the top-right corner
-  setup.key(GLFW_KEY_LEFT, false, kOutput, warp);
-  setup.key(GLFW_KEY_DOWN, true, kOutput, warp);
+  EXPECT_EQ(setup.key(GLFW_KEY_TAB, false, kProjectorOutput, warp), ProjectorSetup::Key::Used);  // the top-right corner
+  setup.key(GLFW_KEY_LEFT, false, kProjectorOutput, warp);
+  setup.key(GLFW_KEY_DOWN, true, kProjectorOutput, warp);
   EXPECT_FLOAT_EQ(warp.corners[1].x, 0.999f);
   EXPECT_FLOAT_EQ(warp.corners[1].y, 0.02f);
   maths::OutputWarp kept = warp;
-  EXPECT_EQ(setup.key(GLFW_KEY_ENTER, false, kOutput, warp), ProjectorSetup::Key::Kept);
+  EXPECT_EQ(setup.key(GLFW_KEY_ENTER, false, kProjectorOutput, warp), ProjectorSetup::Key::Kept);
   EXPECT_FALSE(setup.active());
   EXPECT_EQ(warp, kept);
   setup.start(warp);
-  setup.key(GLFW_KEY_RIGHT, true, kOutput, warp);
-  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kOutput, warp), ProjectorSetup::Key::Undone);
+  setup.key(GLFW_KEY_RIGHT, true, kProjectorOutput, warp);
+  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kProjectorOutput, warp), ProjectorSetup::Key::Undone);
   EXPECT_EQ(warp, kept);
 }
 
@@ -82,13 +82,13 @@ TEST(ProjectorSetup, F7KeepsThisPinForTheNextOutput) {
   maths::OutputWarp main, second;
   second.mirror = true;
   setup.start(main);
-  setup.key(GLFW_KEY_RIGHT, false, kOutput, main);
+  setup.key(GLFW_KEY_RIGHT, false, kProjectorOutput, main);
   const maths::OutputWarp kept = main;
-  EXPECT_EQ(setup.key(GLFW_KEY_F7, false, kOutput, main), ProjectorSetup::Key::Next);
+  EXPECT_EQ(setup.key(GLFW_KEY_F7, false, kProjectorOutput, main), ProjectorSetup::Key::Next);
   EXPECT_FALSE(setup.active());
   setup.start(second);
-  setup.key(GLFW_KEY_DOWN, false, kOutput, second);
-  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kOutput, second), ProjectorSetup::Key::Undone);
+  setup.key(GLFW_KEY_DOWN, false, kProjectorOutput, second);
+  EXPECT_EQ(setup.key(GLFW_KEY_ESCAPE, false, kProjectorOutput, second), ProjectorSetup::Key::Undone);
   EXPECT_TRUE(second.mirror);
   EXPECT_EQ(second.corners[0], glm::vec2(0.0f));  // undone to its own start, not the main pin
   EXPECT_EQ(main, kept);

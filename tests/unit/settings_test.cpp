@@ -2,6 +2,7 @@
 // files that must neither crash the gallery nor lose the user's file.
 #include "core/error.h"
 #include "params/settings_file.h"
+#include "support/files.h"
 
 #include <gtest/gtest.h>
 
@@ -59,13 +60,6 @@ const Schema* schemaFor(std::string_view scene) {
   return nullptr;
 }
 
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 void writeAll(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
@@ -105,7 +99,7 @@ class SettingsFile : public ::testing::Test {
     const auto aside = asideFiles();
     ASSERT_EQ(aside.size(), 1u) << why;
     EXPECT_NE(result.warnings[0].find(aside[0].string()), std::string::npos) << result.warnings[0];
-    EXPECT_EQ(readAll(aside[0]), text) << why;  // kept, byte for byte
+    EXPECT_EQ(test::readFile(aside[0]), text) << why;  // kept, byte for byte
     fs::remove(aside[0]);
   }
 
@@ -131,7 +125,7 @@ TEST_F(SettingsFile, RoundTripKeepsValuesAndLeavesTransientOut) {
   saveSettings(dir_ / "sub" / "settings.json", settings, schemaFor);  // creates the folder
   path_ = dir_ / "sub" / "settings.json";
 
-  const std::string text = readAll(path_);
+  const std::string text = test::readFile(path_);
   EXPECT_EQ(text.find("drag"), std::string::npos) << text;
   // Typed JSON: numbers, booleans and strings by kind.
   const auto json = nlohmann::json::parse(text);
@@ -170,16 +164,16 @@ TEST_F(SettingsFile, UnknownKeysAndScenesSurviveASave) {
 
   result.settings.scenes["kifs"] = {{"step", "6"}};
   saveSettings(path_, result.settings, schemaFor);
-  const auto json = nlohmann::json::parse(readAll(path_));
+  const auto json = nlohmann::json::parse(test::readFile(path_));
   EXPECT_EQ(json["window"], nlohmann::json::parse(R"({"w": 1280, "h": 720})"));
   EXPECT_EQ(json["scenes"]["glass"], nlohmann::json::parse(R"({"ior": 1.5, "deep": [1, [2, {"x": null}]]})"));
   EXPECT_EQ(json["scenes"]["kifs"]["future_knob"], "x");
   EXPECT_EQ(json["scenes"]["kifs"]["step"], 6);
   EXPECT_EQ(json["scenes"]["plain"]["old"], 1);
   // And again: a second load/save cycle changes nothing.
-  const std::string first = readAll(path_);
+  const std::string first = test::readFile(path_);
   saveSettings(path_, load().settings, schemaFor);
-  EXPECT_EQ(readAll(path_), first);
+  EXPECT_EQ(test::readFile(path_), first);
 }
 
 TEST_F(SettingsFile, BadValuesAreDroppedWithOneWarningEach) {
@@ -300,7 +294,7 @@ TEST_F(SettingsFile, ASymlinkedFileStaysALink) {
   saveSettings(dir_ / "second-link.json", settings, schemaFor);
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "second-link.json")));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(path_)));
-  EXPECT_EQ(nlohmann::json::parse(readAll(real))["scenes"]["kifs"]["step"], 5);
+  EXPECT_EQ(nlohmann::json::parse(test::readFile(real))["scenes"]["kifs"]["step"], 5);
   EXPECT_EQ(resolveLinks(dir_ / "second-link.json"), dir_ / "dotfiles" / "vitrine.json");
   // A dangling link: the save creates the file it names.
   fs::remove(real);
@@ -369,7 +363,7 @@ TEST_F(SettingsFile, TwoBadFilesInOneSecondBothKept) {
   const auto aside = asideFiles();
   ASSERT_EQ(aside.size(), 2u);
   std::set<std::string> contents;
-  for (const auto& path : aside) contents.insert(readAll(path));
+  for (const auto& path : aside) contents.insert(test::readFile(path));
   EXPECT_EQ(contents, (std::set<std::string>{"garbage one", "garbage two"}));
 }
 
