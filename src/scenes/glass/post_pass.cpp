@@ -5,10 +5,12 @@
 
 namespace vitrine::glass {
 
-void PostPass::record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings, VkExtent2D extent) {
+void PostPass::record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings,
+                      VkExtent2D extent) const {
   const uint32_t options = (settings.aa == Antialiasing::Fxaa ? GLASS_POST_FXAA : 0u) |
                            (settings.optics == Optics::Physical ? GLASS_POST_FILMIC : 0u);
-  sampleInto(frame, byOptions_({int32_t(options)}), {"accumulated", "target"}, accumulated, frame.target, frame.target.view(), extent);
+  sampleInto(frame, byOptions_({int32_t(options)}), {"accumulated", "target"}, accumulated, frame.target,
+             frame.target.view(), extent);
 }
 
 }  // namespace vitrine::glass

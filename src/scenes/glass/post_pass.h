@@ -10,7 +10,7 @@ namespace vitrine::glass {
 class PostPass {
  public:
   explicit PostPass(gpu::ProgramLibrary& programs) : byOptions_(programs, "glass/post.comp") {}
-  void record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings, VkExtent2D extent);
+  void record(const FrameContext& frame, gpu::Image& accumulated, const Settings& settings, VkExtent2D extent) const;
 
  private:
   // post.comp specialised on its options, FXAA and the filmic curve (pass_push.h: GLASS_POST_*).

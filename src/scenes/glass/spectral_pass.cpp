@@ -21,7 +21,7 @@ SpectralShadePass::SpectralShadePass(gpu::ProgramLibrary& programs)
     : compute_(programs, "glass/spectral.comp"), raster_(programs, proxyState()) {}
 
 void SpectralShadePass::record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
-                               const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent) {
+                               const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent) const {
   const bool compute = path == SpectralPass::Compute;
   const gpu::ImageUse sampled = compute ? gpu::use::ComputeSample : gpu::use::FragmentSample;
   frame.transition(sources.backdrop, sampled);

@@ -30,7 +30,7 @@ class SpectralShadePass {
  public:
   explicit SpectralShadePass(gpu::ProgramLibrary& programs);
   void record(const FrameContext& frame, const FrameSources& sources, const ScreenImages& images,
-              const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent);
+              const DiamondBuffers& diamond, SpectralPass path, ShadeVariant variant, VkExtent2D extent) const;
 
  private:
   // Both paths' shaders specialised on the variant (instance.glsl's GLASS_SHAPE, shade.glsl's

@@ -1,6 +1,5 @@
 #include "scenes/noodles/shade_pass.h"
 
-#include "scenes/noodles/raster_pass.h"
 #include "shaders/noodles/raster_blocks.h"
 
 namespace vitrine::noodles {
