@@ -23,6 +23,9 @@ const int WALK_EXHAUSTED = 2;
 const int WALK_MISSED = 3;
 
 const float DIAMOND_FAR = 1e30;
+const float DIAMOND_EDGE_MARGIN = 1e-5;  // kEdgeMargin: of the radius
+const int ROUTE_LEGS = 8;              // kRouteLegs
+const uvec2 NO_ROUTE = uvec2(0xffffffffu);
 
 layout(std430, set = 0, binding = DIAMOND_BINDING) readonly buffer DiamondPlanes { GlassDiamond diamond; };
 
@@ -144,6 +147,46 @@ bool diamondExit(vec3 p, vec3 d, out float t, out vec3 n, out int facet) {
   return true;
 }
 
+// Whether the ray from p inside leaves through plane `facet`, tested against the facet's edge neighbours
+// alone, and only where the exit lies inside the facet by a margin (diamond.h says why).
+bool diamondExitThrough(vec3 p, vec3 d, int facet, out float t, out vec3 n) {
+  const vec4 plane = diamond.planes[facet];
+  n = plane.xyz;
+  t = 0.0;
+  const float along = dot(plane.xyz, d);
+  if (along <= 1e-8) return false;
+  t = max((plane.w - dot(plane.xyz, p)) / along, 0.0);
+  const vec3 hit = p + t * d;
+  const float margin = DIAMOND_EDGE_MARGIN * diamond.girdleRadius;
+  uvec2 bounds = diamond.edgeNeighbours[facet];
+  const uint girdleBit = 1u << (GIRDLE_FACET - 32);
+  if ((bounds.y & girdleBit) != 0u && length(hit.xy) > diamond.girdleRadius - margin) return false;
+  bounds.y &= ~girdleBit;
+  for (int word = 0; word < 2; ++word) {
+    uint bits = word == 0 ? bounds.x : bounds.y;
+    while (bits != 0u) {
+      const int j = findLSB(bits) + 32 * word;
+      bits &= bits - 1u;
+      if (dot(diamond.planes[j].xyz, hit) - diamond.planes[j].w > -margin) return false;
+    }
+  }
+  return true;
+}
+
+// The facet a route (DiamondWalk.route) names for a leg, -1 for none; and the route with it set.
+int routeFacet(uvec2 route, int leg) {
+  if (leg >= ROUTE_LEGS) return -1;
+  const uint facet = ((leg < 4 ? route.x : route.y) >> (8 * (leg & 3))) & 0xffu;
+  return facet == 0xffu ? -1 : int(facet);
+}
+
+uvec2 withRouteFacet(uvec2 route, int leg, int facet) {
+  if (leg >= ROUTE_LEGS) return route;
+  const int shift = 8 * (leg & 3);
+  const uint keep = ~(0xffu << shift), put = (uint(facet) & 0xffu) << shift;
+  return leg < 4 ? uvec2((route.x & keep) | put, route.y) : uvec2(route.x, (route.y & keep) | put);
+}
+
 // Light inside the stone, from the front refraction on.
 struct DiamondWalk {
   vec3 p;            // where the ray is (on a facet after the first step)
@@ -153,10 +196,11 @@ struct DiamondWalk {
   int bounces;       // internal reflections so far
   int status;        // WALK_*
   int maxBounces;    // internal reflections allowed (1-32)
+  uvec2 route;       // in: the facets to try first, leg by leg (the previous wavelength's); out: this walk's
 };
 
-DiamondWalk diamondWalkStart(vec3 p, vec3 d, float throughput, int maxBounces) {
-  return DiamondWalk(p, d, throughput, -1, 0, WALK_WALKING, maxBounces);
+DiamondWalk diamondWalkStart(vec3 p, vec3 d, float throughput, int maxBounces, uvec2 route) {
+  return DiamondWalk(p, d, throughput, -1, 0, WALK_WALKING, maxBounces, route);
 }
 
 // One leg: the next exit, and the split of the light there (eta = n_diamond / n_air at this wavelength).
@@ -170,13 +214,16 @@ bool diamondStep(inout DiamondWalk w, float eta, bool physical, out vec3 exitDir
   if (w.status != WALK_WALKING) return false;
   float t;
   vec3 n;
-  int facet;
-  if (!diamondExit(w.p, w.d, t, n, facet)) {
+  // The last wavelength's facet for this leg first: tried on its few neighbours, it saves searching all 57.
+  int facet = routeFacet(w.route, w.bounces);
+  const bool followed = facet >= 0 && facet < DIAMOND_PLANES && diamondExitThrough(w.p, w.d, facet, t, n);
+  if (!followed && !diamondExit(w.p, w.d, t, n, facet)) {
     w.status = WALK_MISSED;
     return false;
   }
   w.p += t * w.d;
   w.facet = facet;
+  w.route = withRouteFacet(w.route, w.bounces, facet);
   // From inside to air: the normal facing the ray is -n, the index ratio 1 / eta.
   bool refracts;
   vec3 refracted = refractDir(w.d, -n, 1.0 / eta, refracts);

@@ -13,6 +13,9 @@ VITRINE_SHARED_BEGIN
 // girdle cylinder.
 struct GlassDiamond {
   vec4 planes[GLASS_DIAMOND_PLANES];  // a facet's plane n·p = d: xyz the unit outward normal n, w the offset d
+  // A facet's edge neighbours as a 64-bit mask (x the low word): bit j plane j, bit 57 the girdle
+  // (DiamondGeometry::edgeNeighbours).
+  uvec2 edgeNeighbours[GLASS_DIAMOND_PLANES];
   float girdleRadius;                 // the cylinder's radius: half the diameter
   float girdleHalfHeight;             // the girdle band spans z in [-this, +this]
   float tableHeight;                  // z of the table

@@ -1,5 +1,5 @@
 #version 460
-// Runs the diamond's back exit and first walk step, and every shape's distance, on given probes, so a test can
+// Runs the diamond's back exit (searched, and tested on a given facet) and first walk step, and every shape's distance, on given probes, so a test can
 // hold the GLSL (glass/diamond.glsl, glass/shapes.glsl) to its C++ mirror.
 #extension GL_GOOGLE_include_directive : require
 #define DIAMOND_BINDING 0
@@ -22,10 +22,13 @@ void main() {
   GlassDiamondProbeResult r;
   bool found = diamondExit(probe.origin, probe.direction, r.t, r.normal, r.facet);
   r.found = found ? 1u : 0u;
-  DiamondWalk walk = diamondWalkStart(probe.origin, probe.direction, 1.0, 6);
+  float t;
+  vec3 n;
+  r.followed = found && r.facet < DIAMOND_PLANES && diamondExitThrough(probe.origin, probe.direction, r.facet, t, n) ? 1u : 0u;
+  if (found && diamondExitThrough(probe.origin, probe.direction, (r.facet + 1) % DIAMOND_PLANES, t, n)) r.followed |= 2u;
+  DiamondWalk walk = diamondWalkStart(probe.origin, probe.direction, 1.0, 6, NO_ROUTE);
   diamondStep(walk, PROBE_ETA, true, r.exitDir, r.exitWeight);
   for (int k = 0; k < 8; ++k) r.distances[k] = k < shapes.length() ? shapeSdf(shapes[k], probe.point) : 0.0;
-  r.pad0 = 0.0;
   r.pad1 = 0.0;
   results[i] = r;
 }

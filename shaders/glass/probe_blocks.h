@@ -51,7 +51,7 @@ struct GlassDiamondProbeResult {
   int facet;
   uint found;        // 1: diamondExit found an exit
   float exitWeight;  // the first physical walk step's
-  float pad0;
+  uint followed;     // diamondExitThrough's answer: bit 0 for the exit's own facet, bit 1 for the next plane
   vec3 exitDir;      // its exit direction
   float pad1;
   float distances[8];  // shapeSdf of each probe shape at the point (0 past the shapes given)

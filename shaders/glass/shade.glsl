@@ -117,6 +117,9 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
   bool reuseExit = false;
   const float onSurface = 1e-3 * shapeScale(dims);
 
+  // The diamond's wavelengths mostly leave by the same facets: each walk tries the last one's route first.
+  uvec2 route = NO_ROUTE;
+
   vec3 sum = vec3(0.0), weights = vec3(0.0);
   bool exhausted = false, missed = false;
   for (int i = 0; i < n; ++i) {
@@ -129,7 +132,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
     vec3 transmitted = reflection;  // a ray that cannot enter (never for eta > 1) shows the reflection
 
     if (ok && GLASS_SHAPE == SHAPE_DIAMOND && !approx) {
-      DiamondWalk walk = diamondWalkStart(p1, inside, 1.0, F.bounces);
+      DiamondWalk walk = diamondWalkStart(p1, inside, 1.0, F.bounces, route);
       vec3 exitDir;
       float exitWeight;
       vec3 light = vec3(0.0);
@@ -138,6 +141,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
         light += exitWeight * sceneAlong(centre + toWorld * walk.p, seen(rayDir, toWorld * exitDir), 0.0);
         emitted += exitWeight;
       }
+      route = walk.route;
       exhausted = exhausted || walk.status == WALK_EXHAUSTED;
       missed = missed || walk.status == WALK_MISSED;
       // Light still trapped when the budget runs out: the seed shows the silhouette's background (or

@@ -1,5 +1,6 @@
 // The GLSL shapes and diamond (shaders/glass/shapes.glsl, diamond.glsl) agree with their C++ mirrors
-// (src/scenes/glass/shapes.h, diamond.h): the diamond's back exit and first walk step, and every shape's distance.
+// (src/scenes/glass/shapes.h, diamond.h): the diamond's back exit, searched and tried on one facet, its first walk
+// step, and every shape's distance.
 #include "gpu/barriers.h"
 #include "gpu/program.h"
 #include "gpu/resources.h"
@@ -95,6 +96,9 @@ TEST_F(GlassDiamondProbe, ShaderMatchesTheCppReference) {
     if (glass::diamondEdgeDistance(stone, origin + t * direction) < 1e-3f * kDiameter) continue;
     ++facetsCompared;
     ASSERT_EQ(r.facet, facet) << "probe " << i;
+    // Tried on a facet alone, the exit is accepted on its own facet (the girdle is never tried) and on no other.
+    EXPECT_EQ(r.followed & 1u, facet == glass::kGirdleFacet ? 0u : 1u) << "probe " << i;
+    EXPECT_EQ(r.followed & 2u, 0u) << "probe " << i;
     ASSERT_NEAR(glm::distance(r.normal, n), 0.0f, 1e-5f) << "probe " << i;
     glass::DiamondWalk walk = glass::diamondWalkStart(origin, direction, 1.0f, 6);
     glm::vec3 exitDir;

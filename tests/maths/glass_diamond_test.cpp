@@ -10,6 +10,7 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -310,6 +311,73 @@ TEST(Diamond, TheShaderBlockHoldsThePlanesAndTheGirdle) {
   EXPECT_EQ(block.culetDepth, stone().culetDepth);
 }
 
+// A facet's edge neighbours hold the facets its corners say it shares an edge with (two corners in common),
+// and the girdle where a corner lies on the cylinder: the clipped polygons and the constructed corners agree.
+TEST(Diamond, EdgeNeighboursAreTheFacetsSharingTwoCorners) {
+  const DiamondGeometry& g = stone();
+  auto shared = [&](int a, int b) {
+    int common = 0;
+    for (const glm::vec3& p : diamondFacetCorners(g, a))
+      for (const glm::vec3& q : diamondFacetCorners(g, b)) common += glm::distance(p, q) < kLength ? 1 : 0;
+    return common;
+  };
+  auto onGirdle = [&](int facet) {
+    bool touches = false;
+    for (const glm::vec3& p : diamondFacetCorners(g, facet))
+      touches = touches || std::fabs(glm::length(glm::vec2(p)) - g.girdleRadius) < kLength;
+    return touches;
+  };
+  const uint64_t girdle = uint64_t{1} << kGirdleFacet;
+  for (int i = 0; i < kDiamondPlanes; ++i) {
+    uint64_t expected = 0;
+    for (int j = 0; j < kDiamondPlanes; ++j)
+      if (j != i && shared(i, j) >= 2) expected |= uint64_t{1} << j;
+    // Clipped without the cylinder, two facets that reach the girdle may also meet beyond it, outside the
+    // stone: one test too many, never one too few.
+    const uint64_t found = g.edgeNeighbours[i] & ~girdle;
+    EXPECT_EQ(found & expected, expected) << g.names[i];
+    for (int j = 0; j < kDiamondPlanes; ++j)
+      if ((found & ~expected) >> j & 1u) {
+        EXPECT_TRUE(onGirdle(i) && onGirdle(j)) << g.names[i] << ", " << g.names[j];
+      }
+    // Bezels and pavilion mains meet the girdle at one corner only: for them the bit is allowed, not asked.
+    if (onGirdle(i) && g.kinds[i] != FacetKind::Bezel && g.kinds[i] != FacetKind::PavilionMain) {
+      EXPECT_NE(g.edgeNeighbours[i] & girdle, 0u) << g.names[i];
+    }
+    if (!onGirdle(i)) {
+      EXPECT_EQ(g.edgeNeighbours[i] & girdle, 0u) << g.names[i];
+    }
+  }
+  EXPECT_EQ(std::popcount(g.edgeNeighbours[0]), 8);  // the table: the eight stars
+  const shader::GlassDiamond block = diamondBlock(g);
+  for (int i = 0; i < kDiamondPlanes; ++i)
+    EXPECT_EQ(block.edgeNeighbours[i], glm::uvec2(uint32_t(g.edgeNeighbours[i]), uint32_t(g.edgeNeighbours[i] >> 32)));
+}
+
+// Tried on one facet, the exit is accepted on the facet diamondExit finds, at its distance, and on no other.
+TEST(DiamondRays, AnExitTriedOnOneFacetIsAcceptedOnlyWhereItIs) {
+  uint32_t seed = 0;
+  int accepted = 0, tried = 0;
+  for (uint32_t i = 0; i < 4000; ++i, ++seed) {
+    const glm::vec3 p = randomInside(seed), d = randomDirection(i, 67u);
+    float t, tried_t;
+    glm::vec3 n, triedNormal;
+    int facet;
+    ASSERT_TRUE(diamondExit(stone(), p, d, t, n, facet));
+    for (int other = 0; other < kDiamondPlanes; ++other) {
+      if (other == facet || !diamondExitThrough(stone(), p, d, other, tried_t, triedNormal)) continue;
+      ADD_FAILURE() << "ray " << i << " accepted on facet " << other << ", leaves by " << facet;
+    }
+    if (facet == kGirdleFacet) continue;
+    ++tried;
+    if (!diamondExitThrough(stone(), p, d, facet, tried_t, triedNormal)) continue;
+    ++accepted;
+    ASSERT_EQ(tried_t, t);
+    ASSERT_EQ(triedNormal, n);
+  }
+  EXPECT_GT(accepted, tried * 99 / 100);  // only a margin of 1e-5 of the radius round each edge falls back
+}
+
 // --- The proxy hull.
 
 float stoneVolume(const DiamondGeometry& g) {
@@ -472,7 +540,7 @@ TEST(DiamondRays, EnterMissesRaysBesideOrFromInside) {
 // --- The interior walk.
 
 // Light from a random direction outside, refracted in through the front facet.
-DiamondWalk enteringWalk(uint32_t i, int maxBounces, bool physical) {
+DiamondWalk enteringWalk(uint32_t i, int maxBounces, bool physical, float eta = kEta) {
   uint32_t seed = i * 7u;
   const glm::vec3 target = randomInside(seed);
   const glm::vec3 ro = randomDirection(i, 71u) * (1.5f * kDiameter);
@@ -481,8 +549,8 @@ DiamondWalk enteringWalk(uint32_t i, int maxBounces, bool physical) {
   glm::vec3 n;
   int facet;
   if (!diamondEnter(stone(), ro, rd, t, n, facet)) ADD_FAILURE() << "ray " << i << " missed the stone";
-  const glm::vec3 d = *refractDir(rd, n, kEta);  // air to diamond never totally reflects
-  const float entering = physical ? 1.0f - fresnelDielectric(-glm::dot(rd, n), kEta) : 1.0f;
+  const glm::vec3 d = *refractDir(rd, n, eta);  // air to diamond never totally reflects
+  const float entering = physical ? 1.0f - fresnelDielectric(-glm::dot(rd, n), eta) : 1.0f;
   DiamondWalk w = diamondWalkStart(ro + t * rd, d, entering, maxBounces);
   w.facet = facet;
   return w;
@@ -566,6 +634,40 @@ INSTANTIATE_TEST_SUITE_P(Budgets, Walk,
                            return std::string(test.param.physical ? "Physical" : "Seed") +
                                   std::to_string(test.param.maxBounces);
                          });
+
+// Following the previous wavelength's route gives each leg the exit searching all 57 planes would.
+TEST(DiamondWalk, FollowingTheLastWavelengthsRouteChangesNoLeg) {
+  int legs = 0, followed = 0;
+  for (uint32_t i = 0; i < 500; ++i) {
+    glm::uvec2 route = kNoRoute;
+    for (int k = 0; k < 16; ++k) {
+      const float eta = cauchyIor(400.0f + 20.0f * float(k), kEta, 55.0f);
+      DiamondWalk w = enteringWalk(i, 6, true, eta);
+      w.route = route;
+      for (;;) {
+        const int leg = w.bounces, expected = routeFacet(w.route, leg);
+        float t;
+        glm::vec3 n, exitDir;
+        int facet;
+        float exitWeight;
+        const bool exits = diamondExit(stone(), w.p, w.d, t, n, facet);
+        const glm::vec3 searchedPoint = w.p + t * w.d;
+        const bool more = diamondStep(stone(), w, eta, true, exitDir, exitWeight);
+        ASSERT_EQ(w.status == kWalkMissed, !exits);
+        if (!exits) break;
+        ++legs;
+        followed += expected == w.facet ? 1 : 0;
+        ASSERT_EQ(w.facet, facet) << "ray " << i << " wavelength " << k << " leg " << leg;
+        ASSERT_LT(glm::distance(w.p, searchedPoint), kLength) << "ray " << i << " wavelength " << k << " leg " << leg;
+        ASSERT_EQ(routeFacet(w.route, leg), leg < kRouteLegs ? facet : -1);
+        if (!more) break;
+      }
+      route = w.route;
+    }
+  }
+  EXPECT_GT(followed, legs * 3 / 4);  // most legs leave where the last wavelength's did
+  std::cout << followed << " of " << legs << " legs left by the last wavelength's facet\n";
+}
 
 TEST(DiamondWalk, CriticalAngleOfDiamond) {
   EXPECT_NEAR(glm::degrees(std::asin(1.0f / kEta)), 24.44f, 0.01f);

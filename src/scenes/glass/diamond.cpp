@@ -46,6 +46,53 @@ glm::vec4 mirrored(glm::vec4 plane, float azimuth) {
 int next(int k) { return (k + 1) % 8; }
 int previous(int k) { return (k + 7) % 8; }
 
+// The planes (and the girdle) that bound each facet along an edge. Facet i's polygon is found by cutting a
+// square on its plane, far wider than the stone, by every other plane in turn, each corner remembering the
+// plane its next edge lies on; an edge shorter than a hair is a corner the facet shares, not an edge. Without
+// the girdle the crown and pavilion planes still close the stone, so where the polygon reaches past the
+// cylinder (or keeps a side of the square) the girdle bounds the facet too. A plane the cylinder makes
+// redundant may stay in the set: one plane too many costs a test, one too few would accept a wrong exit.
+std::array<uint64_t, kDiamondPlanes> edgeNeighbours(const std::array<glm::vec4, kDiamondPlanes>& planes,
+                                                     float girdleRadius) {
+  struct Corner {
+    glm::vec3 p;
+    int edge;  // the plane the edge from here to the next corner lies on; -1 the square's side
+  };
+  const uint64_t girdle = uint64_t{1} << kGirdleFacet;
+  std::array<uint64_t, kDiamondPlanes> bounds{};
+  for (int i = 0; i < kDiamondPlanes; ++i) {
+    const glm::vec3 n(planes[i]);
+    const glm::vec3 u = glm::normalize(glm::cross(n, std::fabs(n.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
+    const glm::vec3 v = glm::cross(n, u), centre = n * planes[i].w;
+    const float side = 8.0f * girdleRadius;
+    std::vector<Corner> polygon = {{centre - side * u - side * v, -1}, {centre + side * u - side * v, -1},
+                                   {centre + side * u + side * v, -1}, {centre - side * u + side * v, -1}};
+    for (int j = 0; j < kDiamondPlanes; ++j) {
+      if (j == i) continue;
+      const glm::vec3 m(planes[j]);
+      std::vector<Corner> kept;
+      for (size_t k = 0; k < polygon.size(); ++k) {
+        const Corner& a = polygon[k];
+        const Corner& b = polygon[(k + 1) % polygon.size()];
+        const float da = glm::dot(m, a.p) - planes[j].w, db = glm::dot(m, b.p) - planes[j].w;
+        const auto crossing = [&] { return a.p + (b.p - a.p) * (da / (da - db)); };
+        if (da <= 0.0f) kept.push_back(a);
+        if (da <= 0.0f && db > 0.0f) kept.push_back({crossing(), j});  // leaves: plane j's edge starts here
+        if (da > 0.0f && db <= 0.0f) kept.push_back({crossing(), a.edge});  // comes back along a's edge
+      }
+      polygon = std::move(kept);
+    }
+    const float hair = 1e-4f * girdleRadius;
+    for (size_t k = 0; k < polygon.size(); ++k) {
+      const Corner& a = polygon[k];
+      if (glm::length(glm::vec2(a.p)) > girdleRadius * (1.0f - kEdgeMargin)) bounds[i] |= girdle;
+      if (glm::distance(a.p, polygon[(k + 1) % polygon.size()].p) < hair) continue;
+      bounds[i] |= a.edge < 0 ? girdle : uint64_t{1} << a.edge;
+    }
+  }
+  return bounds;
+}
+
 }  // namespace
 
 DiamondGeometry makeDiamond(float diameter) {
@@ -115,6 +162,7 @@ DiamondGeometry makeDiamond(float diameter) {
     const glm::vec3 onAxis = polar(r, star, 0.0f);
     v.girdleTopStar[k] = {onAxis.x, onAxis.y, (upper.w - upper.x * onAxis.x - upper.y * onAxis.y) / upper.z};
   }
+  g.edgeNeighbours = edgeNeighbours(g.planes, r);
   return g;
 }
 
@@ -153,8 +201,13 @@ std::vector<glm::vec3> diamondFacetCorners(const DiamondGeometry& g, int facet) 
 }
 
 shader::GlassDiamond diamondBlock(const DiamondGeometry& g) {
-  shader::GlassDiamond block{{}, g.girdleRadius, g.girdleHalfHeight, g.tableHeight, g.culetDepth};
+  shader::GlassDiamond block{.girdleRadius = g.girdleRadius,
+                             .girdleHalfHeight = g.girdleHalfHeight,
+                             .tableHeight = g.tableHeight,
+                             .culetDepth = g.culetDepth};
   std::copy(g.planes.begin(), g.planes.end(), block.planes);
+  for (int i = 0; i < kDiamondPlanes; ++i)
+    block.edgeNeighbours[i] = {uint32_t(g.edgeNeighbours[i]), uint32_t(g.edgeNeighbours[i] >> 32)};
   return block;
 }
 
@@ -303,9 +356,37 @@ bool diamondExit(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, float& t, g
   return true;
 }
 
-DiamondWalk diamondWalkStart(glm::vec3 p, glm::vec3 d, float throughput, int maxBounces) {
+bool diamondExitThrough(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, int facet, float& t, glm::vec3& n) {
+  const glm::vec3 normal(g.planes[facet]);
+  const float along = glm::dot(normal, d);
+  if (along <= 1e-8f) return false;
+  t = std::max((g.planes[facet].w - glm::dot(normal, p)) / along, 0.0f);
+  const glm::vec3 hit = p + t * d;
+  const float margin = kEdgeMargin * g.girdleRadius;
+  const uint64_t bounds = g.edgeNeighbours[facet];
+  if ((bounds >> kGirdleFacet & 1u) != 0u && glm::length(glm::vec2(hit)) > g.girdleRadius - margin) return false;
+  for (int j = 0; j < kDiamondPlanes; ++j)
+    if ((bounds >> j & 1u) != 0u && glm::dot(glm::vec3(g.planes[j]), hit) - g.planes[j].w > -margin) return false;
+  n = normal;
+  return true;
+}
+
+int routeFacet(glm::uvec2 route, int leg) {
+  if (leg >= kRouteLegs) return -1;
+  const uint32_t facet = (route[leg / 4] >> (8 * (leg % 4))) & 0xffu;
+  return facet == 0xffu ? -1 : int(facet);
+}
+
+glm::uvec2 withRouteFacet(glm::uvec2 route, int leg, int facet) {
+  if (leg >= kRouteLegs) return route;
+  const uint32_t shift = 8 * (leg % 4);
+  route[leg / 4] = (route[leg / 4] & ~(0xffu << shift)) | (uint32_t(facet) & 0xffu) << shift;
+  return route;
+}
+
+DiamondWalk diamondWalkStart(glm::vec3 p, glm::vec3 d, float throughput, int maxBounces, glm::uvec2 route) {
   DiamondWalk w;
-  w.p = p, w.d = d, w.throughput = throughput, w.maxBounces = maxBounces;
+  w.p = p, w.d = d, w.throughput = throughput, w.maxBounces = maxBounces, w.route = route;
   return w;
 }
 
@@ -315,13 +396,16 @@ bool diamondStep(const DiamondGeometry& g, DiamondWalk& w, float eta, bool physi
   if (w.status != kWalking) return false;
   float t;
   glm::vec3 n;
-  int facet;
-  if (!diamondExit(g, w.p, w.d, t, n, facet)) {
+  // The last wavelength's facet for this leg first: tried on its few neighbours, it saves searching all 57.
+  int facet = routeFacet(w.route, w.bounces);
+  const bool followed = facet >= 0 && facet < kDiamondPlanes && diamondExitThrough(g, w.p, w.d, facet, t, n);
+  if (!followed && !diamondExit(g, w.p, w.d, t, n, facet)) {
     w.status = kWalkMissed;
     return false;
   }
   w.p += t * w.d;
   w.facet = facet;
+  w.route = withRouteFacet(w.route, w.bounces, facet);
   // From inside to air: the surface normal facing the ray is -n, and the index ratio is 1 / eta.
   const std::optional<glm::vec3> out = refractDir(w.d, -n, 1.0f / eta);
   const glm::vec3 reflected = reflectDir(w.d, n);

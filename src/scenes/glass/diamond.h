@@ -9,10 +9,12 @@
 // 41-56 lower girdle halves; kGirdleFacet (57) is the girdle cylinder, which is no plane.
 #include "shaders/glass/diamond_blocks.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -54,6 +56,9 @@ struct DiamondGeometry {
   float tableHeight = 0.0f;       // z of the table plane
   float culetDepth = 0.0f;        // the culet is at z = -culetDepth
   std::array<glm::vec4, kDiamondPlanes> planes{};  // xyz: unit outward normal n, w: offset d (n·p = d on the facet)
+  // Bit j of facet i: plane j bounds facet i along an edge (bit kGirdleFacet: the girdle does), so a point of
+  // plane i inside these alone is on the facet. diamondExitThrough tests a guessed exit with them.
+  std::array<uint64_t, kDiamondPlanes> edgeNeighbours{};
   std::array<FacetKind, kDiamondPlanes> kinds{};
   std::array<std::string, kDiamondPlanes> names;
   DiamondVertices vertices;
@@ -88,9 +93,23 @@ float diamondEdgeDistance(const DiamondGeometry& g, glm::vec3 p);
 bool diamondEnter(const DiamondGeometry& g, glm::vec3 ro, glm::vec3 rd, float& t, glm::vec3& n, int& facet);
 // Back exit from a point inside: the nearest plane (or girdle) the ray leaves through; n is the outward normal.
 bool diamondExit(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, float& t, glm::vec3& n, int& facet);
+// Whether the ray from p inside leaves through `facet` (a plane, not the girdle), tested against that facet's
+// edge neighbours alone: a few planes instead of all 57. True only where the exit point lies inside the facet
+// by more than kEdgeMargin of the radius, so near an edge, where rounding could pick either facet, the caller
+// falls back to diamondExit. On true, t and n are diamondExit's.
+inline constexpr float kEdgeMargin = 1e-5f;
+bool diamondExitThrough(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, int facet, float& t, glm::vec3& n);
 
 // --- The interior walk: light that entered the stone, bouncing off facets until it leaves or the budget ends.
 enum DiamondWalkStatus : int { kWalking = 0, kWalkDone = 1, kWalkExhausted = 2, kWalkMissed = 3 };
+
+// The facets a walk left through, leg by leg, a byte each for its first kRouteLegs legs (0xff: none). The
+// wavelengths of one pixel mostly take the same route through the stone, so each walk first tries the
+// previous wavelength's facet for a leg (diamondExitThrough) and searches all 57 only where that fails.
+inline constexpr int kRouteLegs = 8;
+inline constexpr glm::uvec2 kNoRoute{0xffffffffu, 0xffffffffu};
+int routeFacet(glm::uvec2 route, int leg);  // -1: no facet known for this leg
+glm::uvec2 withRouteFacet(glm::uvec2 route, int leg, int facet);
 
 struct DiamondWalk {
   glm::vec3 p{};            // where the ray is (on a facet after the first step)
@@ -100,9 +119,10 @@ struct DiamondWalk {
   int bounces = 0;          // internal reflections so far
   int status = kWalking;
   int maxBounces = 6;       // internal reflections allowed (the UI's 1-32)
+  glm::uvec2 route = kNoRoute;  // in: the facets to try first; out: the facets this walk left through
 };
 
-DiamondWalk diamondWalkStart(glm::vec3 p, glm::vec3 d, float throughput, int maxBounces);
+DiamondWalk diamondWalkStart(glm::vec3 p, glm::vec3 d, float throughput, int maxBounces, glm::uvec2 route = kNoRoute);
 
 // One leg of the walk: finds the next exit and splits the light there. eta = n_diamond / n_air at this
 // wavelength. Seed mode (physical = false): leaves whole if it can refract out, else reflects whole (TIR).
