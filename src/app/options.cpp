@@ -133,6 +133,7 @@ constexpr FlagRule kFlagRules[] = {
     {"--time", kHeadless | kBench | kRecord},
     {"--out", kHeadless | kRecord | kEncode},
     {"--json", kBench},
+    {"--pipeline-stats", kBench},
     {"--warmup", kBench},
     {"--fullscreen", kGallery},
     {"--no-vsync", kGallery},
@@ -240,7 +241,7 @@ const char* usage() {
   vitrine encode FOLDER --out FILM.mp4|FILM.mov|FILM.mkv [--codec ...] [--crf N | --bitrate N[k|M]] [--pix-fmt ...]
           [--full-range]
   vitrine bench --scene NAME|all [--size WxH] [--frames N] [--warmup N] [--set [SCENE.]KEY=VALUE]...
-          [--preset [SCENE.]NAME]... --json FILE
+          [--preset [SCENE.]NAME]... [--pipeline-stats] --json FILE
   vitrine compare [--fail-fraction F] [--hard-limit H] [--lowpass N] REFERENCE.exr CANDIDATE.exr
   vitrine --list-params [SCENE]
   vitrine --export-preset [SCENE.]NAME --out FILE.json
@@ -353,6 +354,7 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--scene") options.scene = value(arg);
     else if (arg == "--device") options.device = value(arg);
     else if (arg == "--validate") options.validation = true;
+    else if (arg == "--pipeline-stats") options.pipelineStats = true;
     else if (arg == "--reduced-motion") options.reducedMotion = true;
     else if (arg == "--monitor") options.monitor = value(arg);
     else if (arg == "--output-warp") options.outputWarp = value(arg);

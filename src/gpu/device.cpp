@@ -330,6 +330,21 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  // Compiler statistics only when asked (bench --pipeline-stats): capturing them may change how a
+  // driver caches its pipelines, and no other run reads them.
+  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executableInfo{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  if (options.pipelineStatistics && hasExtension(deviceExtensions(physical_), VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR supported{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported};
+    vkGetPhysicalDeviceFeatures2(physical_, &query);
+    if (supported.pipelineExecutableInfo) {
+      executableInfo.pipelineExecutableInfo = VK_TRUE;
+      f13.pNext = &executableInfo;
+      extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    }
+  }
 
   const float priority = 1.0f;
   const VkDeviceQueueCreateInfo queueInfo{
@@ -344,6 +359,13 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
 
   cmdPushDescriptorSet =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+  if (executableInfo.pipelineExecutableInfo) {
+    getExecutableProperties_ = reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
+        vkGetDeviceProcAddr(device_, "vkGetPipelineExecutablePropertiesKHR"));
+    getExecutableStatistics_ = reinterpret_cast<PFN_vkGetPipelineExecutableStatisticsKHR>(
+        vkGetDeviceProcAddr(device_, "vkGetPipelineExecutableStatisticsKHR"));
+    if (!getExecutableProperties_) getExecutableStatistics_ = nullptr;
+  }
   if (instance.debugUtils()) {
     setName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(instance.handle(), "vkSetDebugUtilsObjectNameEXT"));
@@ -423,6 +445,39 @@ void Device::wait(uint64_t serial) const {
 void Device::drainRetired() const {
   vkDeviceWaitIdle(device_);
   graveyard_.clear();
+}
+
+std::vector<std::string> Device::pipelineStatistics(VkPipeline pipeline) const {
+  std::vector<std::string> lines;
+  if (!capturesPipelineStatistics()) return lines;
+  const VkPipelineInfoKHR info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR, nullptr, pipeline};
+  uint32_t count = 0;
+  VK_CHECK(getExecutableProperties_(device_, &info, &count, nullptr));
+  std::vector<VkPipelineExecutablePropertiesKHR> executables(count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
+  VK_CHECK(getExecutableProperties_(device_, &info, &count, executables.data()));
+  for (uint32_t i = 0; i < count; ++i) {
+    const VkPipelineExecutableInfoKHR which{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR, nullptr, pipeline, i};
+    uint32_t statistics = 0;
+    VK_CHECK(getExecutableStatistics_(device_, &which, &statistics, nullptr));
+    std::vector<VkPipelineExecutableStatisticKHR> values(statistics, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
+    VK_CHECK(getExecutableStatistics_(device_, &which, &statistics, values.data()));
+    std::string line = executables[i].name;
+    for (uint32_t k = 0; k < statistics; ++k) {
+      const VkPipelineExecutableStatisticKHR& v = values[k];
+      line += k == 0 ? ": " : ", ";
+      line += v.name;
+      line += ' ';
+      switch (v.format) {
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_BOOL32_KHR: line += v.value.b32 ? "true" : "false"; break;
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_INT64_KHR: line += std::to_string(v.value.i64); break;
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_UINT64_KHR: line += std::to_string(v.value.u64); break;
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_FLOAT64_KHR: line += std::to_string(v.value.f64); break;
+        default: line += '?';
+      }
+    }
+    lines.push_back(std::move(line));
+  }
+  return lines;
 }
 
 VkFormatFeatureFlags Device::optimalTilingFeatures(VkFormat format) const {

@@ -53,6 +53,7 @@ class Instance {
 struct DeviceOptions {
   std::string selector;                  // "--device": an index or a name substring; empty: best
   VkSurfaceKHR surface = VK_NULL_HANDLE; // when set, the queue must present to it and swapchains load
+  bool pipelineStatistics = false;       // capture each pipeline's compiler statistics, where the device can
 };
 
 class Device {
@@ -78,6 +79,12 @@ class Device {
   bool storageExtendedFormats() const { return storageExtendedFormats_; }
   // 64-bit integers in shaders and atomics on them in storage buffers (noodles' visibility buffer).
   bool bufferInt64Atomics() const { return bufferInt64Atomics_; }
+  // Pipelines are built with their compiler statistics captured (DeviceOptions::pipelineStatistics,
+  // on a device with VK_KHR_pipeline_executable_properties): pipelineStatistics reads them back.
+  bool capturesPipelineStatistics() const { return getExecutableStatistics_ != nullptr; }
+  // "stage: name value, ..." per executable of `pipeline` (registers, spills, instructions: whatever
+  // the driver reports); empty when statistics are not captured.
+  std::vector<std::string> pipelineStatistics(VkPipeline pipeline) const;
   // What bounds one large allocation (noodles' strands): the largest buffer the device makes (the
   // smaller of maintenance4's maxBufferSize and maintenance3's maxMemoryAllocationSize) and the
   // size of its largest device-local heap.
@@ -132,6 +139,8 @@ class Device {
   void endLabel(VkCommandBuffer cmd) const;
 
   PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+  PFN_vkGetPipelineExecutablePropertiesKHR getExecutableProperties_ = nullptr;
+  PFN_vkGetPipelineExecutableStatisticsKHR getExecutableStatistics_ = nullptr;
 
  private:
   const Instance& instance_;

@@ -291,9 +291,20 @@ ComputeProgram::ComputeProgram(ProgramLibrary& library, const std::string& shade
   rebuild();
 }
 
+VkPipelineCreateFlags Program::createFlags() const {
+  return device().capturesPipelineStatistics() ? VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR : 0;
+}
+
+std::vector<std::pair<std::string, std::vector<std::string>>> ProgramLibrary::pipelineStatistics() const {
+  std::vector<std::pair<std::string, std::vector<std::string>>> all;
+  for (const Program* program : programs_) all.emplace_back(program->label(), device_.pipelineStatistics(program->pipeline()));
+  return all;
+}
+
 VkPipeline ComputeProgram::build() const {
   const auto shaderModule = module(shaders()[0]);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.flags = createFlags();
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT,
                 shaderModule, "main", specialization()};
   info.layout = layout();
@@ -386,6 +397,7 @@ VkPipeline GraphicsProgram::build() const {
   info.pColorBlendState = &colorBlend;
   info.pDynamicState = &dynamic;
   info.layout = layout();
+  info.flags = createFlags();
   VkPipeline pipeline;
   VK_CHECK(vkCreateGraphicsPipelines(device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   return pipeline;

@@ -55,6 +55,9 @@ class ProgramLibrary {
   bool hotReloadAvailable() const;
 
   void add(Program* program) { programs_.push_back(program); }
+  // Each program's label and its pipeline's compiler statistics (Device::pipelineStatistics), in the
+  // order they were made; empty unless the device captures them.
+  std::vector<std::pair<std::string, std::vector<std::string>>> pipelineStatistics() const;
   void remove(Program* program);
 
  private:
@@ -124,6 +127,7 @@ class Program {
   void rebuild();
   // What the shaders declare, every stage merged.
   const ShaderInterface& interface() const { return interface_; }
+  const std::string& label() const { return label_; }
 
  protected:
   Program(ProgramLibrary& library, std::string label, std::vector<std::string> shaders, const ProgramOptions& options,
@@ -133,7 +137,8 @@ class Program {
   // The specialization constants of every stage; valid while the program lives.
   const VkSpecializationInfo* specialization() const { return specializationInfo_.mapEntryCount ? &specializationInfo_ : nullptr; }
   const Device& device() const { return library_.device(); }
-  const std::string& label() const { return label_; }
+  // VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR where the device captures them, else none.
+  VkPipelineCreateFlags createFlags() const;
 
  private:
   void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const;

@@ -82,6 +82,13 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
     pass.update(summary(passes[name]));
     result["passes"].push_back(std::move(pass));
   }
+  if (options.pipelineStats) {  // what the driver's compiler made of each pipeline: registers, spills, ...
+    result["pipelines"] = Json::array();
+    for (const auto& [label, executables] : offscreen.programs().pipelineStatistics()) {
+      for (const auto& line : executables) std::printf("  pipeline %s: %s\n", label.c_str(), line.c_str());
+      result["pipelines"].push_back({{"pipeline", label}, {"executables", executables}});
+    }
+  }
   return result;
 }
 
@@ -116,7 +123,10 @@ int runBench(const Options& options) {
           std::none_of(scenes.begin(), scenes.end(), [&](const auto& s) { return findScene(s)->schema().find(setting.key); }))
         throw Error(fmt::format("No scene has a parameter '{}' (--set {}={}).", setting.key, setting.key, setting.value));
   gpu::Instance instance({options.validation, {}});
-  gpu::Device device(instance, {options.device});
+  gpu::Device device(instance, {options.device, VK_NULL_HANDLE, options.pipelineStats});
+  if (options.pipelineStats && !device.capturesPipelineStatistics())
+    std::fprintf(stderr, "vitrine: %s cannot report its pipelines' statistics (VK_KHR_pipeline_executable_properties)\n",
+                 device.properties().deviceName);
 
   const VkExtent2D size = options.size.value_or(VkExtent2D{1920, 1080});
   const auto& p = device.properties();

@@ -76,6 +76,7 @@ class Offscreen {
   // vitrine::Error saying why the state does not fit (another build, another scene).
   std::vector<std::byte> saveSimulation();
   void restoreSimulation(uint64_t frames, std::span<const std::byte> state);
+  const gpu::ProgramLibrary& programs() const { return programs_; }  // every pipeline the run made
 
  private:
   const gpu::Device& device_;

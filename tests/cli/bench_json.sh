@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# bench_json.sh VITRINE OUTDIR: the benchmark runs headless and writes per-pass medians and p95s.
+# bench_json.sh VITRINE OUTDIR: the benchmark runs headless and writes per-pass medians and p95s; with
+# --pipeline-stats it lists every pipeline it made, each with what the driver reports of its executables
+# (lavapipe reports none: it says so, and the list holds the pipelines' names).
 set -eu
 vitrine=$1; out=$2/bench.json
 mkdir -p "$2"; rm -f "$out"
@@ -17,4 +19,15 @@ assert data["size"] == [64, 36] and data["frames"] == 5, data
 assert scene["parameters"]["step"] == 4 and scene["parameters"]["tier"] == "auto", scene["parameters"]
 assert scene["parameters"]["target_ms"] == 8, scene["parameters"]
 print("bench json ok:", names)
+PY
+"$vitrine" bench --scene kifs --size 64x36 --frames 2 --warmup 0 --validate --pipeline-stats --json "$out" 2>"$2/stats.err"
+python3 - "$out" "$2/stats.err" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))["scenes"][0]
+pipelines = {p["pipeline"]: p["executables"] for p in scene["pipelines"]}
+assert "kifs/kifs.comp" in pipelines and "host/present.comp" in pipelines, pipelines
+captured = any(pipelines.values())
+notice = "cannot report its pipelines' statistics" in open(sys.argv[2]).read()
+assert captured != notice, (captured, notice)  # statistics, or a word that there are none
+print("pipeline statistics ok:", "captured" if captured else "not reported by this device")
 PY

@@ -72,6 +72,8 @@ TEST(OptionsNumbers, WholeNumbersNameTheirRange) {
   EXPECT_EQ(parse({"--seed", "4294967295"}).seed, 4294967295u);
   EXPECT_EQ(parse({"bench", "--json", "b.json", "--frames", "4294967295"}).frames, 4294967295u);
   EXPECT_EQ(parse({"bench", "--warmup", "0", "--json", "b.json"}).warmup, 0u);
+  EXPECT_FALSE(parse({"bench", "--json", "b.json"}).pipelineStats);
+  EXPECT_TRUE(parse({"bench", "--pipeline-stats", "--json", "b.json"}).pipelineStats);
 }
 
 TEST(OptionsNumbers, SizesAreWholeAndPositive) {
@@ -132,6 +134,7 @@ TEST(OptionsModes, AFlagOutsideItsModeIsRefusedNamingTheMode) {
   EXPECT_EQ(headless({"--seconds", "2"}), "--seconds is only for record runs, not --headless.");
   EXPECT_EQ(headless({"--format", "png"}), "--format is only for record runs, not --headless.");
   EXPECT_EQ(headless({"--warmup", "3"}), "--warmup is only for bench runs, not --headless.");
+  EXPECT_EQ(headless({"--pipeline-stats"}), "--pipeline-stats is only for bench runs, not --headless.");
   EXPECT_EQ(headless({"--kiosk"}), "--kiosk is only for the gallery, not --headless.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--json", "x.exr"}), "--json is only for bench runs, not --headless.");
   EXPECT_EQ(refusal({"bench", "--scene", "kifs", "--out", "b.json"}),
