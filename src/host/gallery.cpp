@@ -179,6 +179,7 @@ class Gallery {
   ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
   const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
   size_t setupOutput_ = 0;                  // the output whose pin setup moves
+  std::optional<size_t> setupShown_;        // the output whose setup the log last said is showing
   static constexpr std::string_view kMainOutput = "main";  // the main window's name in the settings file
   CursorTracker cursor_;
   std::vector<int> keys_;  // pressed since the last step
@@ -630,6 +631,13 @@ void Gallery::frame() {
     firstShown_ = Clock::now();
     std::fprintf(stderr, "vitrine: showing %s on %s\n", std::string(renderer_->info().name).c_str(),
                  device_.properties().deviceName);
+  }
+  // And one when projector setup first shows for an output, its card built: the calibration card
+  // can take seconds to build on a busy CPU, and a corner dragged before then would be lost.
+  if (!setup_.active()) setupShown_.reset();
+  else if (setupShown_ != setupOutput_ && !nextScene_) {
+    setupShown_ = setupOutput_;
+    std::fprintf(stderr, "vitrine: projector setup of %s\n", std::string(outputName(setupOutput_)).c_str());
   }
   pollShaders();
 }

@@ -52,8 +52,12 @@ echo '[{"window": [640, 0, 640, 360], "name": "right"}]' >"$out/pair.json"
    --size 640x360 --no-vsync --validate --output-warp "$out/pin.json" --outputs "$out/pair.json") >"$log" 2>&1 &
 app=$!
 wait_for_showing "$log"
-keys key:Tab key:F7 sleep:1 drag:1,1,64,36 sleep:1 key:Right key:F7 sleep:1 drag:639,359,576,324 sleep:1 key:Return \
-  sleep:2 shot:0,0,16,8,"$out/pinned.ppm" shot:1264,352,16,8,"$out/pinned-right.ppm" key:Escape
+keys key:Tab key:F7
+wait_for_setup "$log" main
+keys drag:1,1,64,36 sleep:1 key:Right key:F7
+wait_for_setup "$log" right
+keys drag:639,359,576,324 sleep:1 key:Return sleep:2 shot:0,0,16,8,"$out/pinned.ppm" \
+  shot:1264,352,16,8,"$out/pinned-right.ppm" key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app || fail "the gallery in projector setup failed"
 python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["corners"]; assert c[0] == [0.1015625, 0.1] and c[2] == [1, 1], c' \

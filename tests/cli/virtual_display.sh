@@ -15,3 +15,9 @@ wait_for_showing() {
   for _ in $(seq 600); do grep -q "^vitrine: showing " "$1" 2>/dev/null && return 0; sleep 0.1; done
   fail "the gallery showed no frame within a minute"
 }
+# wait_for_setup LOG OUTPUT: waits (up to a minute) until projector setup shows for OUTPUT ("vitrine:
+# projector setup of OUTPUT"), its calibration card built, before a check drags a corner.
+wait_for_setup() {
+  for _ in $(seq 600); do grep -q "^vitrine: projector setup of $2\$" "$1" 2>/dev/null && return 0; sleep 0.1; done
+  fail "projector setup of $2 did not show within a minute"
+}
