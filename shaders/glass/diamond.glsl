@@ -23,8 +23,6 @@ const int WALK_EXHAUSTED = 2;
 const int WALK_MISSED = 3;
 
 const float DIAMOND_FAR = 1e30;
-const float DIAMOND_EDGE_MARGIN = 1e-5;  // kEdgeMargin: of the radius
-const int ROUTE_LEGS = 8;              // kRouteLegs
 const uvec2 NO_ROUTE = uvec2(0xffffffffu);
 
 layout(std430, set = 0, binding = DIAMOND_BINDING) readonly buffer DiamondPlanes { GlassDiamond diamond; };
@@ -157,7 +155,7 @@ bool diamondExitThrough(vec3 p, vec3 d, int facet, out float t, out vec3 n) {
   if (along <= 1e-8) return false;
   t = max((plane.w - dot(plane.xyz, p)) / along, 0.0);
   const vec3 hit = p + t * d;
-  const float margin = DIAMOND_EDGE_MARGIN * diamond.girdleRadius;
+  const float margin = kGlassEdgeMargin * diamond.girdleRadius;
   uvec2 bounds = diamond.edgeNeighbours[facet];
   const uint girdleBit = 1u << (GIRDLE_FACET - 32);
   if ((bounds.y & girdleBit) != 0u && length(hit.xy) > diamond.girdleRadius - margin) return false;
@@ -175,13 +173,13 @@ bool diamondExitThrough(vec3 p, vec3 d, int facet, out float t, out vec3 n) {
 
 // The facet a route (DiamondWalk.route) names for a leg, -1 for none; and the route with it set.
 int routeFacet(uvec2 route, int leg) {
-  if (leg >= ROUTE_LEGS) return -1;
+  if (leg >= kGlassRouteLegs) return -1;
   const uint facet = ((leg < 4 ? route.x : route.y) >> (8 * (leg & 3))) & 0xffu;
   return facet == 0xffu ? -1 : int(facet);
 }
 
 uvec2 withRouteFacet(uvec2 route, int leg, int facet) {
-  if (leg >= ROUTE_LEGS) return route;
+  if (leg >= kGlassRouteLegs) return route;
   const int shift = 8 * (leg & 3);
   const uint keep = ~(0xffu << shift), put = (uint(facet) & 0xffu) << shift;
   return leg < 4 ? uvec2((route.x & keep) | put, route.y) : uvec2(route.x, (route.y & keep) | put);

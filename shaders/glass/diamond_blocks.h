@@ -9,6 +9,11 @@
 #define GLASS_DIAMOND_PLANES 57
 
 VITRINE_SHARED_BEGIN
+// A walk remembers the facets of its first kGlassRouteLegs legs for the next wavelength to try first, and a
+// tried facet is accepted only where the exit lies inside it by kGlassEdgeMargin of the radius
+// (src/scenes/glass/diamond.h: diamondExitThrough, routeFacet).
+const int kGlassRouteLegs = 8;
+const float kGlassEdgeMargin = 1e-5;
 // The round brilliant for the shader's ray queries: the polytope of its facet planes cut by the
 // girdle cylinder.
 struct GlassDiamond {

@@ -1,6 +1,7 @@
 #version 460
-// Runs the diamond's back exit (searched, and tested on a given facet) and first walk step, and every shape's distance, on given probes, so a test can
-// hold the GLSL (glass/diamond.glsl, glass/shapes.glsl) to its C++ mirror.
+// Runs the diamond's back exit (searched, and tried on one facet) and first walk step, and every shape's
+// distance, on given probes, so a test can hold the GLSL (glass/diamond.glsl, glass/shapes.glsl) to its
+// C++ mirror.
 #extension GL_GOOGLE_include_directive : require
 #define DIAMOND_BINDING 0
 #include "glass/optics.glsl"

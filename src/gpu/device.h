@@ -139,10 +139,11 @@ class Device {
   void endLabel(VkCommandBuffer cmd) const;
 
   PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
-  PFN_vkGetPipelineExecutablePropertiesKHR getExecutableProperties_ = nullptr;
-  PFN_vkGetPipelineExecutableStatisticsKHR getExecutableStatistics_ = nullptr;
 
  private:
+  // Loaded only when the device captures pipeline statistics.
+  PFN_vkGetPipelineExecutablePropertiesKHR getExecutableProperties_ = nullptr;
+  PFN_vkGetPipelineExecutableStatisticsKHR getExecutableStatistics_ = nullptr;
   const Instance& instance_;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties properties_{};

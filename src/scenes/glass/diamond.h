@@ -97,7 +97,7 @@ bool diamondExit(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, float& t, g
 // edge neighbours alone: a few planes instead of all 57. True only where the exit point lies inside the facet
 // by more than kEdgeMargin of the radius, so near an edge, where rounding could pick either facet, the caller
 // falls back to diamondExit. On true, t and n are diamondExit's.
-inline constexpr float kEdgeMargin = 1e-5f;
+inline const float kEdgeMargin = shader::kGlassEdgeMargin;
 bool diamondExitThrough(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, int facet, float& t, glm::vec3& n);
 
 // --- The interior walk: light that entered the stone, bouncing off facets until it leaves or the budget ends.
@@ -106,7 +106,7 @@ enum DiamondWalkStatus : int { kWalking = 0, kWalkDone = 1, kWalkExhausted = 2, 
 // The facets a walk left through, leg by leg, a byte each for its first kRouteLegs legs (0xff: none). The
 // wavelengths of one pixel mostly take the same route through the stone, so each walk first tries the
 // previous wavelength's facet for a leg (diamondExitThrough) and searches all 57 only where that fails.
-inline constexpr int kRouteLegs = 8;
+inline constexpr int kRouteLegs = shader::kGlassRouteLegs;
 inline constexpr glm::uvec2 kNoRoute{0xffffffffu, 0xffffffffu};
 int routeFacet(glm::uvec2 route, int leg);  // -1: no facet known for this leg
 glm::uvec2 withRouteFacet(glm::uvec2 route, int leg, int facet);
