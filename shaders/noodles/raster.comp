@@ -11,8 +11,13 @@ layout(local_size_x = 64) in;
 // Boxes of up to this many cells are cast inline. At 10^6 segments at 1080p (flight camera, t = 0) a
 // segment's box averages ~240 cells; 256 keeps ~2/3 of the cells inline at ~45 % lane use (a warp
 // waits for its biggest box). Measured on the H100 against 64, 128 and 512 (and against culling the
-// inline boxes' 4x4 tiles with tileMayHit): the fastest at 10^6 and 10^7 segments.
+// inline boxes' 4x4 tiles with tileMayHit): the fastest at 10^6 and 10^7 segments in one pass. A
+// nest drawn in two phases keeps boxes of up to 512 inline: its occluders are few and spread, and
+// most of the rest's boxes are dropped on their tiles or their keys, so a listed box costs a
+// workgroup for little (H200, 10^7 segments at 3840x2160: 11.87 ms raster at 256, 10.41 at 512;
+// 512 in one pass: the default nest at 3840x2160 1.97 -> 2.31 ms).
 const uint MOST_CELLS_INLINE = 256u;
+const uint MOST_CELLS_INLINE_TWO_PHASES = 512u;
 
 void main() {
   uint invocation = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
@@ -23,7 +28,7 @@ void main() {
   if (cells.x > cells.z || cells.y > cells.w) return;
   if (pc.phase == NOODLES_RASTER_REST && hiddenByTiles(cells, s.nearestBits)) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
-  if (size.x * size.y <= MOST_CELLS_INLINE) {
+  if (size.x * size.y <= (pc.phase == NOODLES_RASTER_ALL ? MOST_CELLS_INLINE : MOST_CELLS_INLINE_TWO_PHASES)) {
     if (SAMPLES_PER_AXIS == 2u) {
       for (int y = cells.y >> 1; y <= cells.w >> 1; ++y)
         for (int x = cells.x >> 1; x <= cells.z >> 1; ++x) rasterPixel(uvec2(x, y), cells, s);
@@ -34,7 +39,7 @@ void main() {
     return;
   }
   uint slot = atomicAdd(counters.listed, 1u);
-  if (slot < pc.bigListCapacity) {
+  if (slot < NOODLES_BIG_LIST_CAPACITY) {
     bigSegments[slot] = index;
     if (slot < MAX_BIG_GROUPS) atomicAdd(counters.groupsX, 1u);  // a workgroup each, up to the limit
     return;

@@ -54,11 +54,13 @@ Segment loadSegment(uint index) {
 }
 
 // Whether every tile of the box (cells, in samples) holds only hits nearer than `nearestBits`, so the
-// segment can put nothing there: then no ray and no key needs reading. Boxes over more than four
-// tiles are left to the per-sample test (near the camera, where they are few).
+// segment can put nothing there: then no ray and no key needs reading. Boxes over more than nine
+// tiles (3x3) are left to the per-sample test (near the camera, where they are few; H200, 10^7
+// segments at 3840x2160, stride 8: 14.63 ms raster with four tiles at most, 13.73 with nine, the same
+// with sixteen).
 bool hiddenByTiles(ivec4 cells, uint nearestBits) {
   uvec4 tiles = uvec4(cells) / (SAMPLES_PER_AXIS * NOODLES_BOUND_TILE);
-  if ((tiles.z - tiles.x + 1u) * (tiles.w - tiles.y + 1u) > 4u) return false;
+  if ((tiles.z - tiles.x + 1u) * (tiles.w - tiles.y + 1u) > 9u) return false;
   for (uint y = tiles.y; y <= tiles.w; ++y)
     for (uint x = tiles.x; x <= tiles.z; ++x)
       if (tileFar[y * pc.tilesPerRow + x] >= nearestBits) return false;

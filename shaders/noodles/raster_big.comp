@@ -10,7 +10,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 void main() {
-  uint listed = min(counters.listed, pc.bigListCapacity);
+  uint listed = min(counters.listed, NOODLES_BIG_LIST_CAPACITY);
   ScreenView view = screenView();
   // With four samples a pixel an invocation takes a pixel, so a tile is 16 x 16 cells, started on a
   // pixel's first cell.

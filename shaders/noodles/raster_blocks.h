@@ -10,11 +10,21 @@ VITRINE_SHARED_BEGIN
 // passes: every NOODLES_OCCLUDER_STRIDE-th strand first (spread through the nest, so they cover most
 // of the screen), then tile_bound.comp keeps each tile's farthest held hit, then the other strands,
 // which drop a segment at once when every tile its box touches already holds only nearer hits.
+// Every fourth strand (H200, walked nearest first, 3x3 tiles: stride 8 -> 4 took 10^8 segments at
+// 1080p from 7.50 to 7.27 ms and 10^7 at 3840x2160 from 13.73 to 11.87; stride 2: 8.57 and 13.25).
 const uint NOODLES_RASTER_ALL = 0u;
 const uint NOODLES_RASTER_OCCLUDERS = 1u;
 const uint NOODLES_RASTER_REST = 2u;
-const uint NOODLES_OCCLUDER_STRIDE = 8u;
+const uint NOODLES_OCCLUDER_STRIDE = 4u;
 const uint NOODLES_BOUND_TILE = 8u;  // pixels a side of the tiles tile_bound.comp bounds
+// Listed big segments (16 MiB): past it raster.comp casts a big box itself.
+const uint NOODLES_BIG_LIST_CAPACITY = 1u << 22;
+
+// NoodlesRasterPush::walk (src/scenes/noodles/strand_walk.h): the axis walked slowest in bits 0-1, the
+// middle one from NOODLES_WALK_MIDDLE_SHIFT, the axes walked from their far end from _FLIP_SHIFT.
+const uint NOODLES_WALK_AXIS_MASK = 3u;
+const uint NOODLES_WALK_MIDDLE_SHIFT = 2u;
+const uint NOODLES_WALK_FLIP_SHIFT = 4u;
 
 // The camera as rays (capsule.glsl's ScreenView), the look and the chunk. std430: each vec3 starts a
 // 16-byte slot, which the float after it shares.
@@ -32,7 +42,6 @@ struct NoodlesRasterPush {
   uint totalStrands;       // in the whole grid, for colour
   uint colouring;          // COLOURING_GRADIENT or COLOURING_HSV
   uint stripe;             // 1: paint the side between frame angles 0 and 45 degrees
-  uint bigListCapacity;    // entries the big-segment list holds
   uint firstStrand;        // the chunk's first strand
   uint chunkStrands;       // strands in this chunk
   uint invocationsPerRow;  // raster.comp's 2D dispatch: invocations in one row of workgroups
@@ -40,6 +49,8 @@ struct NoodlesRasterPush {
   uint phase;              // NOODLES_RASTER_ALL, _OCCLUDERS or _REST
   uint phaseStrands;       // the chunk's strands this phase takes
   uint tilesPerRow;        // tile_bound.comp's tiles across the target
+  uint walkX, walkY;       // the chunk's strands as a grid, x fastest: walkX x walkY x the rest
+  uint walk;               // the order raster.comp takes them in (NOODLES_WALK_*)
 };
 
 // tile_bound.comp's push block.

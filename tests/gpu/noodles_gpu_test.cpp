@@ -206,7 +206,7 @@ TEST_F(NoodlesGpu, LiftedBitangentRk4InTheBakedFlowMatchesTheCpu) {
   expectMatchesReference(s, deviceBudget(device()));
 }
 
-// A big nest drawn occluders first (every eighth strand, a bound a tile, then the rest) is the same
+// A big nest drawn occluders first (every fourth strand walked, a bound a tile, then the rest) is the same
 // picture, bit for bit, as one pass over every segment: the rest skip a segment only where every
 // sample of every tile its box touches already holds a nearer hit, and keys only fall. The nest is
 // just past the threshold, drawn small (lavapipe takes ~3 s a frame), where the occluders cover the

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gpu/buffer_commands.h"
+#include "scenes/noodles/strand_walk.h"
 #include "shaders/noodles/raster_blocks.h"
 
 #include <fmt/format.h>
@@ -38,9 +39,10 @@ RasterPass::RasterPass(const SceneContext& context)
       bigSegments_(context.programs, "noodles/raster_big.comp"),
       tileBound_(context.programs, "noodles/tile_bound.comp"),
       visibility_(context.resources.declare(visibilityDecl(kMultisampledAxis))),
-      bigList_(context.resources.declare({.name = "noodles big segments",
-                                          .size = gpu::BufferSize::absolute(kBigListCapacity * sizeof(uint32_t)),
-                                          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT})),
+      bigList_(context.resources.declare(
+          {.name = "noodles big segments",
+           .size = gpu::BufferSize::absolute(shader::NOODLES_BIG_LIST_CAPACITY * sizeof(uint32_t)),
+           .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT})),
       counters_(context.resources.declare(
           {.name = "noodles big-segment counters",
            .size = gpu::BufferSize::absolute(sizeof(shader::NoodlesBigSegmentCounters)),
@@ -71,7 +73,6 @@ void RasterPass::record(const FrameContext& frame, const StrandLayout& layout, V
   gpu::fillBuffer(frame.cmd, visibility, 0xffffffffu, gpu::use::ComputeReadWriteBuffer);  // all keys empty
 
   shader::NoodlesRasterPush push = rasterPush(view, layout);
-  push.bigListCapacity = kBigListCapacity;
   const VkExtent2D extent = frame.target.extent2d();
   push.tilesPerRow = (extent.width + shader::NOODLES_BOUND_TILE - 1) / shader::NOODLES_BOUND_TILE;
   if (!view.occluders || layout.segmentCount < kTwoPhasesFrom) return recordPhase(frame, layout, nodes, push, shader::NOODLES_RASTER_ALL);
@@ -87,7 +88,9 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
   gpu::Buffer& counters = frame.buffer(counters_);
   gpu::Buffer& tileFar = frame.buffer(tileFar_);
   push.phase = phase;
-  for (const StrandChunk& chunk : layout.chunks) {
+  const size_t chunks = layout.chunks.size();
+  for (size_t n = 0; n < chunks; ++n) {  // nearest first, as the strands in each (strand_walk.h)
+    const StrandChunk& chunk = layout.chunks[chunksDescending(push.forward) ? chunks - 1 - n : n];
     // Nothing listed yet; the big-segment pass's y and z group counts are 1.
     static constexpr shader::NoodlesBigSegmentCounters kReset{.groupsX = 0, .groupsY = 1, .groupsZ = 1, .listed = 0};
     frame.upload(counters, 0, std::as_bytes(std::span(&kReset, 1)), gpu::use::ComputeReadWriteBuffer);
@@ -113,6 +116,10 @@ void RasterPass::recordPhase(const FrameContext& frame, const StrandLayout& layo
                                              "noodles raster");
     push.firstStrand = chunk.firstStrand;
     push.chunkStrands = chunk.strandCount;
+    const StrandWalk walk = chunkWalk(layout.grid, chunk.strandCount, push.forward);
+    push.walkX = walk.dims.x;
+    push.walkY = walk.dims.y;
+    push.walk = walk.code;
     push.invocationsPerRow = groups.x * workgroupSize();
     const gpu::ComputeProgram& segmentProgram = segments_({int32_t(samplesPerAxis_)});
     if (segmentProgram.localSize()[0] != kWorkgroupSize) throw Error("noodles: raster.comp's local size changed");

@@ -15,8 +15,6 @@
 
 namespace vitrine::noodles {
 
-// Listed big segments (16 MiB): past it raster.comp casts a big box itself.
-inline constexpr uint32_t kBigListCapacity = 1u << 22;
 // Nests of this many segments and more are drawn in two phases (raster_blocks.h): occluders, a bound
 // a tile, the rest. Below it the occluders cover too little of the screen for the bound to pay.
 inline constexpr uint64_t kTwoPhasesFrom = uint64_t(1) << 22;

@@ -134,7 +134,7 @@ const params::Schema& schema() {
                                   "tubes", kRebuilds},
                                  &S::msaa, {"off", "4x"}));
     s.add(params::boolParam<S>({"occluders", "occluders first",
-                                "Nests of 4 million segments and more draw every eighth strand first and then "
+                                "Nests of 4 million segments and more draw every fourth strand first and then "
                                 "skip the segments those hide whole tiles of: the same picture, faster. Off: one "
                                 "pass over every segment.", "tubes"},
                                &S::occluders));

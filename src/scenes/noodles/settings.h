@@ -48,7 +48,7 @@ struct NoodleSettings {
   Colouring colour = Colouring::Gradient;
   bool stripe = false;  // paint one side of every tube, so the frames' twist shows
   bool msaa = true;
-  bool occluders = true;  // big nests draw every eighth strand first and skip what those hide
+  bool occluders = true;  // big nests draw every fourth strand first and skip what those hide
   OrbitPin orbit;
   Tier tier = Tier::Auto;  // high: as set; medium, low: 0.7 and 0.5 render scale
   float targetMs = 16.0f;
