@@ -138,6 +138,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
       vec3 light = vec3(0.0);
       float emitted = 0.0;
       while (diamondStep(walk, eta, physical(), exitDir, exitWeight)) {
+        if (exitWeight == 0.0) continue;  // total internal reflection: nothing leaves, nothing to look up
         light += exitWeight * sceneAlong(centre + toWorld * walk.p, seen(rayDir, toWorld * exitDir), 0.0);
         emitted += exitWeight;
       }
