@@ -31,7 +31,7 @@ struct Options {
   std::string scene;                 // empty: the first in the registry (gallery), "all" (bench)
   std::string device;                // --device INDEX|NAME
   bool validation = false;           // --validate, or VITRINE_VALIDATION=1
-  bool pipelineStats = false;        // bench --pipeline-stats: each pipeline's compiler statistics
+  bool pipelineStats = false;        // bench --pipeline-stats: compiler statistics, invocations a pass
   bool reducedMotion = false;
   std::optional<bool> flashGuard;    // --flash-guard on|off; unset: flashGuardOn() decides
   uint32_t seed = 0;

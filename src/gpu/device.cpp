@@ -327,6 +327,9 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   storageExtendedFormats_ = has.features.shaderStorageImageExtendedFormats;
   storageWriteWithoutFormat_ = has.features.shaderStorageImageWriteWithoutFormat;
   bufferInt64Atomics_ = has.features.shaderInt64 && has12.shaderBufferInt64Atomics;
+  // Invocation counts only when asked (bench --pipeline-stats), like the compiler statistics below.
+  countsInvocations_ = options.pipelineStatistics && has.features.pipelineStatisticsQuery;
+  features.features.pipelineStatisticsQuery = countsInvocations_;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

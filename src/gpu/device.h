@@ -53,7 +53,8 @@ class Instance {
 struct DeviceOptions {
   std::string selector;                  // "--device": an index or a name substring; empty: best
   VkSurfaceKHR surface = VK_NULL_HANDLE; // when set, the queue must present to it and swapchains load
-  bool pipelineStatistics = false;       // capture each pipeline's compiler statistics, where the device can
+  bool pipelineStatistics = false;       // capture each pipeline's compiler statistics and count each pass's
+                                         // shader invocations, where the device can
 };
 
 class Device {
@@ -85,6 +86,9 @@ class Device {
   // "stage: name value, ..." per executable of `pipeline` (registers, spills, instructions: whatever
   // the driver reports); empty when statistics are not captured.
   std::vector<std::string> pipelineStatistics(VkPipeline pipeline) const;
+  // Pipeline-statistics queries are enabled (DeviceOptions::pipelineStatistics, on a device with the
+  // pipelineStatisticsQuery feature): the pass timer counts each pass's shader invocations.
+  bool countsInvocations() const { return countsInvocations_; }
   // What bounds one large allocation (noodles' strands): the largest buffer the device makes (the
   // smaller of maintenance4's maxBufferSize and maintenance3's maxMemoryAllocationSize) and the
   // size of its largest device-local heap.
@@ -154,6 +158,7 @@ class Device {
   bool storageWriteWithoutFormat_ = false;
   bool storageExtendedFormats_ = false;
   bool bufferInt64Atomics_ = false;
+  bool countsInvocations_ = false;
   MemoryLimits memoryLimits_;
   Unique<VkCommandPool> oneShotPool_;
   Unique<VkSemaphore> timeline_;

@@ -4,9 +4,17 @@
 #include "gpu/device.h"
 
 namespace vitrine::gpu {
+namespace {
+
+// Results come back in the order of these bits: vertex, fragment, compute.
+constexpr VkQueryPipelineStatisticFlags kCountedStages = VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+                                                         VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT |
+                                                         VK_QUERY_PIPELINE_STATISTIC_COMPUTE_SHADER_INVOCATIONS_BIT;
+
+}  // namespace
 
 PassTimer::PassTimer(const Device& device, uint32_t slots, uint32_t maxPassesPerFrame)
-    : device_(device), maxPasses_(maxPassesPerFrame), names_(slots) {
+    : device_(device), maxPasses_(maxPassesPerFrame), names_(slots), counted_(slots) {
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
   info.queryCount = slots * maxPasses_ * 2;
@@ -22,12 +30,23 @@ PassTimer::PassTimer(const Device& device, uint32_t slots, uint32_t maxPassesPer
   const uint32_t bits = families[device.queueFamily()].timestampValidBits;
   validMask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
   drainBeforeEnd_ = device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (device.countsInvocations()) {
+    VkQueryPoolCreateInfo counts{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    counts.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+    counts.queryCount = slots * maxPasses_;
+    counts.pipelineStatistics = kCountedStages;
+    VK_CHECK(vkCreateQueryPool(device, &counts, nullptr, &pool));
+    invocations_ = Unique<VkQueryPool>(device, pool);
+    device.name(pool, VK_OBJECT_TYPE_QUERY_POOL, "pass invocations");
+  }
 }
 
 void PassTimer::beginFrame(VkCommandBuffer cmd, uint32_t slot) {
   slot_ = slot;
   names_[slot].clear();
+  counted_[slot].clear();
   vkCmdResetQueryPool(cmd, pool_, slot * maxPasses_ * 2, maxPasses_ * 2);
+  if (invocations_) vkCmdResetQueryPool(cmd, invocations_, slot * maxPasses_, maxPasses_);
 }
 
 uint32_t PassTimer::begin(VkCommandBuffer cmd, const char* name) {
@@ -36,6 +55,12 @@ uint32_t PassTimer::begin(VkCommandBuffer cmd, const char* name) {
   const auto index = static_cast<uint32_t>(names.size());
   names.emplace_back(name);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, (slot_ * maxPasses_ + index) * 2);
+  const bool count = invocations_ && !counting_;
+  counted_[slot_].push_back(count);
+  if (count) {
+    vkCmdBeginQuery(cmd, invocations_, slot_ * maxPasses_ + index, 0);
+    counting_ = true;
+  }
   return index;
 }
 
@@ -51,6 +76,10 @@ void PassTimer::end(VkCommandBuffer cmd, uint32_t pass) {
     dependency.pMemoryBarriers = &all;
     vkCmdPipelineBarrier2(cmd, &dependency);
   }
+  if (counted_[slot_][pass]) {
+    vkCmdEndQuery(cmd, invocations_, slot_ * maxPasses_ + pass);
+    counting_ = false;
+  }
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, (slot_ * maxPasses_ + pass) * 2 + 1);
 }
 
@@ -64,7 +93,12 @@ std::vector<PassTime> PassTimer::collect(uint32_t slot) const {
                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   for (size_t i = 0; i < names.size(); ++i) {
     const uint64_t elapsed = ((ticks[2 * i + 1] & validMask_) - (ticks[2 * i] & validMask_)) & validMask_;
-    result.push_back({names[i], static_cast<double>(elapsed) * nsPerTick_ * 1e-6});
+    result.push_back({names[i], static_cast<double>(elapsed) * nsPerTick_ * 1e-6, std::nullopt});
+    if (!counted_[slot][i]) continue;  // never begun: waiting on it would never end
+    uint64_t counts[3];
+    VK_CHECK(vkGetQueryPoolResults(device_, invocations_, uint32_t(slot * maxPasses_ + i), 1, sizeof(counts), counts,
+                                   sizeof(counts), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    result.back().invocations = PassInvocations{counts[0], counts[1], counts[2]};
   }
   return result;
 }

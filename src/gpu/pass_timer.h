@@ -1,8 +1,12 @@
 #pragma once
 // GPU timestamps per pass, one query range per frame in flight. A Pass opens a debug label and a
 // timestamp pair together, so no pass can be timed without being labelled or the other way round.
+// Where the device counts invocations (Device::countsInvocations: bench --pipeline-stats), each pass
+// also counts the shader invocations it ran: a render pass's fragments are what its time on a GPU's
+// graphics part follows.
 #include "gpu/unique.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,9 +14,14 @@ namespace vitrine::gpu {
 
 class Device;
 
+struct PassInvocations {
+  uint64_t vertex = 0, fragment = 0, compute = 0;
+};
+
 struct PassTime {
   std::string name;
   double ms;
+  std::optional<PassInvocations> invocations;  // counted passes only (a pass inside another is not)
 };
 
 class PassTimer {
@@ -28,12 +37,15 @@ class PassTimer {
  private:
   const Device& device_;
   Unique<VkQueryPool> pool_;
+  Unique<VkQueryPool> invocations_;  // a pipeline-statistics query a pass, where counted
   uint32_t maxPasses_;
   double nsPerTick_;
   uint64_t validMask_;
   bool drainBeforeEnd_ = false;  // a CPU device: see end()
   uint32_t slot_ = 0;
   std::vector<std::vector<std::string>> names_;  // per slot
+  std::vector<std::vector<bool>> counted_;       // per slot, per pass: whether its query ran
+  bool counting_ = false;                        // a pass's query is open (passes may nest; queries may not)
 };
 
 class Pass {

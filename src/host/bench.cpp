@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <fstream>
@@ -53,6 +54,7 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   std::vector<double> gpu, cpu;
   std::vector<std::string> order;  // passes in recording order
   std::map<std::string, std::vector<double>> passes;
+  std::map<std::string, std::array<std::vector<double>, 3>> invocations;  // vertex, fragment, compute
   for (uint32_t i = 0; i < options.frames; ++i) {
     const FrameTimes times = offscreen.renderFrame();
     gpu.push_back(times.gpuMs);
@@ -60,6 +62,11 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
     for (const auto& pass : times.passes) {
       if (!passes.count(pass.name)) order.push_back(pass.name);
       passes[pass.name].push_back(pass.ms);
+      if (!pass.invocations) continue;
+      auto& counts = invocations[pass.name];
+      counts[0].push_back(double(pass.invocations->vertex));
+      counts[1].push_back(double(pass.invocations->fragment));
+      counts[2].push_back(double(pass.invocations->compute));
     }
   }
   std::printf("%-10s gpu median %8.3f ms  p95 %8.3f ms   cpu median %6.3f ms\n", scene.c_str(), percentile(gpu, 50),
@@ -76,10 +83,20 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   result["device_memory"] = {{"allocations", held.allocations}, {"mib", double(held.bytes) / 1048576.0}};
   if (const auto resident = residentBytes()) result["resident_mib"] = double(*resident) / 1048576.0;
   for (const auto& name : order) {
-    std::printf("  %-24s median %8.3f ms  p95 %8.3f ms\n", name.c_str(), percentile(passes[name], 50),
+    std::printf("  %-24s median %8.3f ms  p95 %8.3f ms", name.c_str(), percentile(passes[name], 50),
                 percentile(passes[name], 95));
     Json pass{{"name", name}};
     pass.update(summary(passes[name]));
+    if (const auto counted = invocations.find(name); counted != invocations.end()) {
+      // Medians a frame: a render pass's fragments set its floor on a GPU's graphics part.
+      const auto& [vertex, fragment, compute] = counted->second;
+      pass["invocations"] = {{"vertex", percentile(vertex, 50)},
+                             {"fragment", percentile(fragment, 50)},
+                             {"compute", percentile(compute, 50)}};
+      std::printf("   vertex %.4g  fragment %.4g  compute %.4g", percentile(vertex, 50), percentile(fragment, 50),
+                  percentile(compute, 50));
+    }
+    std::printf("\n");
     result["passes"].push_back(std::move(pass));
   }
   if (options.pipelineStats) {  // what the driver's compiler made of each pipeline: registers, spills, ...
@@ -126,6 +143,9 @@ int runBench(const Options& options) {
   gpu::Device device(instance, {options.device, VK_NULL_HANDLE, options.pipelineStats});
   if (options.pipelineStats && !device.capturesPipelineStatistics())
     std::fprintf(stderr, "vitrine: %s cannot report its pipelines' statistics (VK_KHR_pipeline_executable_properties)\n",
+                 device.properties().deviceName);
+  if (options.pipelineStats && !device.countsInvocations())
+    std::fprintf(stderr, "vitrine: %s cannot count its passes' invocations (pipelineStatisticsQuery)\n",
                  device.properties().deviceName);
 
   const VkExtent2D size = options.size.value_or(VkExtent2D{1920, 1080});
