@@ -57,29 +57,53 @@ struct Shaded {
   float eyeDistance;   // to the front hit: overlapping instances sort by it
 };
 
-// One pixel through one instance; false when its ray misses the glass.
-bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
-  const GlassShapeDims dims = glassDims();
+// Where one pixel's ray first meets one instance's glass, before any wavelength: enough to tell which
+// of several instances a pixel sees, so the compute path shades only that one (glassFrontHit, then
+// shadeFrontHit). On lavapipe, which runs a branch's code for every lane whatever the branch decides,
+// shading each candidate instance cost the whole shading four times over for every pixel.
+struct FrontHit {
+  vec3 rayOrigin, rayDir;  // the primary ray, world space
+  vec3 rd;                 // its direction in object space
+  vec3 p1, n1;             // the hit and the outward normal there, object space
+  int facet;               // the diamond's facet hit (-1 for the other shapes)
+  float eyeDistance;       // from the ray's origin: overlapping instances sort by it
+};
+
+// The pixel's primary ray, world space, with the frame's sub-pixel offset under TAA (undone by the
+// resolve's reprojection): the same for every instance.
+void glassPrimaryRay(vec2 fragCoord, out vec3 origin, out vec3 dir) {
+  const uvec2 pixel = uvec2(fragCoord);
+  vec2 sub = fragCoord;
+  if (F.taa != 0u) sub += vec2(hash01(uvec3(pixel, F.frame * 2u)), hash01(uvec3(pixel, F.frame * 2u + 1u))) - 0.5;
+  primaryRay(sub, origin, dir);
+}
+
+// False when the pixel's ray misses the instance's glass.
+bool glassFrontHit(vec3 rayOrigin, vec3 rayDir, int instance, out FrontHit hit) {
   const mat3 toObject = mat3(F.rotation);
-  const mat3 toWorld = transpose(toObject);
+  const vec3 centre = vec3(F.instances[instance].centre, 0.0);
+  hit.rayOrigin = rayOrigin;
+  hit.rayDir = rayDir;
+  const vec3 ro = toObject * (rayOrigin - centre);
+  hit.rd = toObject * rayDir;
+  float tHit;
+  if (!shapeEnter(glassDims(), ro, hit.rd, tHit, hit.n1, hit.facet)) return false;
+  hit.p1 = ro + hit.rd * tHit;
+  hit.eyeDistance = distance(rayOrigin, centre + transpose(toObject) * hit.p1);
+  return true;
+}
+
+// The pixel's colour and motion through the instance it meets at `hit`.
+Shaded shadeFrontHit(vec2 fragCoord, int instance, FrontHit hit) {
+  const GlassShapeDims dims = glassDims();
+  const mat3 toWorld = transpose(mat3(F.rotation));
   const vec3 centre = vec3(F.instances[instance].centre, 0.0);
   const uvec2 pixel = uvec2(fragCoord);
-
-  vec2 sub = fragCoord;
-  if (F.taa != 0u)  // a per-pixel, per-frame sub-pixel offset, undone by the resolve's reprojection
-    sub += vec2(hash01(uvec3(pixel, F.frame * 2u)), hash01(uvec3(pixel, F.frame * 2u + 1u))) - 0.5;
-  vec3 rayOrigin, rayDir;
-  primaryRay(sub, rayOrigin, rayDir);
-  const vec3 ro = toObject * (rayOrigin - centre);
-  const vec3 rd = toObject * rayDir;
-
-  float tHit;
-  vec3 n1;
-  int facet;
-  if (!shapeEnter(dims, ro, rd, tHit, n1, facet)) return false;
-  const vec3 p1 = ro + rd * tHit;
+  const vec3 rayOrigin = hit.rayOrigin, rayDir = hit.rayDir, rd = hit.rd, p1 = hit.p1, n1 = hit.n1;
+  const int facet = hit.facet;
   const vec3 hitWorld = centre + toWorld * p1;
-  shaded.eyeDistance = distance(rayOrigin, hitWorld);
+  Shaded shaded;
+  shaded.eyeDistance = hit.eyeDistance;
 
   // Where this surface point was a frame ago: last frame's rotation and centre.
   const vec3 previousWorld = vec3(F.instances[instance].previousCentre, 0.0) + transpose(mat3(F.previousRotation)) * p1;
@@ -87,7 +111,7 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
 
   if (GLASS_SHAPE == SHAPE_DIAMOND && F.diamondDebug == DIAMOND_DEBUG_FACETS) {
     shaded.colour = facetColour(facet);
-    return true;
+    return shaded;
   }
 
   const int n = F.wavelengths;
@@ -214,6 +238,17 @@ bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
     else if (exhausted) result = vec3(1.0, 0.3, 0.75);
   }
   shaded.colour = result;
+  return shaded;
+}
+
+// One pixel through one instance (the render-pass path, whose fragments each know theirs); false when
+// its ray misses the glass.
+bool shadeGlass(vec2 fragCoord, int instance, out Shaded shaded) {
+  vec3 origin, dir;
+  glassPrimaryRay(fragCoord, origin, dir);
+  FrontHit hit;
+  if (!glassFrontHit(origin, dir, instance, hit)) return false;
+  shaded = shadeFrontHit(fragCoord, instance, hit);
   return true;
 }
 

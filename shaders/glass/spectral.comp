@@ -1,8 +1,8 @@
 #version 460
 // The compute path: the same per-pixel shading as the proxy's fragments (shade.glsl), for GPUs whose
-// graphics part is a sliver of the chip (the H100's two graphics-capable TPCs). Each pixel tests the
-// instances whose screen rectangle holds it, keeps the nearest surface, and pixels no glass covers cost
-// a few comparisons.
+// graphics part is a sliver of the chip (the H100's two graphics-capable TPCs). Each pixel finds the
+// front hits of the instances whose screen rectangle holds it, shades the nearest once, and pixels no
+// glass covers cost a few comparisons.
 #extension GL_GOOGLE_include_directive : require
 #include "glass/shade.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -15,18 +15,27 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(F.viewPixels)))) return;
   const vec2 fragCoord = vec2(p) + 0.5;
   const bool showProxy = F.showProxy != 0u;
-  Shaded best = Shaded(vec3(0.0), vec2(0.0), 1e30);
-  bool covered = false, inRect = false;
+  // The nearest front hit of the instances whose screen rectangle holds the pixel, then one shading:
+  // the instances' rectangles overlap, and shading is most of the work.
+  vec3 rayOrigin, rayDir;
+  glassPrimaryRay(fragCoord, rayOrigin, rayDir);
+  FrontHit nearest;
+  nearest.eyeDistance = SHAPE_FAR;
+  int seen = -1;
+  bool inRect = false;
   for (int i = 0; i < F.instanceCount; ++i) {
     const vec4 rect = F.instances[i].screenRect;
     if (any(lessThan(fragCoord, rect.xy)) || any(greaterThan(fragCoord, rect.zw))) continue;
     inRect = true;
-    Shaded shaded;
-    if (shadeGlass(fragCoord, i, shaded) && shaded.eyeDistance < best.eyeDistance) {
-      best = shaded;
-      covered = true;
+    FrontHit hit;
+    if (glassFrontHit(rayOrigin, rayDir, i, hit) && hit.eyeDistance < nearest.eyeDistance) {
+      nearest = hit;
+      seen = i;
     }
   }
+  const bool covered = seen >= 0;
+  Shaded best = Shaded(vec3(0.0), vec2(0.0), 1e30);
+  if (covered) best = shadeFrontHit(fragCoord, seen, nearest);
   vec4 colour = covered ? vec4(best.colour, 1.0) : vec4(0.0);
   if (showProxy && inRect) colour = vec4(covered ? mix(best.colour, vec3(1.0, 0.2, 0.6), 0.25) : vec3(1.0, 0.2, 0.6), 1.0);
   imageStore(colourOut, p, colour);
