@@ -13,7 +13,9 @@
 
 namespace vitrine::host {
 Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
-    : device_(device), programs_(device), renderer_(device, programs_, assets_, 1), size_(config.size),
+    : device_(device),
+      programs_(device, config.shaderSources.empty() ? VITRINE_SHADER_SOURCE_DIR : config.shaderSources),
+      renderer_(device, programs_, assets_, 1), size_(config.size),
       startTime_(config.startTime), step_(config.step), live_(config.live), events_(config.events), warp_(config.warp) {
   if (!(step_ > 0.0) || !std::isfinite(step_)) throw Error("an offscreen run needs a finite, positive time step");
   gpu::checkImageSize(device, size_);

@@ -9,6 +9,7 @@
 #include "host/scene_renderer.h"
 
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <span>
@@ -36,6 +37,7 @@ struct OffscreenConfig {
   std::optional<maths::OutputWarp> warp;  // --output-warp: how the output shows the frame (a projector's)
   bool flashGuard = false;           // --flash-guard (on with --reduced-motion): frames shown through it
   std::vector<params::Preset> presetFiles;  // --preset-file: presets read from files, after the named ones
+  std::filesystem::path shaderSources;      // what reloadShaders polls; empty: the source tree's shaders/
 };
 
 struct FrameTimes {
@@ -77,6 +79,9 @@ class Offscreen {
   std::vector<std::byte> saveSimulation();
   void restoreSimulation(uint64_t frames, std::span<const std::byte> state);
   const gpu::ProgramLibrary& programs() const { return programs_; }  // every pipeline the run made
+  // Hot reload between frames, as the gallery does each frame: rebuilds the programs whose shaders
+  // changed under OffscreenConfig::shaderSources; returns how many.
+  int reloadShaders() { return programs_.reloadChanged(); }
 
  private:
   const gpu::Device& device_;

@@ -7,6 +7,10 @@
 #include "support/gpu_test.h"
 
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -234,6 +238,45 @@ TEST_F(NeonScene, ADragDrawsOneConnectedTube) {
     }
   EXPECT_EQ(pieces, 1) << "the largest piece has " << largest << " pixels";
   EXPECT_GT(largest, 150) << "a tube across much of the frame";
+}
+
+// The facade is drawn once a size; an edited facade.comp (hot reload, as the gallery polls each frame)
+// shows at the next frame all the same, not only after a resize. The edit paints the lit facade black.
+TEST_F(NeonScene, AHotReloadedFacadeShowsAtTheNextFrame) {
+  const auto root = std::filesystem::temp_directory_path() / "vitrine-neon-facade-reload";
+  std::filesystem::remove_all(root);
+  std::filesystem::copy(VITRINE_SHADER_SOURCE_DIR, root, std::filesystem::copy_options::recursive);
+  host::OffscreenConfig config;
+  config.scene = "neon";
+  config.size = {160, 90};
+  config.parameters = {{"stage", "base"}};
+  config.shaderSources = root;
+  host::Offscreen offscreen(device(), config);
+  const auto brightness = [](const ImageRgba& image) {
+    double sum = 0.0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) sum += maxChannel(&image.pixels[i]);
+    return sum / double(image.width * image.height);
+  };
+  offscreen.renderFrame();
+  const double before = brightness(offscreen.readback());
+
+  const auto path = root / "neon/facade.comp";
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  std::string source = text.str();
+  const std::string lit = "imageStore(colour, p, vec4(lit * pc.facadeBrightness, 1.0));";
+  const auto at = source.find(lit);
+  ASSERT_NE(at, std::string::npos);
+  source.replace(at, lit.size(), "imageStore(colour, p, vec4(0.0, 0.0, 0.0, 1.0));");
+  std::ofstream(path) << source;
+  std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now() + std::chrono::seconds(1));
+  EXPECT_GE(offscreen.reloadShaders(), 1);
+
+  offscreen.renderFrame();
+  const double after = brightness(offscreen.readback());
+  std::filesystem::remove_all(root);
+  EXPECT_GT(before, 0.02) << "the lit facade shows";
+  EXPECT_LT(after, 0.5 * before) << "the edited facade shows at the next frame";
 }
 
 }  // namespace
