@@ -45,6 +45,7 @@ void PassTimer::beginFrame(VkCommandBuffer cmd, uint32_t slot) {
   slot_ = slot;
   names_[slot].clear();
   counted_[slot].clear();
+  counting_ = false;  // a new command buffer: nothing of the last one's is open in it
   vkCmdResetQueryPool(cmd, pool_, slot * maxPasses_ * 2, maxPasses_ * 2);
   if (invocations_) vkCmdResetQueryPool(cmd, invocations_, slot * maxPasses_, maxPasses_);
 }
