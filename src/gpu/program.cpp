@@ -108,6 +108,12 @@ int ProgramLibrary::reloadChanged() {
 
 void ProgramLibrary::remove(Program* program) { std::erase(programs_, program); }
 
+std::vector<std::pair<std::string, std::vector<std::string>>> ProgramLibrary::pipelineStatistics() const {
+  std::vector<std::pair<std::string, std::vector<std::string>>> all;
+  for (const Program* program : programs_) all.emplace_back(program->label(), device_.pipelineStatistics(program->pipeline()));
+  return all;
+}
+
 // ------------------------------------------------------------------------------------------ bindings
 
 Bindings::Slot& Bindings::next(std::string_view name, VkDescriptorType type) {
@@ -293,12 +299,6 @@ ComputeProgram::ComputeProgram(ProgramLibrary& library, const std::string& shade
 
 VkPipelineCreateFlags Program::createFlags() const {
   return device().capturesPipelineStatistics() ? VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR : 0;
-}
-
-std::vector<std::pair<std::string, std::vector<std::string>>> ProgramLibrary::pipelineStatistics() const {
-  std::vector<std::pair<std::string, std::vector<std::string>>> all;
-  for (const Program* program : programs_) all.emplace_back(program->label(), device_.pipelineStatistics(program->pipeline()));
-  return all;
 }
 
 VkPipeline ComputeProgram::build() const {

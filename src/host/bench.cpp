@@ -89,12 +89,11 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
     pass.update(summary(passes[name]));
     if (const auto counted = invocations.find(name); counted != invocations.end()) {
       // Medians a frame: a render pass's fragments set its floor on a GPU's graphics part.
-      const auto& [vertex, fragment, compute] = counted->second;
-      pass["invocations"] = {{"vertex", percentile(vertex, 50)},
-                             {"fragment", percentile(fragment, 50)},
-                             {"compute", percentile(compute, 50)}};
-      std::printf("   vertex %.4g  fragment %.4g  compute %.4g", percentile(vertex, 50), percentile(fragment, 50),
-                  percentile(compute, 50));
+      const auto& [vertices, fragments, threads] = counted->second;
+      const double vertex = percentile(vertices, 50), fragment = percentile(fragments, 50),
+                   compute = percentile(threads, 50);
+      pass["invocations"] = {{"vertex", vertex}, {"fragment", fragment}, {"compute", compute}};
+      std::printf("   vertex %.4g  fragment %.4g  compute %.4g", vertex, fragment, compute);
     }
     std::printf("\n");
     result["passes"].push_back(std::move(pass));

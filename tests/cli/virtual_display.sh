@@ -9,15 +9,15 @@ start_display() {
   display=:$(head -n1 "$out/display")
   [ "$display" != ":" ] || fail "Xvfb did not start"
 }
-# wait_for_showing LOG: waits (up to a minute) until the gallery writing LOG says it shows its first
-# frame ("vitrine: showing SCENE on DEVICE"), instead of sleeping for a start's worst case.
-wait_for_showing() {
-  for _ in $(seq 600); do grep -q "^vitrine: showing " "$1" 2>/dev/null && return 0; sleep 0.1; done
-  fail "the gallery showed no frame within a minute"
+# wait_for_line LOG PATTERN WHAT: waits (up to a minute) until a line of LOG matches PATTERN (grep), instead
+# of sleeping for a busy machine's worst case; fails saying WHAT did not happen.
+wait_for_line() {
+  for _ in $(seq 600); do grep -q "$2" "$1" 2>/dev/null && return 0; sleep 0.1; done
+  fail "$3 within a minute"
 }
-# wait_for_setup LOG OUTPUT: waits (up to a minute) until projector setup shows for OUTPUT ("vitrine:
-# projector setup of OUTPUT"), its calibration card built, before a check drags a corner.
-wait_for_setup() {
-  for _ in $(seq 600); do grep -q "^vitrine: projector setup of $2\$" "$1" 2>/dev/null && return 0; sleep 0.1; done
-  fail "projector setup of $2 did not show within a minute"
-}
+# wait_for_showing LOG: until the gallery writing LOG shows its first frame ("vitrine: showing SCENE on
+# DEVICE").
+wait_for_showing() { wait_for_line "$1" "^vitrine: showing " "the gallery showed no frame"; }
+# wait_for_setup LOG OUTPUT: until projector setup shows for OUTPUT ("vitrine: projector setup of
+# OUTPUT"), its calibration card built, before a check drags a corner.
+wait_for_setup() { wait_for_line "$1" "^vitrine: projector setup of $2\$" "projector setup of $2 did not show"; }

@@ -47,12 +47,12 @@ inline uint32_t nearestFirstWalk(glm::vec3 forward) {
 // A chunk holding the whole grid is walked as the grid; a chunk of a split nest holds a run of
 // strands in index order, z slowest, so it is walked as a row, from its far end when the camera looks
 // down z (and the chunks are taken in that order too: chunksDescending).
+inline bool chunksDescending(glm::vec3 forward) { return forward.z < 0.0f; }
+
 inline StrandWalk chunkWalk(glm::uvec3 grid, uint32_t chunkStrands, glm::vec3 forward) {
   if (uint64_t(grid.x) * grid.y * grid.z == chunkStrands) return {grid, nearestFirstWalk(forward)};
-  return {{chunkStrands, 1, 1}, walkCode(0, 1, forward.z < 0.0f ? 1u : 0u)};
+  return {{chunkStrands, 1, 1}, walkCode(0, 1, chunksDescending(forward) ? 1u : 0u)};
 }
-
-inline bool chunksDescending(glm::vec3 forward) { return forward.z < 0.0f; }
 
 // The chunk-local strand (x + X (y + Y z)) walked `position`-th.
 inline uint32_t walkedStrand(uint32_t position, glm::uvec3 dims, uint32_t code) {
