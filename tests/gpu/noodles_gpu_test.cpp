@@ -1,6 +1,7 @@
 // The integrate pass on the device against the CPU reference (src/scenes/noodles/strand.h): a few
 // small grids of strands in each field, integrator, tangent and frame mode, read back node by node;
-// and the flow's bake (bake.comp, integrate_baked.comp) against theirs (bakeField, strandVelocity).
+// the flow's bake (bake.comp, integrate_baked.comp) against theirs (bakeField, strandVelocity); and
+// the raster's walk over a chunk's strands (raster_push.glsl) against strand_walk.h.
 #include "gpu/barriers.h"
 #include "host/offscreen.h"
 #include "gpu/resources.h"
@@ -8,10 +9,12 @@
 #include "scenes/noodles/raster_pass.h"
 #include "scenes/noodles/strand.h"
 #include "scenes/noodles/strand_layout.h"
+#include "scenes/noodles/strand_walk.h"
 #include "support/gpu_test.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace vitrine::noodles {
@@ -204,6 +207,84 @@ TEST_F(NoodlesGpu, LiftedBitangentRk4InTheBakedFlowMatchesTheCpu) {
   s.integrator = Integrator::Rk4;
   s.bake = planFieldBake(s, FieldSource::Baked);
   expectMatchesReference(s, deviceBudget(device()));
+}
+
+// The segment each raster invocation takes, as the GLSL computes it (walk_probe.comp runs
+// raster_push.glsl's phaseSegment): invocations run strand-major, strands in strand_walk.h's order
+// (walkedStrand, nearest first), the occluders every NOODLES_OCCLUDER_STRIDE-th strand walked and the
+// rest the others in walk order, so the two phases take every segment exactly once. For a grid seen
+// along each axis both ways and askew, and for a chunk of a split nest (walked as a row).
+TEST_F(NoodlesGpu, TheShaderWalksTheStrandsAsTheCppDoes) {
+  const glm::uvec3 grid{5, 4, 3};
+  const uint32_t segments = 3;
+  gpu::ComputeProgram probe(programs_, "noodles/walk_probe.comp");
+  struct Walked {
+    uint32_t strands;
+    glm::vec3 forward;
+  };
+  const std::vector<Walked> walks = {{60, {1, 0.2f, 0.1f}},    {60, {-1, 0.2f, 0.1f}}, {60, {0.1f, 1, -0.2f}},
+                                     {60, {0.1f, -1, 0.2f}},   {60, {0.2f, 0.1f, 1}},  {60, {-0.3f, 0.4f, -1}},
+                                     {60, {0.6f, -0.5f, 0.6f}}, {25, {0.1f, 0.2f, 1}}, {25, {0.1f, 0.2f, -1}}};
+  for (const Walked& w : walks) {
+    const StrandWalk walk = chunkWalk(grid, w.strands, glm::normalize(w.forward));
+    const uint32_t occluders = (w.strands + shader::NOODLES_OCCLUDER_STRIDE - 1) / shader::NOODLES_OCCLUDER_STRIDE;
+    std::vector<uint32_t> taken(size_t(w.strands) * segments, 0);  // times each segment is taken by the two phases
+    for (uint32_t phase : {shader::NOODLES_RASTER_ALL, shader::NOODLES_RASTER_OCCLUDERS, shader::NOODLES_RASTER_REST}) {
+      shader::NoodlesRasterPush push{};
+      push.segmentsPerStrand = segments;
+      push.chunkStrands = w.strands;
+      push.phase = phase;
+      push.phaseStrands = phase == shader::NOODLES_RASTER_ALL         ? w.strands
+                          : phase == shader::NOODLES_RASTER_OCCLUDERS ? occluders
+                                                                      : w.strands - occluders;
+      push.walkX = walk.dims.x;
+      push.walkY = walk.dims.y;
+      push.walk = walk.code;
+      const uint32_t count = push.phaseStrands * segments;
+      gpu::Buffer out(device(), count * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Readback,
+                      "walk probe");
+      device().submitNow([&](VkCommandBuffer cmd) {
+        probe.bind(cmd);
+        probe.push(cmd, gpu::Bindings().storageBuffer("Segments", out.handle()));
+        probe.constants(cmd, push);
+        out.use(cmd, gpu::use::ComputeWriteBuffer);
+        probe.dispatchOver(cmd, count);
+        out.use(cmd, gpu::use::HostReadBuffer);
+      });
+      out.invalidate();
+      const auto gpu = out.view<const uint32_t>();
+      uint32_t lastWalked = 0;
+      for (uint32_t i = 0; i < count; ++i) {
+        const std::string where = fmt::format("{} strands, forward ({}, {}, {}), phase {}, invocation {}", w.strands,
+                                              w.forward.x, w.forward.y, w.forward.z, phase, i);
+        ASSERT_LT(gpu[i], w.strands * segments) << where;
+        const uint32_t segment = gpu[i] / w.strands, strand = gpu[i] % w.strands;
+        ASSERT_EQ(segment, i % segments) << where << ": neighbours take consecutive segments of one strand";
+        // The walk position of the strand this invocation's strand-major group takes.
+        uint32_t walked = 0;
+        while (walked < w.strands && walkedStrand(walked, walk.dims, walk.code) != strand) ++walked;
+        ASSERT_LT(walked, w.strands) << where;
+        const uint32_t group = i / segments;
+        if (phase == shader::NOODLES_RASTER_ALL) {
+          ASSERT_EQ(walked, group) << where << ": strands in the walk's order";
+          continue;
+        }
+        if (phase == shader::NOODLES_RASTER_OCCLUDERS)
+          ASSERT_EQ(walked, group * shader::NOODLES_OCCLUDER_STRIDE) << where << ": every stride-th strand walked";
+        else
+          ASSERT_NE(walked % shader::NOODLES_OCCLUDER_STRIDE, 0u) << where << ": the rest are not occluders";
+        if (segment == 0) {
+          if (group > 0) {
+            ASSERT_GT(walked, lastWalked) << where << ": in walk order";
+          }
+          lastWalked = walked;
+        }
+        ++taken[gpu[i]];
+      }
+    }
+    EXPECT_TRUE(std::all_of(taken.begin(), taken.end(), [](uint32_t n) { return n == 1; }))
+        << w.strands << " strands: the occluders and the rest take every segment once";
+  }
 }
 
 // A big nest drawn occluders first (every fourth strand walked, a bound a tile, then the rest) is the same
