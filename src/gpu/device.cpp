@@ -293,6 +293,8 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   const auto& adapter = adapters[choose(adapters, options.selector)];
   physical_ = adapter.handle;
   properties_ = adapter.properties;
+  if (auto range = injectedStorageRange())  // a test taking a smaller device's paths (fault_injection.h)
+    properties_.limits.maxStorageBufferRange = uint32_t(std::min<uint64_t>(*range, properties_.limits.maxStorageBufferRange));
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   memoryLimits_ = memoryLimitsOf(physical_, memory_);
   queueFamily_ = static_cast<uint32_t>(universalFamily(physical_, options.surface));

@@ -12,6 +12,7 @@ namespace {
 struct Plan {
   uint64_t at[2] = {0, 0};  // per Fault: the call that fails, 1-based; 0 never
   std::string failingScene;
+  uint64_t storageRange = 0;  // 0: the device's own
 };
 
 Plan readPlan() {
@@ -29,6 +30,7 @@ Plan readPlan() {
     if (item.substr(0, colon) == "device-lost") plan.at[int(Fault::DeviceLost)] = n;
     if (item.substr(0, colon) == "out-of-memory") plan.at[int(Fault::OutOfMemory)] = n;
     if (item.substr(0, colon) == "scene-start") plan.failingScene = item.substr(colon + 1);
+    if (item.substr(0, colon) == "storage-range") plan.storageRange = n;
   }
   return plan;
 }
@@ -41,6 +43,11 @@ const Plan& plan() {
 }  // namespace
 
 bool injectedSceneFailure(std::string_view name) { return !plan().failingScene.empty() && plan().failingScene == name; }
+
+std::optional<uint64_t> injectedStorageRange() {
+  if (plan().storageRange == 0) return std::nullopt;
+  return plan().storageRange;
+}
 
 VkResult injectedFault(Fault fault) {
   static std::atomic<uint64_t> calls[2];

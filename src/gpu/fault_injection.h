@@ -1,13 +1,18 @@
 #pragma once
-// Failures a test can inject, to show what a user sees when the GPU goes away or runs out of memory
-// (VITRINE_INJECT in the environment; read once):
+// Failures a test can inject, to show what a user sees when the GPU goes away or runs out of memory,
+// and a smaller device, to take the paths a smaller GPU takes (VITRINE_INJECT in the environment; read
+// once):
 //   device-lost:N     the Nth queue submission reports VK_ERROR_DEVICE_LOST
 //   out-of-memory:N   the Nth device memory allocation reports VK_ERROR_OUT_OF_DEVICE_MEMORY
 //   scene-start:NAME  scene NAME fails to start, every time (a kiosk skips it)
+//   storage-range:B   the device reports at most B bytes of maxStorageBufferRange (noodles then binds
+//                     its strands in chunks, as 10^7 segments need on a device with 128 MiB)
 // Several are separated by commas. Each fires once per process, so a kiosk's restarted gallery runs
 // on, as it would after a driver reset.
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace vitrine::gpu {
@@ -19,5 +24,8 @@ VkResult injectedFault(Fault fault);
 
 // True when scene `name` is to fail as it starts.
 bool injectedSceneFailure(std::string_view name);
+
+// The storage-buffer range the device is to report instead of its own, when smaller.
+std::optional<uint64_t> injectedStorageRange();
 
 }  // namespace vitrine::gpu
