@@ -509,11 +509,26 @@ Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements
       VK_CHECK(injectedFault(Fault::OutOfMemory) != VK_SUCCESS ? VK_ERROR_OUT_OF_DEVICE_MEMORY
                                                                : vkAllocateMemory(device_, &info, nullptr, &memory));
       noteAllocated(memory, requirements.size);
+      if (injectedDirtyMemory()) dirty(memory, i, requirements.size);
       return Unique<VkDeviceMemory>(device_, memory);
     }
   }
   throw Error(
       fmt::format("No Vulkan memory type fits a {} byte allocation with flags {:#x}", requirements.size, wanted));
+}
+
+// VITRINE_INJECT=dirty-memory (fault_injection.h): fresh memory the host can reach filled with garbage.
+void Device::dirty(VkDeviceMemory memory, uint32_t type, VkDeviceSize size) const {
+  const VkMemoryPropertyFlags flags = memory_.memoryTypes[type].propertyFlags;
+  if (!(flags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)) return;
+  void* bytes = nullptr;
+  VK_CHECK(vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, &bytes));
+  std::memset(bytes, 0x3f, size_t(size));
+  if (!(flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT)) {
+    const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory, 0, VK_WHOLE_SIZE};
+    VK_CHECK(vkFlushMappedMemoryRanges(device_, 1, &range));
+  }
+  vkUnmapMemory(device_, memory);
 }
 
 void Device::submitNow(const std::function<void(VkCommandBuffer)>& record) const {

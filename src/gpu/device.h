@@ -145,6 +145,7 @@ class Device {
   PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
 
  private:
+  void dirty(VkDeviceMemory memory, uint32_t type, VkDeviceSize size) const;
   // Loaded only when the device captures pipeline statistics.
   PFN_vkGetPipelineExecutablePropertiesKHR getExecutableProperties_ = nullptr;
   PFN_vkGetPipelineExecutableStatisticsKHR getExecutableStatistics_ = nullptr;

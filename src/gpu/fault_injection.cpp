@@ -13,6 +13,7 @@ struct Plan {
   uint64_t at[2] = {0, 0};  // per Fault: the call that fails, 1-based; 0 never
   std::string failingScene;
   uint64_t storageRange = 0;  // 0: the device's own
+  bool dirtyMemory = false;
 };
 
 Plan readPlan() {
@@ -31,6 +32,7 @@ Plan readPlan() {
     if (item.substr(0, colon) == "out-of-memory") plan.at[int(Fault::OutOfMemory)] = n;
     if (item.substr(0, colon) == "scene-start") plan.failingScene = item.substr(colon + 1);
     if (item.substr(0, colon) == "storage-range") plan.storageRange = n;
+    if (item.substr(0, colon) == "dirty-memory") plan.dirtyMemory = n != 0;
   }
   return plan;
 }
@@ -48,6 +50,8 @@ std::optional<uint64_t> injectedStorageRange() {
   if (plan().storageRange == 0) return std::nullopt;
   return plan().storageRange;
 }
+
+bool injectedDirtyMemory() { return plan().dirtyMemory; }
 
 VkResult injectedFault(Fault fault) {
   static std::atomic<uint64_t> calls[2];

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# dirty_memory.sh VITRINE OUTDIR: no frame reads GPU memory that nothing wrote. lavapipe hands out zeroed
+# memory, where a GPU may hand back another program's; VITRINE_INJECT=dirty-memory fills every fresh
+# allocation with garbage (src/gpu/fault_injection.h), and each run below must draw, bit for bit, what it
+# draws in clean memory: every scene, the paths its options take (the diamond, the baked flow, the
+# history TAA keeps, the flash guard's), and bloom's lattice, which only its clear at creation keeps
+# empty outside the crystal (without it, 10 % of this frame's pixels differ).
+set -eu
+vitrine=$1; out=$2; inputs=$(dirname "$0")/../input
+rm -rf "$out"; mkdir -p "$out"
+runs=(  # scene|frames|options
+  "bloom|40|--set lattice=48 --input $inputs/bloom_press.txt"
+  "glass|6|"
+  "glass|6|--set shape=diamond --set optics=physical"
+  "neon|6|--preset dense"
+  "kifs|6|"
+  "noodles|6|--set field_source=baked"
+  "noodles|6|--preset smooth --flash-guard on"
+)
+for i in "${!runs[@]}"; do
+  IFS='|' read -r scene frames options <<<"${runs[$i]}"
+  for memory in clean dirty; do
+    inject=; [ $memory = dirty ] && inject=dirty-memory:1
+    # shellcheck disable=SC2086 # the options are words
+    VITRINE_INJECT=$inject "$vitrine" --headless --scene "$scene" --size 96x54 --validate --frames "$frames" $options \
+      --out "$out/$i-$memory.exr" >/dev/null
+  done
+  result=$("$vitrine" compare "$out/$i-clean.exr" "$out/$i-dirty.exr" 2>&1) || true
+  echo "$scene $options: $result"
+  [[ $result == *"max difference 0.00000,"* ]] || { echo "$scene $options reads memory nothing wrote"; exit 1; }
+done
