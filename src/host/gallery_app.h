@@ -1,0 +1,180 @@
+#pragma once
+// The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
+// screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
+// Its parts live in four files: gallery.cpp (start, the frame loop, the simulation's steps),
+// gallery_scenes.cpp (switching scenes, the kiosk's schedule and cross-fades), gallery_menu.cpp (keys,
+// the menu, parameter edits and presets, screenshots and captures) and gallery_projector.cpp
+// (projector setup and the pins it keeps). runGallery (host/modes.h) is the way in.
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "audio/engine.h"
+#include "core/assets.h"
+#include "host/cost_guard.h"
+#include "host/cursor_tracker.h"
+#include "host/fixed_step.h"
+#include "host/frame_slot.h"
+#include "host/gallery_live.h"
+#include "host/gallery_settings.h"
+#include "host/kiosk.h"
+#include "host/live_capture.h"
+#include "host/menu.h"
+#include "host/modes.h"
+#include "host/output_window.h"
+#include "host/overlay.h"
+#include "host/param_panel.h"
+#include "host/playlist.h"
+#include "host/projector_setup.h"
+#include "host/remote_link.h"
+#include "host/scene_renderer.h"
+#include "host/screenshot.h"
+#include "host/swapchain.h"
+#include "host/tier_watch.h"
+#include "host/user_presets.h"
+#include "host/window.h"
+
+namespace vitrine::host {
+
+class Gallery {
+ public:
+  using Clock = std::chrono::steady_clock;
+  static constexpr uint32_t kFramesInFlight = 2;
+  // The scene `name` names; throws vitrine::Error naming the scenes there are.
+  static const SceneInfo& namedScene(const std::string& name);
+
+  // `named`: the --scene the user asked for; null: the scene shown last time, else the first.
+  // `playlist`: the kiosk's (--playlist), checked before the window opens; empty: every scene in turn.
+  Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist = {});
+  const SceneInfo& showing() const { return renderer_->info(); }
+  ~Gallery() { vkDeviceWaitIdle(device_); }  // also when leaving by an exception, with frames in flight
+  Gallery(const Gallery&) = delete;
+  Gallery& operator=(const Gallery&) = delete;
+  int run();
+
+ private:
+  void frame();
+  void handleKeys();
+  void startSetup();
+  void endSetup(ProjectorSetup::Key how);
+  // Outputs by number: 0 the main window, then --outputs' windows in order.
+  maths::OutputWarp& warpOf(size_t output);
+  std::string_view outputName(size_t output) const { return output == 0 ? kMainOutput : outputs_[output - 1]->name(); }
+  VkExtent2D outputExtent(size_t output) const { return output == 0 ? swapchain_.extent() : outputs_[output - 1]->extent(); }
+  // How the main window shows the frame: its own warp, or the one of the output being set up.
+  const maths::OutputWarp* shownWarp() { return setup_.active() && setupOutput_ > 0 ? &warpOf(setupOutput_) : warp(); }
+  std::optional<maths::OutputWarp> savedWarp(std::string_view output);
+  void keepWarp(size_t output);
+  void switchScene(const SceneInfo& info);
+  void simulate();
+  void collect(uint32_t slot);
+  void showMenu();
+  void showToast();
+  std::string clockNote() const;
+  void recordWindowCopy(VkCommandBuffer cmd);
+  void pollShaders();
+  void applyEdit(const PanelEdit& edit);
+  void rememberValues();
+  void toggleCapture();
+  double frameMs() const { return std::max(gpuMs_, frameSeconds_ * 1e3); }
+  void applyEditNow(const PanelEdit& edit);
+  bool managePresets(const PanelEdit& edit);
+  std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
+  void kioskStep(double elapsed, bool touched);
+  const SceneInfo& entryScene(size_t entry) const;
+  size_t entryOf(const SceneInfo& info) const;
+  void startEntryPreset(SceneRenderer& renderer, size_t entry);
+  void finishFade();
+  void nowShowing();
+  bool touchedThisFrame(const Pointer& pointer);
+
+  Assets assets_ = Assets::locate();
+  std::vector<std::string> missingAssets_ = assets_.missing();
+  Window window_;
+  std::optional<maths::OutputWarp> warp_;  // --output-warp: how this output shows the frame (a projector's)
+  const maths::OutputWarp* warp() const { return warp_ ? &*warp_ : nullptr; }
+  gpu::Instance instance_;
+  Surface surface_;
+  gpu::Device device_;
+  gpu::ProgramLibrary programs_;
+  GallerySettings settings_;
+  params::PresetStore presets_ = openUserPresets(params::LoadMode::MoveBadAside);  // the user's, beside the settings
+  MenuLayout menuLayout_;  // before the overlay, whose layout file is written when it goes
+  TierWatch tiers_;        // before the renderers, whose scenes report to it
+  audio::AudioOutput audio_;  // before the renderer: a scene going away may still send it a note
+  FlashGuard guard_;          // before the renderers, which drain the device before it goes
+  bool flashGuard_ = false;   // --flash-guard, --kiosk, --reduced-motion, then the menu's switch
+  std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
+  std::unique_ptr<SceneRenderer> incoming_;  // kiosk mode: the scene fading in, made at the first fade
+  Swapchain swapchain_;
+  Overlay overlay_;
+  Screenshots screenshots_;
+  LiveCapture capture_;
+  std::vector<FrameSlot> slots_;
+  std::vector<std::unique_ptr<OutputWindow>> outputs_;  // --outputs: more windows showing the same frame
+  uint64_t frameCount_ = 0;
+  uint64_t sceneSerial_ = 0;           // counts scene switches and restarts
+  std::vector<uint64_t> slotSerial_ = std::vector<uint64_t>(kFramesInFlight);  // the scene each slot drew
+
+  FrameInput input_;  // the next simulation step's
+  FrameInput shown_;  // the last step's: what the frame being recorded shows
+  FixedStep steps_;   // after input_, whose dt it is built from
+  StepCost stepCost_;  // what a step of the scene showing costs: how many fit in a frame
+  TimeControl time_;  // pause, single steps, speed
+  // The picture as the window shows it, at the window's size: what F12 and F9 save.
+  std::optional<gpu::Image> windowCopy_;
+  bool helpShown_ = false;
+  ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
+  const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
+  size_t setupOutput_ = 0;                  // the output whose pin setup moves
+  std::optional<size_t> setupShown_;        // the output whose setup the log last said is showing
+  static constexpr std::string_view kMainOutput = "main";  // the main window's name in the settings file
+  CursorTracker cursor_;
+  std::vector<int> keys_;  // pressed since the last step
+  std::vector<std::string> drops_;  // files dropped since the last step
+
+  bool vsync_;
+  std::string warpFile_;  // --output-warp's file, where projector setup writes a kept pin
+  bool uiHidden_ = false;
+  bool hasScene_ = false;
+  const SceneInfo* nextScene_ = nullptr;
+  Clock::time_point lastFrame_ = Clock::now();
+  Clock::time_point firstShown_{};  // when the first frame was presented: the run's frame rate counts from it
+  Clock::time_point lastShaderPoll_ = Clock::now();
+  double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
+  double cpuMs_ = 0.0;
+  double gpuMs_ = 0.0;  // the last finished frame's, all passes
+  std::vector<gpu::PassTime> passes_;
+  std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
+  Clock::time_point reloadNoted_{};
+  std::string note_;  // where the last screenshot went, a key with no scene: shown for kNoteSeconds
+  Clock::time_point noted_{};
+  ParamPanel panel_;
+  std::string panelError_;  // why the last edit was refused
+  std::optional<PanelEdit> costlyEdit_;  // an edit that would freeze the window, waiting for a yes
+  std::string costlyWhy_;
+
+  // Kiosk mode (--kiosk).
+  std::optional<KioskSchedule> kiosk_;
+  // --playlist: the kiosk's entries. Their presets apply over the saved values and are not remembered,
+  // so that a line without a preset shows the scene as saved, whatever an earlier line set.
+  std::vector<PlaylistEntry> playlist_;
+  FrameInput incomingInput_, incomingShown_;  // the incoming scene's steps during a fade
+  float fade_ = 0.0f;                         // its weight in the output
+  Pointer lastPointer_;                       // to tell a moved mouse
+  // Remote play (--remote): keys a client changed, per scene; kept out of the settings file unless
+  // --remote-saves.
+  std::optional<RemoteLink> remote_;
+  std::map<std::string, std::set<std::string>, std::less<>> remoteKeys_;
+  bool remoteSaves_ = false;
+  std::vector<ActionCall> actions_;  // from clients, for the next step
+  std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
+};
+
+}  // namespace vitrine::host
