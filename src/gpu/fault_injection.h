@@ -10,8 +10,8 @@
 //   dirty-memory:1    every device allocation the host can map starts filled with garbage (every byte
 //                     0x3f: 0.75 in a float, 1.8 in a half float), as a GPU's recycled memory may, where
 //                     lavapipe's starts zeroed: a frame that reads memory nothing wrote shows it
-// Several are separated by commas. Each fires once per process, so a kiosk's restarted gallery runs
-// on, as it would after a driver reset.
+// Several are separated by commas. The two faults fire once per process, so a kiosk's restarted gallery
+// runs on, as it would after a driver reset; the smaller device and the dirty memory hold throughout.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
