@@ -230,6 +230,7 @@ void Program::rebuild() {
   Unique<VkPipeline> fresh(device(), build());
   if (pipeline_) device().retire(std::move(pipeline_));  // frames in flight may still run the old one
   pipeline_ = std::move(fresh);
+  ++builds_;
   device().name(pipeline_.get(), VK_OBJECT_TYPE_PIPELINE, label_);
 }
 

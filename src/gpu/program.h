@@ -113,6 +113,10 @@ class Program {
   Program& operator=(const Program&) = delete;
 
   VkPipeline pipeline() const { return pipeline_; }
+  // How many pipelines this program has built: 1, then one more at each hot reload. What a scene
+  // compares to know its cached output came from the current code (a retired pipeline's handle may be
+  // reused by a later one, so handles cannot tell).
+  uint32_t builds() const { return builds_; }
   VkPipelineLayout layout() const { return layout_; }
   const std::vector<std::string>& shaders() const { return shaders_; }
 
@@ -156,6 +160,7 @@ class Program {
   Unique<VkDescriptorSetLayout> setLayout_;
   Unique<VkPipelineLayout> layout_;
   Unique<VkPipeline> pipeline_;
+  uint32_t builds_ = 0;
 };
 
 class ComputeProgram final : public Program {

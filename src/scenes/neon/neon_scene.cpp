@@ -142,7 +142,7 @@ class NeonScene final : public Scene {
   void resize(VkExtent2D target) override {
     extent_ = target;
     glowCleared_ = false;  // a new target
-    facadeDrawnWith_ = VK_NULL_HANDLE;
+    facadeDrawnWith_ = 0;
     aspect_ = float(target.width) / float(std::max(target.height, 1u));
   }
 
@@ -193,9 +193,9 @@ class NeonScene final : public Scene {
   std::vector<ChainParams> stepsPending_;  // one per simulation step since the chains last moved
   gpu::ImageHandle colour_, depth_, glow_, lighting_, facadeColour_, facadeDepth_;
   bool glowCleared_ = false;  // the tubes' target holds zeros (cleared after its last use, or at creation)
-  // The facade program's pipeline that drew facadeColour_ and facadeDepth_ at this size; none: not drawn.
-  // A hot-reloaded facade.comp is a new pipeline, so the edit shows at once, not at the next resize.
-  VkPipeline facadeDrawnWith_ = VK_NULL_HANDLE;
+  // Which of the facade program's builds drew facadeColour_ and facadeDepth_ at this size; 0: not drawn.
+  // A hot-reloaded facade.comp is a new build, so the edit shows at once, not at the next resize.
+  uint32_t facadeDrawnWith_ = 0;
   VkExtent2D extent_{1, 1};
   float aspect_ = 16.0f / 9.0f;
 
@@ -376,7 +376,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   gpu::Image& facadeDepth = frame.image(facadeDepth_);
   const VkSampler nearest = device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp);
   constexpr VkImageLayout kReadOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  if (facadeDrawnWith_ != facade_.pipeline()) {
+  if (facadeDrawnWith_ != facade_.builds()) {
     const auto pass = frame.pass("neon facade");
     gpu::Image& lighting = frame.image(lighting_);
     gpu::Buffer& boxes = frame.buffer(boxes_);
@@ -396,7 +396,7 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
                                 .storageImage("colour", facadeColour.view())
                                 .storageImage("depth", facadeDepth.view()));
     facade_.dispatchOver(frame.cmd, extent_);
-    facadeDrawnWith_ = facade_.pipeline();
+    facadeDrawnWith_ = facade_.builds();
   }
   {
     const auto pass = frame.pass("neon tubes");
