@@ -42,14 +42,14 @@ void main() {
   vec3 p = strandStart(pc.firstStrand + local);
   vec3 v = strandVelocity(p, field);
   Frame frame = upVectorFrame(directionOf(v, WORLD_UP));
-  nodes[nodeSlot(pc.chunkStrands, local, 0u)] = packNode(p, frame);
+  nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, 0u)] = packNode(p, frame);
   for (uint k = 1u; k <= pc.segmentsPerStrand; ++k) {
     vec3 next = advance(p, travel(v, INTEGRATE_TANGENT), pc.step, STRAND_INTEGRATOR, INTEGRATE_TANGENT, field);
     v = strandVelocity(next, field);
     vec3 tangent = directionOf(v, frame.tangent);
     frame = INTEGRATE_FRAMES == FRAMES_UP ? upVectorFrame(tangent) : transportFrame(frame, p, next, tangent);
     p = next;
-    nodes[nodeSlot(pc.chunkStrands, local, k)] = packNode(p, frame);
+    nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, k)] = packNode(p, frame);
   }
 }
 

@@ -6,6 +6,7 @@
 
 const float QUATERNION_RANGE = 0.70710678;
 const float QUATERNION_STEPS = 1023.0;
+const uint NODE_BLOCK_STRANDS = 32u;  // kNodeBlockStrands
 
 // The same arithmetic as packing.h's loops, written with selects: a dynamically indexed vec4 and a
 // loop over it cost the integrate pass a quarter of its time at 10^8 segments on the H200.
@@ -39,7 +40,12 @@ vec4 unpackQuaternion(uint bits) {
   return q;
 }
 
-uint nodeSlot(uint chunkStrands, uint localStrand, uint node) { return node * chunkStrands + localStrand; }
+// src/scenes/noodles/packing.h's nodeSlot says how nodes are laid out and why.
+uint nodeSlot(uint chunkStrands, uint nodesPerStrand, uint localStrand, uint node) {
+  uint blockStart = localStrand & ~(NODE_BLOCK_STRANDS - 1u);
+  uint width = min(NODE_BLOCK_STRANDS, chunkStrands - blockStart);
+  return blockStart * nodesPerStrand + node * width + (localStrand - blockStart);
+}
 
 uvec4 packNode(vec3 position, Frame frame) {
   return uvec4(floatBitsToUint(position), packQuaternion(frameToQuaternion(frame)));

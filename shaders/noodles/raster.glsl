@@ -37,8 +37,8 @@ Segment loadSegment(uint index) {
   uint segment = index / pc.chunkStrands;
   uint local = index - segment * pc.chunkStrands;
   Segment s;
-  s.a = nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment)]);
-  s.b = nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment + 1u)]);
+  s.a = nodePosition(nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment)]);
+  s.b = nodePosition(nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment + 1u)]);
   s.id = segmentId(index);
   // A neighbour's hit can be cut away only if it reaches in front of the near plane, which it can
   // only near this segment: within the radius twice and the neighbour's length, taken as at most
@@ -47,8 +47,8 @@ Segment loadSegment(uint index) {
   bool near = min(dot(s.a - pc.eye, pc.forward), dot(s.b - pc.eye, pc.forward)) < reach;
   s.checkBefore = near && segment > 0u;
   s.checkAfter = near && segment + 1u < pc.segmentsPerStrand;
-  s.before = s.checkBefore ? nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment - 1u)]) : s.a;
-  s.after = s.checkAfter ? nodePosition(nodes[nodeSlot(pc.chunkStrands, local, segment + 2u)]) : s.b;
+  s.before = s.checkBefore ? nodePosition(nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment - 1u)]) : s.a;
+  s.after = s.checkAfter ? nodePosition(nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment + 2u)]) : s.b;
   s.nearestBits = orderedBits(nearestPossibleHit(pc.eye, s.a, s.b, pc.tubeRadius));
   return s;
 }

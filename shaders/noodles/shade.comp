@@ -26,8 +26,8 @@ const float SIDE_ANGLE = 6.28318530718 / 8.0;
 vec3 shadeSample(uint index, vec2 position) {
   uint segment = index / pc.chunkStrands;
   uint local = index - segment * pc.chunkStrands;
-  uvec4 startNode = nodes[nodeSlot(pc.chunkStrands, local, segment)];
-  uvec4 endNode = nodes[nodeSlot(pc.chunkStrands, local, segment + 1u)];
+  uvec4 startNode = nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment)];
+  uvec4 endNode = nodes[nodeSlot(pc.chunkStrands, pc.segmentsPerStrand + 1u, local, segment + 1u)];
   vec3 a = nodePosition(startNode), b = nodePosition(endNode);
   vec3 direction = normalize(rayThrough(screenView(), position));
   float t = capsuleHit(pc.eye, direction, a, b, pc.tubeRadius);

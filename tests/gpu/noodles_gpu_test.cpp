@@ -79,7 +79,7 @@ class NoodlesGpu : public test::GpuTest {
       for (uint32_t local = 0; local < chunk.strandCount; ++local)
         for (uint32_t k = 0; k < perStrand; ++k)
           strandMajor[size_t(chunk.firstStrand + local) * perStrand + k] =
-              raw[chunk.offset / kNodeBytes + nodeSlot(chunk.strandCount, local, k)];
+              raw[chunk.offset / kNodeBytes + nodeSlot(chunk.strandCount, perStrand, local, k)];
     return strandMajor;
   }
 

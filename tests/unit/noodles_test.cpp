@@ -346,7 +346,22 @@ TEST(NoodlesPacking, NodesRoundTrip) {
 TEST(NoodlesPacking, SegmentCostsAtMostThirtyTwoBytes) {
   for (uint32_t segments : {1u, 2u, 8u, 64u, 4096u})
     EXPECT_LE(double(kNodeBytes) * (segments + 1) / segments, 32.0) << segments;
-  EXPECT_EQ(nodeSlot(100, 7, 3), 307u);  // node-major inside a chunk
+}
+
+TEST(NoodlesPacking, NodesFillTheirChunkOnceInBlocksOfThirtyTwoStrands) {
+  // 100 strands: three blocks of 32 and a last one of 4, each node-major.
+  constexpr uint32_t strands = 100, nodes = 5;
+  EXPECT_EQ(nodeSlot(strands, nodes, 7, 3), 3u * 32u + 7u);
+  EXPECT_EQ(nodeSlot(strands, nodes, 40, 2), 32u * nodes + 2u * 32u + 8u);
+  EXPECT_EQ(nodeSlot(strands, nodes, 97, 4), 96u * nodes + 4u * 4u + 1u);
+  std::vector<int> seen(strands * nodes, 0);
+  for (uint32_t local = 0; local < strands; ++local)
+    for (uint32_t node = 0; node < nodes; ++node) {
+      const uint64_t slot = nodeSlot(strands, nodes, local, node);
+      ASSERT_LT(slot, seen.size());
+      ++seen[slot];
+    }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), ptrdiff_t(seen.size()));  // every slot once
 }
 
 // --------------------------------------------------------------------------------------- the plan
