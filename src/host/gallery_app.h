@@ -127,7 +127,8 @@ class Gallery {
   FixedStep steps_;   // after input_, whose dt it is built from
   StepCost stepCost_;  // what a step of the scene showing costs: how many fit in a frame
   TimeControl time_;  // pause, single steps, speed
-  // The picture as the window shows it, at the window's size: what F12 and F9 save.
+  // The scene's picture at the window's size, scaled as the present pass scales it but without an
+  // output's warp, the flash guard's hold-back or a cross-fade: what F12 and F9 save.
   std::optional<gpu::Image> windowCopy_;
   bool helpShown_ = false;
   ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture

@@ -1,6 +1,6 @@
 #pragma once
-// F12: the picture as the window shows it, at the window's size (the scene's HDR target scaled as the
-// present pass scales it), as EXR (linear) and PNG; the size the scene rendered at (its quality tier's
+// F12: the scene's picture at the window's size (its HDR target scaled as the present pass scales it;
+// an output's warp, the flash guard and a cross-fade are the window's, not the picture's), as EXR (linear) and PNG; the size the scene rendered at (its quality tier's
 // render scale) is written into the files' metadata. The copy is recorded in the frame's own command
 // buffer and the files are written once that frame's fence has signalled, so a screenshot never
 // stalls the GPU.
