@@ -64,7 +64,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       guard_(device_, programs_),
       flashGuard_(flashGuardOn(options)),
       renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
-      swapchain_(device_, surface_.handle(), window_.framebufferSize(), options.vsync),
+      swapchain_(device_, surface_.handle(), window_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
                {assets_.font("Fraunces"), assets_.font("CormorantSC")},
                // The menu's place, folds and sections, beside the settings file (not in a kiosk).

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <span>
+#include <string>
+#include <utility>
 
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
@@ -42,8 +45,15 @@ VkCompositeAlphaFlagBitsKHR compositeAlpha(VkCompositeAlphaFlagsKHR supported) {
 
 }  // namespace
 
-Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, VkExtent2D framebuffer, bool vsync)
+Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, GLFWwindow* window, VkExtent2D framebuffer,
+                     bool vsync)
     : device_(device), surface_(surface), presentation_(choosePresentation(device, surface)) {
+  std::string why;
+  shm_ = ShmPresenter::create(device, window, &why);
+  static bool said = false;  // once a run: every output window decides alike
+  if (!std::exchange(said, true) && device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+    std::fprintf(stderr, "vitrine: frames reach the window %s\n",
+                 shm_ ? "through X shared memory (a software device)" : fmt::format("through Vulkan's swapchain ({})", why).c_str());
   build(framebuffer, vsync);
 }
 
@@ -85,6 +95,22 @@ VkPresentModeKHR Swapchain::presentMode(bool vsync) const {
 }
 
 void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
+  if (shm_) {
+    shm_->build(framebuffer);
+    device_.retire(std::move(renderFinished_));  // frames in flight may still signal them
+    renderFinished_.clear();
+    for (uint32_t i = 0; i < shm_->imageCount(); ++i)
+      renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
+    extent_ = framebuffer;
+  } else {
+    buildSwapchain(framebuffer, vsync);
+  }
+  builtFor_ = framebuffer;
+  vsync_ = vsync;
+  stale_ = false;
+}
+
+void Swapchain::buildSwapchain(VkExtent2D framebuffer, bool vsync) {
   VkSurfaceCapabilitiesKHR caps;
   VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(device_.physical(), surface_, &caps));
   // 0xFFFFFFFF means the surface takes its size from the swapchain, i.e. from the framebuffer.
@@ -141,12 +167,10 @@ void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
     views_.emplace_back(device_, view);
     renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
   }
-  builtFor_ = framebuffer;
-  vsync_ = vsync;
-  stale_ = false;
 }
 
 std::optional<uint32_t> Swapchain::acquire(VkSemaphore acquired) {
+  if (shm_) return shm_->acquire(acquired);
   uint32_t index = 0;
   const VkResult result = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, acquired, VK_NULL_HANDLE, &index);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) {
@@ -160,6 +184,7 @@ std::optional<uint32_t> Swapchain::acquire(VkSemaphore acquired) {
 }
 
 void Swapchain::present(uint32_t image) {
+  if (shm_) return shm_->present(image, renderFinished_[image]);
   VkSwapchainKHR swapchain = swapchain_;
   VkSemaphore wait = renderFinished_[image];
   VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};

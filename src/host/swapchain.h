@@ -3,17 +3,23 @@
 // its compute present (a UNORM storage image; the shader encodes sRGB) or, where storage images are
 // not offered, with a blit into an sRGB image (the blit encodes). Each image has its own
 // render-finished semaphore: the presentation engine may still wait on one after its frame's fence
-// has signalled, and only acquiring that image again proves it is free.
+// has signalled, and only acquiring that image again proves it is free. On a software device with an
+// X11 window it hands the frames to an ShmPresenter instead of Vulkan's swapchain (shm_presenter.h
+// says why); everything else is the same.
 #include "gpu/device.h"
+#include "host/shm_presenter.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
+
+struct GLFWwindow;
 
 namespace vitrine::host {
 
 class Swapchain {
  public:
-  Swapchain(const gpu::Device& device, VkSurfaceKHR surface, VkExtent2D framebuffer, bool vsync);
+  Swapchain(const gpu::Device& device, VkSurfaceKHR surface, GLFWwindow* window, VkExtent2D framebuffer, bool vsync);
 
   // False when the surface has moved on: resized, suboptimal, or a different vsync asked for.
   bool fits(VkExtent2D framebuffer, bool vsync) const;
@@ -24,13 +30,13 @@ class Swapchain {
   // Shows the image once its render-finished semaphore is signalled.
   void present(uint32_t image);
 
-  VkFormat format() const { return presentation_.format.format; }
+  VkFormat format() const { return shm_ ? ShmPresenter::kFormat : presentation_.format.format; }
   // True: images are written by compute through view(i), which must encode sRGB. False: blitted.
-  bool computeWrites() const { return presentation_.computeWrites; }
+  bool computeWrites() const { return shm_ || presentation_.computeWrites; }
   VkExtent2D extent() const { return extent_; }
-  uint32_t imageCount() const { return uint32_t(images_.size()); }
-  VkImage image(uint32_t index) const { return images_[index]; }
-  VkImageView view(uint32_t index) const { return views_[index]; }
+  uint32_t imageCount() const { return uint32_t(renderFinished_.size()); }
+  VkImage image(uint32_t index) const { return shm_ ? shm_->image(index) : images_[index]; }
+  VkImageView view(uint32_t index) const { return shm_ ? shm_->view(index) : VkImageView(views_[index]); }
   VkSemaphore renderFinished(uint32_t index) const { return renderFinished_[index]; }
 
  private:
@@ -41,11 +47,13 @@ class Swapchain {
   };
   static Presentation choosePresentation(const gpu::Device& device, VkSurfaceKHR surface);
   void build(VkExtent2D framebuffer, bool vsync);
+  void buildSwapchain(VkExtent2D framebuffer, bool vsync);
   VkPresentModeKHR presentMode(bool vsync) const;
 
   const gpu::Device& device_;
   VkSurfaceKHR surface_;
   Presentation presentation_;  // chosen once: what a surface supports does not change with its size
+  std::unique_ptr<ShmPresenter> shm_;  // set where it works: then there is no VkSwapchainKHR
   gpu::Unique<VkSwapchainKHR> swapchain_;
   std::vector<VkImage> images_;  // owned by the swapchain
   std::vector<gpu::Unique<VkImageView>> views_;

@@ -8,7 +8,9 @@
 # next start shows them. kifs under
 # --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
 # whole desktop shows the same frame. --list-monitors lists the display's monitor, and a monitor that is
-# not there, or a bad outputs file, is refused.
+# not there, or a bad outputs file, is refused. On lavapipe the windows are drawn through X shared memory
+# (src/host/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
+# swapchain), so both paths are held to the headless frame.
 set -u
 vitrine=$1; out=$2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -35,6 +37,7 @@ oiiotool "$out/screen.ppm" --colorconvert sRGB linear -o "$out/screen.exr" || fa
 "$vitrine" --headless --scene kifs --reduced-motion --set tier=high --size 1280x360 --out "$out/frame.exr" >/dev/null
 "$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/screen.exr" | tee "$out/compare.txt" |
   grep -q "^pass" || fail "the two outputs do not show the frame's halves: $(cat "$out/compare.txt")"
+grep -q "^vitrine: frames reach the window through X shared memory" "$log" || fail "not drawn through X shared memory"
 keys key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
@@ -85,9 +88,10 @@ black "$out/again.ppm" || fail "the main window's saved pin was not applied"
 black "$out/again-right.ppm" || fail "the right output's saved pin was not applied"
 black "$out/middle.ppm" && fail "the middle of the main window is black: nothing drawn"
 
-# One window spanning the desktop (its one monitor here) shows the whole frame (a fresh settings file).
+# One window spanning the desktop (its one monitor here) shows the whole frame (a fresh settings file),
+# through Vulkan's swapchain.
 : >"$log"
-(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-span exec "$vitrine" --scene kifs --reduced-motion \
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-span VITRINE_PRESENT=swapchain exec "$vitrine" --scene kifs --reduced-motion \
    --set tier=high --span --no-vsync --validate) >"$log" 2>&1 &
 app=$!
 wait_for_showing "$log"
@@ -95,6 +99,8 @@ keys key:Tab sleep:3 shot:0,0,1280,360,"$out/span.ppm" key:Escape
 oiiotool "$out/span.ppm" --colorconvert sRGB linear -o "$out/span.exr" || fail "cannot read the grab"
 "$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/span.exr" | tee "$out/compare.txt" |
   grep -q "^pass" || fail "the spanning window does not show the frame: $(cat "$out/compare.txt")"
+grep -q "^vitrine: frames reach the window through Vulkan's swapchain (VITRINE_PRESENT=swapchain)" "$log" ||
+  fail "VITRINE_PRESENT=swapchain did not choose Vulkan's swapchain"
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app || fail "the spanning gallery failed"
 
