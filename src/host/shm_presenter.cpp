@@ -1,16 +1,15 @@
 #include "host/shm_presenter.h"
 
-#include "gpu/check.h"
-#include "gpu/sync_objects.h"
-
 #include <sys/ipc.h>
 #include <sys/shm.h>
 #include <xcb/shm.h>
 #include <xcb/xcb.h>
 
+#include "gpu/check.h"
+#include "gpu/sync_objects.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -69,7 +68,7 @@ struct ShmPresenter::Connection {
     segment = xcb_generate_id(x);
     xcb_generic_error_t* error = xcb_request_check(x, xcb_shm_attach_checked(x, segment, uint32_t(id), 1));
     shmctl(id, IPC_RMID, nullptr);  // attached (or refused): removed once both sides have let go
-    if (error) {  // a server on another machine cannot reach this one's memory
+    if (error) {                    // a server on another machine cannot reach this one's memory
       free(error);
       shmdt(at);
       return "the X server cannot attach this process's shared memory";
@@ -98,7 +97,8 @@ struct ShmPresenter::Connection {
 namespace {
 
 // What `work` threw, or nothing.
-template <typename Work> std::string attempt(Work&& work) {
+template <typename Work>
+std::string attempt(Work&& work) {
   try {
     work();
     return {};
@@ -138,9 +138,10 @@ std::string unavailable(const gpu::Device& device, GLFWwindow* window) {
     return "VITRINE_PRESENT=swapchain";
   if (device.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) return "not a software device";
   if (!device.storageWriteWithoutFormat()) return "no storage writes without a format";
-  constexpr VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
-                                          VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
-  if ((device.optimalTilingFeatures(ShmPresenter::kFormat) & needed) != needed) return "B8G8R8A8_UNORM cannot be written";
+  constexpr VkFormatFeatureFlags needed =
+      VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+  if ((device.optimalTilingFeatures(ShmPresenter::kFormat) & needed) != needed)
+    return "B8G8R8A8_UNORM cannot be written";
   if (!window || !glfwGetX11Display() || !glfwGetX11Window(window)) return "not an X11 window";
   return {};
 }
@@ -235,8 +236,8 @@ void ShmPresenter::build(VkExtent2D extent) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(slot.copy, slot.image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, slot.pixels.handle(), 1,
-                           &region);
+    vkCmdCopyImageToBuffer(slot.copy, slot.image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, slot.pixels.handle(),
+                           1, &region);
     slot.pixels.use(slot.copy, gpu::use::HostReadBuffer);
     VK_CHECK(vkEndCommandBuffer(slot.copy));
   }
@@ -252,14 +253,14 @@ uint32_t ShmPresenter::acquire(VkSemaphore acquired) {
   }
   next_ = (index + 1) % imageCount();
   const VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, acquired, 0,
-                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0};
+                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,    0};
   device_.submit({VK_NULL_HANDLE, {}, std::span(&signal, 1)});
   return index;
 }
 
 void ShmPresenter::present(uint32_t index, VkSemaphore renderFinished) {
-  const VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0,
-                                   VK_PIPELINE_STAGE_2_COPY_BIT, 0};
+  const VkSemaphoreSubmitInfo wait{
+      VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO, nullptr, renderFinished, 0, VK_PIPELINE_STAGE_2_COPY_BIT, 0};
   const uint64_t copied = device_.submit({slots_[index].copy, std::span(&wait, 1), {}});
   {
     std::lock_guard lock(mutex_);

@@ -7,9 +7,6 @@
 // thread of its own waits for that copy, puts the pixels into a shared-memory segment and asks the X
 // server to draw them, while the next frame renders. The images are ordinary ones of the device,
 // written as a swapchain's are (B8G8R8A8_UNORM through compute, the overlay's render pass last).
-#include "gpu/device.h"
-#include "gpu/resources.h"
-
 #include <condition_variable>
 #include <deque>
 #include <memory>
@@ -18,6 +15,9 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "gpu/device.h"
+#include "gpu/resources.h"
 
 struct GLFWwindow;
 
@@ -58,9 +58,9 @@ class ShmPresenter {
     uint64_t copied;  // the device serial of the copy
     VkExtent2D extent;
   };
-  void run();  // the thread
+  void run();                    // the thread
   void copyOut(const Job& job);  // waits for the job's copy and puts its pixels in the shared segment
-  void drain();  // until every job handed over has reached the window
+  void drain();                  // until every job handed over has reached the window
 
   const gpu::Device& device_;
   std::unique_ptr<Connection> connection_;

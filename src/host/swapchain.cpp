@@ -51,9 +51,11 @@ Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, GLFWwindow
   std::string why;
   shm_ = ShmPresenter::create(device, window, &why);
   static bool said = false;  // once a run: every output window decides alike
-  if (!std::exchange(said, true) && device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
-    std::fprintf(stderr, "vitrine: frames reach the window %s\n",
-                 shm_ ? "through X shared memory (a software device)" : fmt::format("through Vulkan's swapchain ({})", why).c_str());
+  if (!std::exchange(said, true) && device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+    const std::string path =
+        shm_ ? "through X shared memory (a software device)" : fmt::format("through Vulkan's swapchain ({})", why);
+    std::fprintf(stderr, "vitrine: frames reach the window %s\n", path.c_str());
+  }
   build(framebuffer, vsync);
 }
 
