@@ -180,10 +180,10 @@ std::unique_ptr<ShmPresenter> ShmPresenter::create(const gpu::Device& device, GL
 }
 
 ShmPresenter::ShmPresenter(const gpu::Device& device, std::unique_ptr<Connection> connection)
-    : device_(device),
-      connection_(std::move(connection)),
-      pool_(gpu::createCommandPool(device, 0, "window copies")),
-      thread_([this] { run(); }) {}
+    : device_(device), connection_(std::move(connection)), pool_(gpu::createCommandPool(device, 0, "window copies")) {
+  jobs_.reserve(kImages);
+  thread_ = std::thread([this] { run(); });
+}
 
 ShmPresenter::~ShmPresenter() {
   {
@@ -285,7 +285,7 @@ void ShmPresenter::run() {
       changed_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
       if (stopping_) return;
       job = jobs_.front();
-      jobs_.pop_front();
+      jobs_.erase(jobs_.begin());
       busy_ = true;
     }
     std::string failure = attempt([&] { copyOut(job); });

@@ -8,7 +8,6 @@
 // server to draw them, while the next frame renders. The images are ordinary ones of the device,
 // written as a swapchain's are (B8G8R8A8_UNORM through compute, the overlay's render pass last).
 #include <condition_variable>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -71,8 +70,8 @@ class ShmPresenter {
 
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<Job> jobs_;
-  bool busy_ = false;  // the thread is showing a job it took
+  std::vector<Job> jobs_;  // at most one a slot: reserved once, so handing over a frame allocates nothing
+  bool busy_ = false;      // the thread is showing a job it took
   bool stopping_ = false;
   std::string failed_;  // what stopped the thread, said by the next acquire
   std::thread thread_;
