@@ -83,7 +83,8 @@ OutputWindow::OutputWindow(const gpu::Instance& instance, const gpu::Device& dev
     throw Error(fmt::format("{} cannot present to output {}'s window", device.properties().deviceName, index));
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
-  swapchain_.emplace(device, surface, window_, VkExtent2D{uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))}, vsync);
+  const VkExtent2D framebuffer{uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1))};
+  swapchain_.emplace(device, surface, window_, framebuffer, vsync);
   for (uint32_t slot = 0; slot < framesInFlight; ++slot)
     acquired_.push_back(gpu::createSemaphore(device, fmt::format("output {} image acquired {}", index, slot)));
 }
