@@ -13,6 +13,7 @@ struct Plan {
   uint64_t at[2] = {0, 0};  // per Fault: the call that fails, 1-based; 0 never
   std::string failingScene;
   uint64_t storageRange = 0;  // 0: the device's own
+  uint64_t shmLimit = 0;      // 0: the system's own
   bool dirtyMemory = false;
 };
 
@@ -32,6 +33,7 @@ Plan readPlan() {
     if (item.substr(0, colon) == "out-of-memory") plan.at[int(Fault::OutOfMemory)] = n;
     if (item.substr(0, colon) == "scene-start") plan.failingScene = item.substr(colon + 1);
     if (item.substr(0, colon) == "storage-range") plan.storageRange = n;
+    if (item.substr(0, colon) == "shm-bytes") plan.shmLimit = n;
     if (item.substr(0, colon) == "dirty-memory") plan.dirtyMemory = n != 0;
   }
   return plan;
@@ -42,14 +44,15 @@ const Plan& plan() {
   return read;
 }
 
+std::optional<uint64_t> limit(uint64_t bytes) { return bytes == 0 ? std::nullopt : std::optional(bytes); }
+
 }  // namespace
 
 bool injectedSceneFailure(std::string_view name) { return !plan().failingScene.empty() && plan().failingScene == name; }
 
-std::optional<uint64_t> injectedStorageRange() {
-  if (plan().storageRange == 0) return std::nullopt;
-  return plan().storageRange;
-}
+std::optional<uint64_t> injectedStorageRange() { return limit(plan().storageRange); }
+
+std::optional<uint64_t> injectedShmLimit() { return limit(plan().shmLimit); }
 
 bool injectedDirtyMemory() { return plan().dirtyMemory; }
 

@@ -7,6 +7,9 @@
 //   scene-start:NAME  scene NAME fails to start, every time (a kiosk skips it)
 //   storage-range:B   the device reports at most B bytes of maxStorageBufferRange (noodles then binds
 //                     its strands in chunks, as 10^7 segments need on a device with 128 MiB)
+//   shm-bytes:B       the system grants shared-memory segments of at most B bytes (as a small
+//                     kernel.shmmax would): a software device's window bigger than that is drawn
+//                     through Vulkan's swapchain instead (host/shm_presenter.h)
 //   dirty-memory:1    every device allocation the host can map starts filled with garbage (every byte
 //                     0x3f: 0.75 in a float, 1.8 in a half float), as a GPU's recycled memory may, where
 //                     lavapipe's starts zeroed: a frame that reads memory nothing wrote shows it
@@ -30,6 +33,9 @@ bool injectedSceneFailure(std::string_view name);
 
 // The storage-buffer range the device is to report instead of its own, when smaller.
 std::optional<uint64_t> injectedStorageRange();
+
+// The most bytes a shared-memory segment may have, when limited.
+std::optional<uint64_t> injectedShmLimit();
 
 // True when fresh device memory is to be filled with garbage.
 bool injectedDirtyMemory();

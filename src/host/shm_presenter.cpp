@@ -6,6 +6,7 @@
 #include <xcb/xcb.h>
 
 #include "gpu/check.h"
+#include "gpu/fault_injection.h"
 #include "gpu/sync_objects.h"
 
 #define GLFW_INCLUDE_NONE
@@ -58,6 +59,8 @@ struct ShmPresenter::Connection {
   std::string reserve(size_t bytes) {
     if (size >= bytes) return {};
     release();
+    if (const std::optional<uint64_t> limit = gpu::injectedShmLimit(); limit && bytes > *limit)  // as shmmax refuses
+      return fmt::format("shmget of {} bytes: {} (VITRINE_INJECT)", bytes, std::strerror(EINVAL));
     const int id = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
     if (id < 0) return fmt::format("shmget of {} bytes: {}", bytes, std::strerror(errno));
     void* at = shmat(id, nullptr, 0);
@@ -198,8 +201,12 @@ ShmPresenter::~ShmPresenter() {
   device_.retire(std::move(pool_));
 }
 
-void ShmPresenter::build(VkExtent2D extent) {
+std::string ShmPresenter::build(VkExtent2D extent) {
   drain();
+  // The segment for this size now, while the thread is idle: where the system will not grant one
+  // (a kernel.shmmax under the window's bytes), the caller still has Vulkan's swapchain to turn to.
+  const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+  if (std::string why = connection_->reserve(bytes); !why.empty()) return why;
   if (!slots_.empty()) {
     std::vector<VkCommandBuffer> copies;
     for (const Slot& slot : slots_) copies.push_back(slot.copy);
@@ -209,7 +216,6 @@ void ShmPresenter::build(VkExtent2D extent) {
   }
   extent_ = extent;
   next_ = 0;
-  const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
   std::vector<VkCommandBuffer> copies(kImages);
   const VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, nullptr, pool_,
                                              VK_COMMAND_BUFFER_LEVEL_PRIMARY, kImages};
@@ -241,6 +247,7 @@ void ShmPresenter::build(VkExtent2D extent) {
     slot.pixels.use(slot.copy, gpu::use::HostReadBuffer);
     VK_CHECK(vkEndCommandBuffer(slot.copy));
   }
+  return {};
 }
 
 uint32_t ShmPresenter::acquire(VkSemaphore acquired) {
@@ -311,8 +318,7 @@ void ShmPresenter::run() {
 void ShmPresenter::copyOut(const Job& job) {
   device_.wait(job.copied);
   const Slot& slot = slots_[job.slot];
-  const size_t bytes = size_t(job.extent.width) * job.extent.height * 4;
-  if (std::string why = connection_->reserve(bytes); !why.empty()) throw Error(why);
+  const size_t bytes = size_t(job.extent.width) * job.extent.height * 4;  // build() reserved the segment
   slot.pixels.invalidate();
   std::memcpy(connection_->pixels, slot.pixels.mapped(), bytes);
 }

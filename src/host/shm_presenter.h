@@ -31,7 +31,10 @@ class ShmPresenter {
   static std::unique_ptr<ShmPresenter> create(const gpu::Device& device, GLFWwindow* window, std::string* why);
   ~ShmPresenter();
 
-  void build(VkExtent2D extent);  // waits for the frames on their way to the window, then retires the images
+  // Waits for the frames on their way to the window, retires the images and makes new ones. An empty
+  // string, or why the window cannot be drawn through shared memory at this size (the presenter is
+  // then of no further use).
+  std::string build(VkExtent2D extent);
   VkExtent2D extent() const { return extent_; }
   uint32_t imageCount() const { return uint32_t(slots_.size()); }
   VkImage image(uint32_t index) const { return slots_[index].image.handle(); }

@@ -48,8 +48,11 @@ VkCompositeAlphaFlagBitsKHR compositeAlpha(VkCompositeAlphaFlagsKHR supported) {
 Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, GLFWwindow* window, VkExtent2D framebuffer,
                      bool vsync)
     : device_(device), surface_(surface), presentation_(choosePresentation(device, surface)) {
-  std::string why;
-  shm_ = ShmPresenter::create(device, window, &why);
+  std::string why = "the surface's format is not the presenter's";
+  // Only where the swapchain would draw in the same format, so that falling back to it (build) leaves
+  // the overlay's render pass, made for format(), valid.
+  if (presentation_.computeWrites && presentation_.format.format == ShmPresenter::kFormat)
+    shm_ = ShmPresenter::create(device, window, &why);
   static bool said = false;  // once a run: every output window decides alike
   if (!std::exchange(said, true) && device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
     const std::string path =
@@ -98,15 +101,21 @@ VkPresentModeKHR Swapchain::presentMode(bool vsync) const {
 
 void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
   if (shm_) {
-    shm_->build(framebuffer);
+    const std::string refused = shm_->build(framebuffer);
     device_.retire(std::move(renderFinished_));  // frames in flight may still signal them
     renderFinished_.clear();
-    for (uint32_t i = 0; i < shm_->imageCount(); ++i)
-      renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
-    extent_ = framebuffer;
-  } else {
-    buildSwapchain(framebuffer, vsync);
+    if (refused.empty()) {
+      for (uint32_t i = 0; i < shm_->imageCount(); ++i)
+        renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
+      extent_ = framebuffer;
+    } else {
+      // Vulkan's swapchain draws the same pixels, only slower on a software device: the window goes on.
+      std::fprintf(stderr, "vitrine: frames reach a %ux%u window through Vulkan's swapchain from now on (%s)\n",
+                   framebuffer.width, framebuffer.height, refused.c_str());
+      shm_.reset();  // its images are retired behind the frames in flight
+    }
   }
+  if (!shm_) buildSwapchain(framebuffer, vsync);
   builtFor_ = framebuffer;
   vsync_ = vsync;
   stale_ = false;

@@ -7,7 +7,7 @@
 # (F7) drags a corner of each output and keeps the pins in the warp file and the settings file, and the
 # next start shows them. kifs under
 # --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
-# whole desktop shows the same frame. --list-monitors lists the display's monitor, and a monitor that is
+# whole desktop shows the same frame, and so does a window grown past the shared memory the system grants. --list-monitors lists the display's monitor, and a monitor that is
 # not there, or a bad outputs file, is refused. On lavapipe the windows are drawn through X shared memory
 # (src/host/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
 # swapchain), so both paths are held to the headless frame.
@@ -87,6 +87,25 @@ wait $app || fail "the gallery with saved pins failed"
 black "$out/again.ppm" || fail "the main window's saved pin was not applied"
 black "$out/again-right.ppm" || fail "the right output's saved pin was not applied"
 black "$out/middle.ppm" && fail "the middle of the main window is black: nothing drawn"
+
+# Where the system grants no shared-memory segment as big as the window (VITRINE_INJECT=shm-bytes: 640x360
+# fits, 1280x360 does not), the window goes on through Vulkan's swapchain: F11 makes it fullscreen, and it
+# shows the whole frame.
+: >"$log"
+(cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-small VITRINE_INJECT=shm-bytes:1000000 exec "$vitrine" \
+   --scene kifs --reduced-motion --set tier=high --size 640x360 --no-vsync --validate) >"$log" 2>&1 &
+app=$!
+wait_for_showing "$log"
+keys key:Tab key:F11 sleep:3 shot:0,0,1280,360,"$out/grown.ppm" key:Escape
+oiiotool "$out/grown.ppm" --colorconvert sRGB linear -o "$out/grown.exr" || fail "cannot read the grab"
+"$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/grown.exr" | tee "$out/compare.txt" |
+  grep -q "^pass" || fail "the grown window does not show the frame: $(cat "$out/compare.txt")"
+grep -q "^vitrine: frames reach a 1280x360 window through Vulkan's swapchain from now on (shmget of 1843200 bytes" \
+  "$log" || fail "the grown window did not turn to Vulkan's swapchain"
+for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+wait $app; code=$?
+grep -q "validation messages" "$log" && fail "validation messages"
+[ "$code" = 0 ] || fail "the grown window's gallery: exit $code"
 
 # One window spanning the desktop (its one monitor here) shows the whole frame (a fresh settings file),
 # through Vulkan's swapchain.
