@@ -452,8 +452,6 @@ Options parseOptions(int argc, const char* const* argv) {
     if (options.spp > 256) throw Error("--spp takes 1 to 256 samples a frame.");
     if (options.checkpointsOnly && options.checkpointEvery == 0)
       throw Error("--checkpoints-only writes checkpoints: say how often with --checkpoint-every N.");
-    if (options.format == "png" && !canWritePng())
-      throw Error("This build writes EXR only (built without OpenImageIO); use --format exr.");
     if (film::isFilmName(options.out)) {
       if (options.range)
         throw Error(fmt::format("--range is for a sequence of frames in a folder; {} is a film, rendered whole: "

@@ -31,8 +31,6 @@ volatile std::sig_atomic_t stopHeadless = 0;
 int runHeadless(const Options& options) {
   const std::filesystem::path out = options.out;
   checkWritable(out);
-  if (imageFormatFromName(out) == ImageFormat::Png && !canWritePng())
-    throw Error("This build writes EXR only (built without OpenImageIO); use --out FILE.exr.");
   gpu::Instance instance({options.validation, {}});
   gpu::Device device(instance, {options.device});
   OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,

@@ -68,7 +68,6 @@ std::string Screenshots::write(const Pending& shot) const {
   const std::string size = fmt::format("{}x{}, rendered at {}x{}", shot.extent.width, shot.extent.height,
                                        shot.rendered.width, shot.rendered.height);
   writeImage(base.string() + ".exr", image, about);
-  if (!canWritePng()) return fmt::format("saved {}.exr ({})", base.string(), size);
   writeImage(base.string() + ".png", image, about);
   return fmt::format("saved {}.{{exr,png}} ({})", base.string(), size);
 }

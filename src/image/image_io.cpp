@@ -146,10 +146,6 @@ Picture fitWithin(Picture source, uint32_t maxSide) {
 
 }  // namespace
 
-bool canWritePng() { return true; }
-
-bool canReadPictures() { return true; }
-
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))

@@ -37,7 +37,6 @@ bool isWholeImage(const std::filesystem::path& path, uint32_t width, uint32_t he
 // Reads an EXR (RGBA, any pixel type) into linear floats. Throws vitrine::Error, naming the path, for
 // anything but a regular file that starts like an EXR (a device, a folder, a PNG named .exr).
 ImageRgba readImage(const std::filesystem::path& path);
-bool canWritePng();
 
 // A picture for display (a photo, a wallpaper): 8-bit RGBA, sRGB-encoded, top row first.
 struct Picture {
@@ -48,6 +47,5 @@ struct Picture {
 // aspect, so that neither side exceeds maxSide; grey and RGB gain opaque alpha. Throws vitrine::Error
 // naming the path and the reason (the build without OpenImageIO's module reads PNG, JPEG and EXR only).
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide);
-bool canReadPictures();
 
 }  // namespace vitrine

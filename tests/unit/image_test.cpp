@@ -240,7 +240,6 @@ TEST(ImageFormat, OnePlaceDecidesTheFormatFromTheNameInAnyCase) {
 // `--out x.Png` once wrote linear values into an sRGB PNG (too dark): the writer asked for ".png" or
 // ".PNG" only. Linear 0.2 is sRGB 124 of 255, not 51.
 TEST_F(ImageFiles, AMixedCasePngNameGetsSrgbPixels) {
-  if (!canWritePng()) GTEST_SKIP() << "this build writes EXR only";
   for (const char* name : {"lower.png", "mixed.Png", "upper.PNG"}) {
     const auto path = folder_ / name;
     ImageRgba grey = flatImage(4, 2, 0.2f);
@@ -255,7 +254,6 @@ TEST_F(ImageFiles, AMixedCasePngNameGetsSrgbPixels) {
 // A resumed recording keeps only frames that decode whole at the film's size.
 TEST_F(ImageFiles, AWholeImageIsToldFromATruncatedOrResizedOne) {
   for (const char* name : {"frame.exr", "frame.png"}) {
-    if (std::string_view(name).ends_with(".png") && !canWritePng()) continue;
     const auto path = folder_ / name;
     ImageRgba image = flatImage(64, 36, 0.0f);
     for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float((i * 2654435761u) % 1000) / 1000.0f;

@@ -34,10 +34,6 @@ BackdropSource resolveBackdrop(std::string_view value, const Assets& assets) {
   } else {
     source.problem = fmt::format("{}: {}", value, std::filesystem::exists(path, ec) ? "not a file or folder" : "not found");
   }
-  if (!source.pictures.empty() && !canReadPictures()) {
-    source.problem = fmt::format("{}: this build reads no pictures (VITRINE_WITH_OIIO=OFF)", value);
-    source.pictures.clear();
-  }
   if (!source.problem.empty()) source.kind = BackdropKind::Gradient;
   return source;
 }

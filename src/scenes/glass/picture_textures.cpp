@@ -87,10 +87,8 @@ void PictureTextures::loadPhoto(const Settings& settings) {
     if (!backgroundProblem_.empty() && named) return warn(fmt::format("background {}", backgroundProblem_));
     if (source_.kind == BackdropKind::Page || source_.kind == BackdropKind::Photo) {
       // No photo to lie on: say so rather than draw the gradient in silence (not an error: the page reads).
-      backgroundProblem_ = !canReadPictures() ? "this build reads no pictures (VITRINE_WITH_OIIO=OFF): the gradient "
-                                                "stands in for the photo"
-                           : backgroundProblem_.empty() ? "no photos fetched (scripts/setup): the gradient stands in"
-                                                        : backgroundProblem_ + ": the gradient stands in";
+      backgroundProblem_ = backgroundProblem_.empty() ? "no photos fetched (scripts/setup): the gradient stands in"
+                                                      : backgroundProblem_ + ": the gradient stands in";
       std::fprintf(stderr, "vitrine: glass: background %s: %s\n", settings.background.c_str(),
                    backgroundProblem_.c_str());
     }
