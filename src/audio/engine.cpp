@@ -1,9 +1,9 @@
 #include "audio/engine.h"
 
+#include "audio/rtaudio_stream.h"
 #include "core/hidden_stderr.h"
 #include "core/printable.h"
 
-#include <RtAudio.h>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -118,12 +118,10 @@ int playCallback(void* output, void*, unsigned int frames, double, RtAudioStream
   return 0;
 }
 
-// RtAudio 5.2 reports trouble with a running stream (a device unplugged, a sound server gone) on
-// its own thread; with no error callback it would throw there and end the program.
+// The stream's error callback (rtaudio_stream.h), and what pause and resume do when they fail.
 void streamError(RtAudioError::Type type, const std::string& message) {
-  if (type == RtAudioError::WARNING || type == RtAudioError::DEBUG_WARNING) return;
   static std::atomic_flag told;
-  if (!told.test_and_set()) std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
+  if (stopsTheStream(type) && !told.test_and_set()) std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
 }
 
 }  // namespace
@@ -176,12 +174,7 @@ std::string AudioOutput::open(const Options& options) {
 
 AudioOutput::~AudioOutput() {
   if (!device_) return;
-  try {
-    if (device_->isStreamRunning()) device_->abortStream();  // no need to play out what is queued
-    if (device_->isStreamOpen()) device_->closeStream();
-  } catch (const RtAudioError&) {
-    // Closing a stream that failed: nothing left to do about it.
-  }
+  closeStream(*device_);
 }
 
 void AudioOutput::pause() {

@@ -1,9 +1,9 @@
 #include "live/audio_capture.h"
 
+#include "audio/rtaudio_stream.h"
 #include "core/hidden_stderr.h"
 #include "core/printable.h"
 
-#include <RtAudio.h>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -26,12 +26,10 @@ namespace {
 constexpr unsigned kPreferredRate = 48000;
 constexpr const char* kMonitor = "@DEFAULT_MONITOR@";
 
-// RtAudio reports trouble with a running stream (a device unplugged, a sound server gone) on its own
-// thread; with no error callback it would throw there and end the program.
+// The stream's error callback (audio/rtaudio_stream.h).
 void streamError(RtAudioError::Type type, const std::string& message) {
-  if (type == RtAudioError::WARNING || type == RtAudioError::DEBUG_WARNING) return;
   static std::atomic_flag told;
-  if (!told.test_and_set()) std::fprintf(stderr, "vitrine: audio input stopped (%s): live audio off\n", message.c_str());
+  if (audio::stopsTheStream(type) && !told.test_and_set()) std::fprintf(stderr, "vitrine: audio input stopped (%s): live audio off\n", message.c_str());
 }
 
 // PULSE_SOURCE=@DEFAULT_MONITOR@ while a PulseAudio stream opens (libpulse reads it then), unless
@@ -75,13 +73,7 @@ std::vector<std::optional<RtAudio::DeviceInfo>> probe(RtAudio& audio) {
 struct AudioCapture::Device {
   explicit Device(double requestedRate) : ring(size_t(requestedRate * kRingSeconds)), scratch(4096) {}
   ~Device() {
-    if (!audio) return;
-    try {
-      if (audio->isStreamRunning()) audio->abortStream();
-      if (audio->isStreamOpen()) audio->closeStream();
-    } catch (const RtAudioError&) {
-      // Closing a stream that failed: nothing left to do about it.
-    }
+    if (audio) audio::closeStream(*audio);
   }
 
   // The audio thread: mixes the channels to mono and hands them to the ring. No locks, no
