@@ -301,10 +301,12 @@ void ShmPresenter::run() {
       slots_[job.slot].free = true;
     }
     changed_.notify_all();
-    if (failure.empty())
+    if (failure.empty()) {
+      waitForTurn();
       failure = attempt([&] {
         if (!connection_->put(job.extent)) throw Error("the connection to the X server closed");
       });
+    }
     {
       std::lock_guard lock(mutex_);
       busy_ = false;
@@ -313,6 +315,14 @@ void ShmPresenter::run() {
     changed_.notify_all();
     if (!failure.empty()) return;
   }
+}
+
+// A frame an interval, on a steady beat; a late frame is shown at once and the beat starts again from it.
+void ShmPresenter::waitForTurn() {
+  const std::chrono::nanoseconds interval(interval_.load());
+  if (interval.count() <= 0) return;
+  due_ = std::max(due_ + interval, std::chrono::steady_clock::now());
+  std::this_thread::sleep_until(due_);
 }
 
 void ShmPresenter::copyOut(const Job& job) {

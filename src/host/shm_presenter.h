@@ -6,7 +6,10 @@
 // machine idle, 15 % in Xvfb). Here each frame ends with a copy of its image into a mapped buffer; a
 // thread of its own waits for that copy, puts the pixels into a shared-memory segment and asks the X
 // server to draw them, while the next frame renders. The images are ordinary ones of the device,
-// written as a swapchain's are (B8G8R8A8_UNORM through compute, the overlay's render pass last).
+// written as a swapchain's are (B8G8R8A8_UNORM through compute, the overlay's render pass last). With
+// vsync on, the thread shows at most a frame a refresh, which paces the frame loop as FIFO would.
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -45,6 +48,9 @@ class ShmPresenter {
   uint32_t acquire(VkSemaphore acquired);
   // Copies the image to its buffer once `renderFinished` is signalled, and hands it to the thread.
   void present(uint32_t index, VkSemaphore renderFinished);
+  // Vsync: the thread shows at most a frame an `interval` (the display's refresh), so the frame loop waits
+  // for a free image as it would for a FIFO swapchain's; zero shows each frame as soon as it is ready.
+  void pace(std::chrono::nanoseconds interval) { interval_ = interval.count(); }
 
  private:
   struct Connection;  // the thread's own X connection, window, graphics context and shared segment
@@ -63,6 +69,7 @@ class ShmPresenter {
   void run();                    // the thread
   void copyOut(const Job& job);  // waits for the job's copy and puts its pixels in the shared segment
   void drain();                  // until every job handed over has reached the window
+  void waitForTurn();            // vsync's pace (pace())
 
   const gpu::Device& device_;
   std::unique_ptr<Connection> connection_;
@@ -77,6 +84,8 @@ class ShmPresenter {
   bool busy_ = false;      // the thread is showing a job it took
   bool stopping_ = false;
   std::string failed_;  // what stopped the thread, said by the next acquire
+  std::atomic<std::chrono::nanoseconds::rep> interval_{0};
+  std::chrono::steady_clock::time_point due_;  // the thread's: when the next frame may be shown
   std::thread thread_;
 };
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <span>
 #include <string>
@@ -10,6 +11,9 @@
 
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 namespace vitrine::host {
 namespace {
@@ -36,6 +40,16 @@ std::optional<VkSurfaceFormatKHR> findFormat(const gpu::Device& device, const st
   return std::nullopt;
 }
 
+// How often the window's display refreshes: its monitor's when fullscreen, else the primary's; 60 Hz where
+// the display does not say (Xvfb reports 0).
+std::chrono::nanoseconds refreshInterval(GLFWwindow* window) {
+  GLFWmonitor* monitor = window ? glfwGetWindowMonitor(window) : nullptr;
+  if (!monitor) monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  const int hertz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60;
+  return std::chrono::nanoseconds(1'000'000'000 / hertz);
+}
+
 VkCompositeAlphaFlagBitsKHR compositeAlpha(VkCompositeAlphaFlagsKHR supported) {
   for (auto mode : {VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR, VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR,
                     VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR, VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR})
@@ -47,7 +61,7 @@ VkCompositeAlphaFlagBitsKHR compositeAlpha(VkCompositeAlphaFlagsKHR supported) {
 
 Swapchain::Swapchain(const gpu::Device& device, VkSurfaceKHR surface, GLFWwindow* window, VkExtent2D framebuffer,
                      bool vsync)
-    : device_(device), surface_(surface), presentation_(choosePresentation(device, surface)) {
+    : device_(device), surface_(surface), window_(window), presentation_(choosePresentation(device, surface)) {
   std::string why = "the surface's format is not the presenter's";
   // Only where the swapchain would draw in the same format, so that falling back to it (build) leaves
   // the overlay's render pass, made for format(), valid.
@@ -105,6 +119,7 @@ void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
     device_.retire(std::move(renderFinished_));  // frames in flight may still signal them
     renderFinished_.clear();
     if (refused.empty()) {
+      shm_->pace(vsync ? refreshInterval(window_) : std::chrono::nanoseconds(0));
       for (uint32_t i = 0; i < shm_->imageCount(); ++i)
         renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
       extent_ = framebuffer;

@@ -52,6 +52,7 @@ class Swapchain {
 
   const gpu::Device& device_;
   VkSurfaceKHR surface_;
+  GLFWwindow* window_;
   Presentation presentation_;  // chosen once: what a surface supports does not change with its size
   std::unique_ptr<ShmPresenter> shm_;  // set where it works: then there is no VkSwapchainKHR
   gpu::Unique<VkSwapchainKHR> swapchain_;
