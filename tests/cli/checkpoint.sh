@@ -5,7 +5,7 @@
 # --audio-in, two samples a frame) and noodles (mid-drag); a resumed whole run writes the same sound;
 # --checkpoints-only simulates without drawing; a corrupt or foreign checkpoint is refused, naming the
 # file, before anything is written.
-set -eu
+set -euo pipefail
 vitrine=$1; out=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
 rm -rf "$out"; mkdir -p "$out"
@@ -13,7 +13,7 @@ rm -rf "$out"; mkdir -p "$out"
 same() {  # same WHOLE PART FIRST LAST: the part's frames FIRST..LAST are the whole run's, bit for bit
   for f in $(seq "$3" "$4"); do
     n=$(printf %06d "$f")
-    "$vitrine" compare "$1/frame_$n.exr" "$2/frame_$n.exr" | grep -q "max difference 0.00000" ||
+    "$vitrine" compare --fail-fraction 0 --hard-limit 0 "$1/frame_$n.exr" "$2/frame_$n.exr" >/dev/null ||
       { echo "$2: frame $f differs from the whole run's"; exit 1; }
   done
 }
@@ -43,22 +43,22 @@ bloom=(record --scene bloom --preset quick --size 64x36 --fps 30 --seconds 2 --i
 grep -q "8 checkpoints written" "$out/bloom.log"
 grep -q '"chroma"' "$out/bloom-events.jsonl"  # the film crosses every flip
 part "$out/bloom" "$out/bloom-7" 7
-"$vitrine" "${bloom[@]}" --range 8:16 --out "$out/bloom-7" | grep -q "simulated from the checkpoint at frame 7"
+"$vitrine" "${bloom[@]}" --range 8:16 --out "$out/bloom-7" | grep "simulated from the checkpoint at frame 7" >/dev/null
 same "$out/bloom" "$out/bloom-7" 8 15
 part "$out/bloom" "$out/bloom-49" 49
-"$vitrine" "${bloom[@]}" --range 52:60 --out "$out/bloom-49" | grep -q "recorded 8 of frames 52..59 .*checkpoint at frame 49"
+"$vitrine" "${bloom[@]}" --range 52:60 --out "$out/bloom-49" | grep "recorded 8 of frames 52..59 .*checkpoint at frame 49" >/dev/null
 same "$out/bloom" "$out/bloom-49" 52 59
 # A whole run missing its last frames resumes from the latest checkpoint before them; its sound is the
 # whole film's all the same (the checkpoint carries the sound so far).
 cp -r "$out/bloom" "$out/bloom-resumed"
 rm "$out/bloom-resumed"/frame_00004[5-9].exr "$out/bloom-resumed"/frame_00005*.exr "$out/bloom-resumed/audio.wav"
-"$vitrine" "${bloom[@]}" --checkpoint-every 7 --out "$out/bloom-resumed" | grep -q "recorded 15 of frames 0..59 .*checkpoint at frame 42"
+"$vitrine" "${bloom[@]}" --checkpoint-every 7 --out "$out/bloom-resumed" | grep "recorded 15 of frames 0..59 .*checkpoint at frame 42" >/dev/null
 cmp "$out/bloom/audio.wav" "$out/bloom-resumed/audio.wav"
 same "$out/bloom" "$out/bloom-resumed" 45 59
 # --checkpoints-only: every checkpoint, no frame; a range from one of them is the whole run's.
-"$vitrine" "${bloom[@]}" --checkpoint-every 25 --checkpoints-only --out "$out/bloom-sim" | grep -q "recorded 0 of frames 0..59 .*2 checkpoints written"
+"$vitrine" "${bloom[@]}" --checkpoint-every 25 --checkpoints-only --out "$out/bloom-sim" | grep "recorded 0 of frames 0..59 .*2 checkpoints written" >/dev/null
 test -z "$(ls "$out/bloom-sim" | grep '^frame_')"
-"$vitrine" "${bloom[@]}" --range 55:58 --out "$out/bloom-sim" | grep -q "checkpoint at frame 50"
+"$vitrine" "${bloom[@]}" --range 55:58 --out "$out/bloom-sim" | grep "checkpoint at frame 50" >/dev/null
 same "$out/bloom" "$out/bloom-sim" 55 57
 
 # neon: checkpoint 10 falls mid-stroke (a pen held by the drag), with beat bursts from the music.
@@ -68,7 +68,7 @@ neon=(record --scene neon --set chains=256 --size 64x36 --fps 30 --spp 2 --secon
 test "$(grep -c '"by":"burst"' "$out/neon-events.jsonl")" -ge 8
 for at in 10 40; do
   part "$out/neon" "$out/neon-$at" $at
-  "$vitrine" "${neon[@]}" --range $((at + 2)):$((at + 12)) --out "$out/neon-$at" | grep -q "checkpoint at frame $at"
+  "$vitrine" "${neon[@]}" --range $((at + 2)):$((at + 12)) --out "$out/neon-$at" | grep "checkpoint at frame $at" >/dev/null
   same "$out/neon" "$out/neon-$at" $((at + 2)) $((at + 11))
 done
 
@@ -77,7 +77,7 @@ noodles=(record --scene noodles --set grid=8x8x4 --size 64x36 --fps 30 --seconds
          --input "$here/input/drag_example.txt")
 "$vitrine" "${noodles[@]}" --checkpoint-every 10 --out "$out/noodles" >/dev/null
 part "$out/noodles" "$out/noodles-10" 10
-"$vitrine" "${noodles[@]}" --range 12:20 --out "$out/noodles-10" | grep -q "checkpoint at frame 10"
+"$vitrine" "${noodles[@]}" --range 12:20 --out "$out/noodles-10" | grep "checkpoint at frame 10" >/dev/null
 same "$out/noodles" "$out/noodles-10" 12 19
 
 # A corrupt checkpoint is refused, naming it; nothing in the folder is written or removed.

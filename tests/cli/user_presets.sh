@@ -6,7 +6,7 @@
 # settings folder at all; every one of those frames equals a run with the same --set values (compare,
 # max difference 0). A built-in name, a broken file and a bad playlist are refused with a reason naming
 # them, the playlist before any window opens. The gallery imports a --preset-file into its own store.
-set -eu
+set -euo pipefail
 vitrine=$1; out=$2
 rm -rf "$out"; mkdir -p "$out"
 fail() { echo "FAIL: $*"; exit 1; }
@@ -25,7 +25,7 @@ saved=$out/config/vitrine/presets/kifs-evening%20look.json
 [ -f "$saved" ] || fail "no preset file at $saved: $(ls -R "$out/config")"
 grep -q '"name": "evening look"' "$saved" || fail "the file does not name the preset: $(cat "$saved")"
 
-"$vitrine" --list-params kifs | grep -q "evening look  (yours)  step=6" \
+"$vitrine" --list-params kifs | grep "evening look  (yours)  step=6" >/dev/null \
   || fail "--list-params does not list the user's preset: $("$vitrine" --list-params kifs)"
 "$vitrine" "${args[@]}" --preset "evening look" --out "$out/by_name.exr"
 "$vitrine" compare --fail-fraction 0 --hard-limit 0 "$out/set.exr" "$out/by_name.exr"
