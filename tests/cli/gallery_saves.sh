@@ -21,11 +21,19 @@ start_display 320x180
 app=$!
 keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
 wait_for_showing "$log"
-keys key:F12 sleep:3 key:Tab sleep:1 key:F12 sleep:3 key:Tab
+keys key:F12 sleep:3 shot:0,0,160,40,"$out/ui-shown.ppm" key:Tab sleep:1 shot:0,0,160,40,"$out/ui-hidden.ppm" \
+  key:F12 sleep:3 key:Tab
 keys key:F9 sleep:3 key:F9 sleep:4 key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
 
+# Tab hid the menu between the two screenshots: the window's top-left corner changed.
+python3 - "$out/ui-shown.ppm" "$out/ui-hidden.ppm" <<'EOF' || fail "Tab did not hide the menu"
+import sys
+a, b = (open(p, "rb").read() for p in sys.argv[1:])
+a, b = a[a.index(b"255\n") + 4:], b[b.index(b"255\n") + 4:]
+assert sum(abs(x - y) > 64 for x, y in zip(a, b)) > 500, "the corner did not change"
+EOF
 shots=("$out"/work/screenshots/*.png)
 [ ${#shots[@]} = 2 ] && [ -f "${shots[0]}" ] || fail "two screenshots expected, found: ${shots[*]}"
 for png in "${shots[@]}"; do
