@@ -1,9 +1,5 @@
 #include "audio/engine.h"
 
-#include "audio/rtaudio_stream.h"
-#include "core/hidden_stderr.h"
-#include "core/printable.h"
-
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -15,7 +11,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "audio/rtaudio_stream.h"
 #include "core/error.h"
+#include "core/hidden_stderr.h"
+#include "core/printable.h"
 
 namespace vitrine::audio {
 
@@ -121,7 +120,8 @@ int playCallback(void* output, void*, unsigned int frames, double, RtAudioStream
 // The stream's error callback (rtaudio_stream.h), and what pause and resume do when they fail.
 void streamError(RtAudioError::Type type, const std::string& message) {
   static std::atomic_flag told;
-  if (stopsTheStream(type) && !told.test_and_set()) std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
+  if (stopsTheStream(type) && !told.test_and_set())
+    std::fprintf(stderr, "vitrine: audio stopped (%s): running silent\n", message.c_str());
 }
 
 }  // namespace

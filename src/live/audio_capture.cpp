@@ -1,9 +1,5 @@
 #include "live/audio_capture.h"
 
-#include "audio/rtaudio_stream.h"
-#include "core/hidden_stderr.h"
-#include "core/printable.h"
-
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -17,6 +13,9 @@
 #include <iostream>
 #include <optional>
 
+#include "audio/rtaudio_stream.h"
+#include "core/hidden_stderr.h"
+#include "core/printable.h"
 #include "live/float_ring.h"
 
 namespace vitrine::live {
@@ -29,7 +28,8 @@ constexpr const char* kMonitor = "@DEFAULT_MONITOR@";
 // The stream's error callback (audio/rtaudio_stream.h).
 void streamError(RtAudioError::Type type, const std::string& message) {
   static std::atomic_flag told;
-  if (audio::stopsTheStream(type) && !told.test_and_set()) std::fprintf(stderr, "vitrine: audio input stopped (%s): live audio off\n", message.c_str());
+  if (audio::stopsTheStream(type) && !told.test_and_set())
+    std::fprintf(stderr, "vitrine: audio input stopped (%s): live audio off\n", message.c_str());
 }
 
 // PULSE_SOURCE=@DEFAULT_MONITOR@ while a PulseAudio stream opens (libpulse reads it then), unless
