@@ -34,14 +34,8 @@ for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
 scene=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["scene"])' "$out/config/vitrine/settings.json")
 [ "$scene" = bloom ] || fail "the digit typed into the speed field switched the scene to $scene"
-# Pixels of two grabs more than a quarter of the range apart (the menu lets the scene through a little).
-changed() { python3 -c 'import sys
-def pixels(p):
-    d = open(p, "rb").read()
-    return d[d.index(b"255\n") + 4:]
-print(sum(abs(a - b) > 64 for a, b in zip(pixels(sys.argv[1]), pixels(sys.argv[2]))))' "$1" "$2"; }
-[ "$(changed "$out/slider-1x.ppm" "$out/slider-typed.ppm")" -gt 20 ] || fail "the typed speed did not reach the slider"
-[ "$(changed "$out/slider-1x.ppm" "$out/slider-back.ppm")" = 0 ] || fail "\\ did not set the speed back to 1x"
+[ "$(grab_changes "$out/slider-1x.ppm" "$out/slider-typed.ppm")" -gt 20 ] || fail "the typed speed did not reach the slider"
+[ "$(grab_changes "$out/slider-1x.ppm" "$out/slider-back.ppm")" = 0 ] || fail "\\ did not set the speed back to 1x"
 fps=$(sed -n 's/^vitrine: showed .* (\([0-9.]*\) fps)$/\1/p' "$log")
 python3 -c 'import sys; sys.exit(not 0 < float(sys.argv[1]) <= 61.5)' "${fps:-0}" ||
   fail "vsync on, yet the window showed ${fps:-no} frames a second (at most 60 Hz)"

@@ -9,6 +9,16 @@ start_display() {
   display=:$(head -n1 "$out/display")
   [ "$display" != ":" ] || fail "Xvfb did not start"
 }
+# grab_changes A.ppm B.ppm: how many of two screen grabs' values (xtest.py's shots) differ by more than a
+# quarter of the range; a menu lets the scene through a little, so smaller differences are not changes.
+grab_changes() {
+  python3 - "$1" "$2" <<'EOF'
+import sys
+a, b = (open(p, "rb").read() for p in sys.argv[1:])
+a, b = a[a.index(b"255\n") + 4:], b[b.index(b"255\n") + 4:]
+print(sum(abs(x - y) > 64 for x, y in zip(a, b)))
+EOF
+}
 # wait_for_line LOG PATTERN WHAT: waits (up to a minute) until a line of LOG matches PATTERN (grep), instead
 # of sleeping for a busy machine's worst case; fails saying WHAT did not happen.
 wait_for_line() {
