@@ -11,6 +11,10 @@ bool insideCore(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) 
 // Voxel i's centre in the lattice's normalised cube [-1, 1]^3 (bloom_math.h: voxelCentre).
 vec3 voxelCentre(ivec3 voxel, int n) { return (vec3(voxel) + 0.5) / float(n) * 2.0 - 1.0; }
 
+// Voxel p's place in an n^3 lattice buffer: x fastest, then y, then z, an image's texel order (so a
+// checkpoint's bytes read the same either way).
+uint latticeIndex(ivec3 p, int n) { return uint((p.z * n + p.y) * n + p.x); }
+
 // The voxels [first, end) along z that one invocation of an n^3 pass walks: its run `run` of `length`
 // voxels up column xy, clipped to where the column crosses the crystal (|z| <= 1 - |x| - |y|),
 // widened a voxel each way so that rounding never drops one; callers still test each voxel with

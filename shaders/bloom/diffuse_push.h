@@ -5,7 +5,7 @@
 #include "../common/interop.h"
 
 VITRINE_SHARED_BEGIN
-const uint kBloomDiffuseColumn = 16;  // voxels along z one diffusion invocation walks
+const uint kBloomDiffuseColumn = 8;   // voxels along z one diffusion invocation walks
 
 // One pass: a stage of a super step (bloom_math.h: StageWeights, stageVoxel).
 struct BloomDiffusePush {
@@ -17,12 +17,20 @@ struct BloomDiffusePush {
   float sourceRate;  // per second at the source's centre; 0: no source
   float keep;        // the weight of the voxel's value
   float older;       // the weight of the stage before's; 0: not read
-  uint last;         // 1: the super step's last stage, which clamps
+  uint last;         // 1: a super step's last stage, which clamps
+  uint writeView;    // 1: the frame's last stage, which also writes the view the crystal samples
+  uint side;         // the lattice's side n (n^3 voxels)
 };
 
 // A new lattice's contents (fill.comp): `fill` inside the crystal; outside stays the host's zeros.
 struct BloomFillPush {
   float fill;
+  uint side;
+};
+
+// resample.comp: the side of the lattice it writes.
+struct BloomResamplePush {
+  uint side;
 };
 VITRINE_SHARED_END
 

@@ -6,7 +6,7 @@
 #include "crystal.glsl"
 #include "stats_blocks.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
-layout(binding = 0, r32f) uniform readonly image3D lattice;
+layout(binding = 0, r32f) uniform readonly image3D view;  // the lattice as the frame's diffusion left it
 layout(binding = 1, std430) buffer Stats { BloomLatticeCounts stats; };
 layout(push_constant) uniform Push { BloomStatsThresholds thresholds; };  // 0.25 / 0.45 / 0.65 / 0.82 by default
 
@@ -18,7 +18,7 @@ void main() {
   // Each invocation counts a run of kBloomStatsColumn voxels along z before it touches shared memory:
   // the atomics, not the loads, are what a CPU driver pays for (a 96^3 pass took as long as a diffusion
   // step). The run is clipped to the crystal, as the diffusion's is.
-  const int n = imageSize(lattice).x;
+  const int n = imageSize(view).x;
   const ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
   const ivec2 run = xy.x < n && xy.y < n ? crystalColumnRun(xy, n, int(gl_GlobalInvocationID.z), int(kBloomStatsColumn))
                                          : ivec2(0);
@@ -28,7 +28,7 @@ void main() {
     const ivec3 p = ivec3(xy, z);
     const vec3 normalised = voxelCentre(p, n);
     if (!insideCrystal(normalised)) continue;
-    const float v = imageLoad(lattice, p).r;
+    const float v = imageLoad(view, p).r;
     peak = max(peak, v);
     if (!insideCore(normalised)) continue;
     mine[0] += 1u;

@@ -13,50 +13,63 @@
 namespace vitrine::bloom {
 namespace {
 
-// Three 3D r32f lattices on the GPU (slot 0 the state, as in the scene), run through diffuse.comp
-// for frames of a plan and read back.
+// Three r32f lattice buffers on the GPU (slot 0 the state, as in the scene) and the crystal's view,
+// run through diffuse.comp for frames of a plan and read back: the lattice, and the view, which the
+// last stage must leave equal to it.
 class BloomGpu : public test::GpuTest {
  protected:
   std::vector<float> run(uint32_t n, const std::vector<float>& texels, DiffusionParams p, const DiffusionPlan& plan,
                          int frames) {
+    const VkDeviceSize bytes = texels.size() * sizeof(float);
+    const VkBufferUsageFlags usage =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    gpu::Buffer lattices[3] = {gpu::Buffer(device(), bytes, usage, gpu::MemoryUse::Device, "lattice a"),
+                               gpu::Buffer(device(), bytes, usage, gpu::MemoryUse::Device, "lattice b"),
+                               gpu::Buffer(device(), bytes, usage, gpu::MemoryUse::Device, "lattice stage")};
     gpu::ImageDesc desc;
     desc.extent = {n, n, n};
     desc.type = VK_IMAGE_TYPE_3D;
     desc.format = VK_FORMAT_R32_SFLOAT;
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    gpu::Image images[3] = {gpu::Image(device(), desc, "lattice a"), gpu::Image(device(), desc, "lattice b"),
-                            gpu::Image(device(), desc, "lattice stage")};
+    gpu::Image view(device(), desc, "view");
     gpu::ProgramLibrary programs(device());
     gpu::ComputeProgram diffuse(programs, "bloom/diffuse.comp");
     gpu::StreamArena arena(device());
-    gpu::Buffer readback(device(), texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                         gpu::MemoryUse::Readback, "lattice readback");
+    gpu::Buffer readback(device(), 2 * bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                         "lattice readback");
     shader::BloomDiffusePush push{.source = p.source,
                                   .diffusion = p.diffusion,
                                   .decay = p.decay,
                                   .sigma = p.sigma,
-                                  .sourceRate = p.sourceOn ? p.sourceRate : 0.0f};
-    uint32_t state = 0;  // the pair's current image, 0 or 1
+                                  .sourceRate = p.sourceOn ? p.sourceRate : 0.0f,
+                                  .side = n};
+    uint32_t state = 0;  // the pair's current lattice, 0 or 1
     device().submitNow([&](VkCommandBuffer cmd) {
-      // Every image: a stage never writes outside the crystal, which must hold zero in each.
-      for (gpu::Image& image : images)
-        gpu::uploadImage(cmd, arena, image, std::as_bytes(std::span(texels)), gpu::use::ComputeRead);
+      // Every lattice: a stage never writes outside the crystal, which must hold zero in each.
+      for (gpu::Buffer& lattice : lattices)
+        gpu::uploadBuffer(cmd, arena, lattice, 0, std::as_bytes(std::span(texels)), gpu::use::ComputeReadBuffer);
+      const std::vector<float> zeros(texels.size(), 0.0f);
+      gpu::uploadImage(cmd, arena, view, std::as_bytes(std::span(zeros)), gpu::use::ComputeWrite);
       diffuse.bind(cmd);
-      for (uint32_t step = 0; step < uint32_t(frames) * plan.superSteps; ++step) {
-        gpu::Image* slots[3] = {&images[state], &images[1 - state], &images[2]};
+      const uint32_t steps = uint32_t(frames) * plan.superSteps;
+      for (uint32_t step = 0; step < steps; ++step) {
+        gpu::Buffer* slots[3] = {&lattices[state], &lattices[1 - state], &lattices[2]};
         uint32_t older = 0, here = 0;
         for (uint32_t j = 1; j <= plan.stages; ++j) {
           const uint32_t next = stageSlot(j, plan.stages, here, older);
           const StageWeights w = rklStage(j, plan.stages);
           push.dt = w.step * plan.dt, push.keep = w.keep, push.older = w.older;
           push.last = j == plan.stages ? 1u : 0u;
-          slots[here]->use(cmd, gpu::use::ComputeRead);
-          slots[older]->use(cmd, gpu::use::ComputeRead);
-          slots[next]->use(cmd, gpu::use::ComputeWrite);
+          push.writeView = push.last && step + 1 == steps ? 1u : 0u;
+          slots[here]->use(cmd, gpu::use::ComputeReadBuffer);
+          slots[older]->use(cmd, gpu::use::ComputeReadBuffer);
+          slots[next]->use(cmd, gpu::use::ComputeWriteBuffer);
+          view.use(cmd, gpu::use::ComputeWrite);
           diffuse.push(cmd, gpu::Bindings()
-                                .storageImage("current", slots[here]->view())
-                                .storageImage("older", slots[older]->view())
-                                .storageImage("next", slots[next]->view()));
+                                .storageBuffer("Current", slots[here]->handle())
+                                .storageBuffer("Older", slots[older]->handle())
+                                .storageBuffer("Next", slots[next]->handle())
+                                .storageImage("view", view.view()));
           diffuse.constants(cmd, push);
           diffuse.dispatchOver(cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
           older = here, here = next;
@@ -64,18 +77,26 @@ class BloomGpu : public test::GpuTest {
         EXPECT_LT(here, 2u) << "a super step ends in the pair";
         if (here == 1) state = 1 - state;
       }
-      gpu::Image& result = images[state];
-      result.use(cmd, gpu::use::TransferSrc);
+      gpu::Buffer& result = lattices[state];
+      result.use(cmd, gpu::use::TransferSrcBuffer);
       readback.use(cmd, gpu::use::TransferDstBuffer);
+      const VkBufferCopy copy{0, 0, bytes};
+      vkCmdCopyBuffer(cmd, result.handle(), readback.handle(), 1, &copy);
+      view.use(cmd, gpu::use::TransferSrc);
       VkBufferImageCopy region{};
+      region.bufferOffset = bytes;
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {n, n, n};
-      vkCmdCopyImageToBuffer(cmd, result.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1, &region);
+      vkCmdCopyImageToBuffer(cmd, view.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1, &region);
       readback.use(cmd, gpu::use::HostReadBuffer);
     });
     readback.invalidate();
-    const auto view = readback.view<const float>();
-    return {view.begin(), view.end()};
+    const auto both = readback.view<const float>();
+    const std::vector<float> lattice(both.begin(), both.begin() + ptrdiff_t(texels.size()));
+    size_t differ = 0;
+    for (size_t i = 0; i < texels.size(); ++i) differ += both[texels.size() + i] != lattice[i] ? 1 : 0;
+    EXPECT_EQ(differ, 0u) << n << "^3: the view shows the lattice as the last stage left it";
+    return lattice;
   }
 };
 

@@ -217,16 +217,20 @@ TEST(BloomSettings, TheThresholdErrorSaysWhichPairIsOutOfOrder) {
             std::string::npos);
 }
 
-// 512^3 is a gigabyte as a pair: an 80 GB GPU takes it, a 1 GB one and a device whose 3D images stop
-// at the Vulkan minimum (256) are told why not.
-TEST(BloomSettings, ALatticeMustFitTheDevicesImagesAndHalfItsMemory) {
-  const uint64_t gib = uint64_t(1) << 30;
-  EXPECT_EQ(latticeFitError(512, 2048, 80 * gib, "big"), "");
-  EXPECT_EQ(latticeFitError(512, 2048, 1 * gib, "small"),
-            "a 512^3 lattice needs 1536 MiB of device memory (3 images), more than half of the 1024 MiB on small");
-  EXPECT_EQ(latticeFitError(256, 2048, 1 * gib, "small"), "");
-  EXPECT_EQ(latticeFitError(320, 256, 80 * gib, "minimal"),
+// 512^3 is two gigabytes in its four copies: an 80 GB GPU takes it; a 1 GB one, a device whose 3D
+// images stop at the Vulkan minimum (256) and one whose storage buffers bind 128 MiB (lavapipe) are
+// told why not.
+TEST(BloomSettings, ALatticeMustFitTheDevicesImagesBuffersAndHalfItsMemory) {
+  const uint64_t gib = uint64_t(1) << 30, mib = uint64_t(1) << 20;
+  EXPECT_EQ(latticeFitError(512, {2048, 4 * gib, 80 * gib}, "big"), "");
+  EXPECT_EQ(latticeFitError(512, {2048, 4 * gib, 1 * gib}, "small"),
+            "a 512^3 lattice needs 2048 MiB of device memory (4 copies), more than half of the 1024 MiB on small");
+  EXPECT_EQ(latticeFitError(256, {2048, 4 * gib, 1 * gib}, "small"), "");
+  EXPECT_EQ(latticeFitError(320, {256, 4 * gib, 80 * gib}, "minimal"),
             "a 320^3 lattice is larger than the 256^3 3D images minimal can make");
+  EXPECT_EQ(latticeFitError(320, {2048, 128 * mib, 80 * gib}, "lavapipe"), "");
+  EXPECT_EQ(latticeFitError(384, {2048, 128 * mib, 80 * gib}, "lavapipe"),
+            "a 384^3 lattice is 216 MiB, more than the 128 MiB one storage buffer binding spans on lavapipe");
 }
 
 // The default rates at a 48^3 lattice (the CPU reference; the GPU runs at 96^3 and 160^3 are

@@ -376,19 +376,33 @@ inline std::string thresholdOrderError(const std::array<float, 4>& t) {
   return {};
 }
 
-// Whether an n^3 lattice (three r32f images: a stage reads two and writes the third) fits the device:
-// within its largest 3D image and within half its device memory, the rest left to the frame's images,
+// One n^3 lattice of 32-bit floats.
+inline constexpr uint64_t latticeBytes(uint32_t n) { return 4ull * n * n * n; }
+
+// What bounds the lattice on a device: its 3D images (the crystal's view), one storage buffer's binding
+// (a lattice is bound whole: 128 MiB on lavapipe, 4 GiB on NVIDIA) and its memory.
+struct LatticeLimits {
+  uint32_t maxImageDimension3D = 0;
+  uint64_t maxStorageBufferRange = 0;
+  uint64_t deviceLocalHeap = 0;
+};
+
+// Whether an n^3 lattice fits the device: within its largest 3D image and one storage buffer's
+// binding, and its four copies (three storage buffers a stage reads two of and writes the third, and
+// the view the crystal samples) within half its device memory, the rest left to the frame's images,
 // the other scenes and the driver.
-inline constexpr uint32_t kLatticeImages = 3;
-inline std::string latticeFitError(uint32_t n, uint32_t maxImageDimension3D, uint64_t deviceLocalHeap,
-                                   std::string_view deviceName) {
-  if (n > maxImageDimension3D)
-    return fmt::format("a {}^3 lattice is larger than the {}^3 3D images {} can make", n, maxImageDimension3D,
+inline constexpr uint32_t kLatticeCopies = 4;
+inline std::string latticeFitError(uint32_t n, const LatticeLimits& limits, std::string_view deviceName) {
+  if (n > limits.maxImageDimension3D)
+    return fmt::format("a {}^3 lattice is larger than the {}^3 3D images {} can make", n, limits.maxImageDimension3D,
                        deviceName);
-  const uint64_t bytes = uint64_t(kLatticeImages) * 4ull * uint64_t(n) * n * n;
-  if (bytes > deviceLocalHeap / 2)
-    return fmt::format("a {}^3 lattice needs {} MiB of device memory ({} images), more than half of the {} MiB on {}",
-                       n, bytes >> 20, kLatticeImages, deviceLocalHeap >> 20, deviceName);
+  if (latticeBytes(n) > limits.maxStorageBufferRange)
+    return fmt::format("a {}^3 lattice is {} MiB, more than the {} MiB one storage buffer binding spans on {}", n,
+                       latticeBytes(n) >> 20, limits.maxStorageBufferRange >> 20, deviceName);
+  const uint64_t bytes = kLatticeCopies * latticeBytes(n);
+  if (bytes > limits.deviceLocalHeap / 2)
+    return fmt::format("a {}^3 lattice needs {} MiB of device memory ({} copies), more than half of the {} MiB on {}",
+                       n, bytes >> 20, kLatticeCopies, limits.deviceLocalHeap >> 20, deviceName);
   return {};
 }
 

@@ -36,8 +36,10 @@ namespace {
 
 // One 32-bit float a voxel (the seed's RGBA16F holds one value in 8 bytes). Not half floats: a
 // 256^3 sub-step's decay of a concentration near 1 is under half a half-float step, so a half lattice
-// vents at a speed set by the lattice size and the driver's rounding instead of the physics.
-constexpr VkFormat kLatticeFormat = VK_FORMAT_R32_SFLOAT;
+// vents at a speed set by the lattice size and the driver's rounding instead of the physics. The
+// lattices the diffusion steps are storage buffers (diffuse.comp says why); the crystal samples the
+// view, an image in this format.
+constexpr VkFormat kViewFormat = VK_FORMAT_R32_SFLOAT;
 // Simulated time one frame's diffusion catches up at most: all of it down to 2 fps, so the vapour
 // follows the clock on a slow device; below that the frame's own GPU time would grow with its
 // slowness, so the rest is given up and the gallery says the simulation is behind.
@@ -106,12 +108,13 @@ class BloomScene final : public Scene {
     chroma_ = text_.layout(titleFont_, "CHROMA");
     const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT |
                                         VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-    if ((context.device.optimalTilingFeatures(kLatticeFormat) & needed) != needed)
+    if ((context.device.optimalTilingFeatures(kViewFormat) & needed) != needed)
       throw Error(fmt::format("bloom needs r32f 3D images it can store to and filter linearly, which {} lacks",
                               context.device.properties().deviceName));
     lattice_ = resources_.declare(latticeDecl(settings_.lattice));
     stage_ = resources_.declare(stageDecl(settings_.lattice));
-    builtLattice_ = builtSetting_ = settings_.lattice;
+    view_ = resources_.declare(viewDecl(settings_.lattice));
+    builtLattice_ = builtSetting_ = viewSide_ = settings_.lattice;
   }
   ~BloomScene() override { audio_.drone(time_, false); }
 
@@ -176,7 +179,7 @@ class BloomScene final : public Scene {
     recorded_ = true;
     fill(frame);
     carry(frame);
-    simulate(frame);
+    simulate(frame);  // writes the view: every frame after an update runs a super step (but a carry's first)
     measure(frame);  // the phases follow the lattice's statistics, seen or not
     if (!frame.draws) return;
     drawChamber(frame);
@@ -198,10 +201,8 @@ class BloomScene final : public Scene {
           chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_, statsTime_,
           lastVapour_);
     if (state.isRestoring()) {  // the checkpoint's vapour, over zeros
-      resources_.redeclare(lattice_, latticeDecl(builtLattice_));
-      resources_.redeclare(stage_, stageDecl(builtLattice_));
+      redeclareLattices(builtLattice_);  // a carry half done starts again from the restored lattice
       pendingFill_ = 0.0f;
-      carry_ = Carry::None;  // a carry half done starts again from the restored lattice
     }
     state.contents(resources_, lattice_);
   }
@@ -213,8 +214,10 @@ class BloomScene final : public Scene {
 
   std::string checkParameters() const override {
     if (std::string order = thresholdOrderError(thresholds()); !order.empty()) return order;
-    return latticeFitError(uint32_t(settings_.lattice), device_.limits().maxImageDimension3D,
-                           device_.memoryLimits().largestDeviceLocalHeap, device_.properties().deviceName);
+    return latticeFitError(uint32_t(settings_.lattice),
+                           {device_.limits().maxImageDimension3D, device_.limits().maxStorageBufferRange,
+                            device_.memoryLimits().largestDeviceLocalHeap},
+                           device_.properties().deviceName);
   }
 
   void drawPanel() override {
@@ -263,24 +266,39 @@ class BloomScene final : public Scene {
 
   // Made zero on the GPU (a 512^3 pair is a gigabyte, too much to build and upload from the CPU);
   // fill.comp then puts a fill inside the crystal.
-  static gpu::ImageDecl latticeDecl(int n) {
-    gpu::ImageDecl decl{"bloom vapour", kLatticeFormat,
-                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                        gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n)), 1, gpu::Pairing::PingPong};
-    decl.state = true;   // checkpoints save the vapour
-    decl.zeroed = true;  // both images: diffuse.comp never writes a voxel outside the crystal
-    return decl;
+  static gpu::BufferDecl latticeDecl(int n) {
+    return {.name = "bloom vapour",
+            .size = gpu::BufferSize::absolute(latticeBytes(uint32_t(n))),
+            .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            .pairing = gpu::Pairing::PingPong,
+            .clear = true,   // diffuse.comp never writes a voxel outside the crystal
+            .state = true};  // checkpoints save the vapour
   }
   // The third lattice a super step's stages rotate through; it never holds the state between frames.
-  static gpu::ImageDecl stageDecl(int n) {
-    gpu::ImageDecl decl = latticeDecl(n);
+  static gpu::BufferDecl stageDecl(int n) {
+    gpu::BufferDecl decl = latticeDecl(n);
     decl.name = "bloom vapour stage";
     decl.pairing = gpu::Pairing::Single;
     decl.state = false;
     return decl;
   }
+  // What the crystal samples (filtered) and the statistics count: the lattice as the frame's diffusion left it.
+  static gpu::ImageDecl viewDecl(int n) {
+    gpu::ImageDecl decl{"bloom vapour view", kViewFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                        gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n))};
+    decl.zeroed = true;  // outside the crystal, as in the lattices
+    return decl;
+  }
+  // Fresh lattices and view of side n, all zero; the old ones are retired behind frames in flight.
+  void redeclareLattices(int n) {
+    resources_.redeclare(lattice_, latticeDecl(n));
+    resources_.redeclare(stage_, stageDecl(n));
+    resources_.redeclare(view_, viewDecl(n));
+    viewSide_ = n;
+    carry_ = Carry::None;
+  }
 
-  // A new lattice (size change, fill, vent): the old images are retired behind frames in flight.
+  // A new lattice (size change, fill, vent).
   void restart(float fill) {
     exhaling_ = false;
     pendingFill_ = fill;
@@ -288,44 +306,51 @@ class BloomScene final : public Scene {
     builtLattice_ = tierLattice(settings_.lattice, quality_.active());
     builtSetting_ = settings_.lattice;
     builtFill_ = settings_.fill;
-    resources_.redeclare(lattice_, latticeDecl(builtLattice_));
-    resources_.redeclare(stage_, stageDecl(builtLattice_));
-    carry_ = Carry::None;
+    redeclareLattices(builtLattice_);
   }
 
   // A tier's new side while the piece runs (the gallery's auto tier, or the panel) keeps the vapour:
-  // the stage lattice is redeclared at the new side and the old lattice resampled into it, then the
-  // pair is redeclared and the stage copied into it; one frame between skips its diffusion (its steps
-  // wait for the next), as the stage is not the pair's size. Steps advance here, in update, and the
-  // passes in record, so several updates before one record (a slow frame's) wait for it.
+  // the lattices are redeclared at the new side and the old view resampled into them; in the next
+  // update the view is redeclared, and that frame's diffusion writes it. The frame between skips its
+  // diffusion (its steps wait for the next), as the view it would write is not the lattices' side. Steps advance here,
+  // in update, and the passes in record, so several updates before one record (a slow frame's) wait for it.
   void advanceCarry(int wanted) {
-    if (carry_ == Carry::StageWritten) {
-      resources_.redeclare(lattice_, latticeDecl(carryTo_));
-      builtLattice_ = carryTo_;
-      carry_ = Carry::LatticeDeclared;
+    if (carry_ == Carry::Resampled) {
+      resources_.redeclare(view_, viewDecl(builtLattice_));
+      viewSide_ = builtLattice_;
+      carry_ = Carry::None;
     } else if (carry_ == Carry::None && wanted != builtLattice_) {
+      resources_.redeclare(lattice_, latticeDecl(wanted));
       resources_.redeclare(stage_, stageDecl(wanted));
-      carryTo_ = wanted;
-      carry_ = Carry::StageDeclared;
+      builtLattice_ = wanted;
+      carry_ = Carry::Resample;
     }
   }
   void carry(const FrameContext& frame) {
-    if (carry_ != Carry::StageDeclared && carry_ != Carry::LatticeDeclared) return;
+    if (carry_ != Carry::Resample) return;
     const auto pass = frame.pass("bloom carry");
-    const bool intoStage = carry_ == Carry::StageDeclared;
-    gpu::Image& from = intoStage ? frame.image(lattice_) : frame.image(stage_);
-    gpu::Image& to = intoStage ? frame.image(stage_) : frame.image(lattice_);
+    gpu::Image& from = frame.image(view_);
+    gpu::Buffer& to = frame.buffer(lattice_);
     frame.transition(from, gpu::use::ComputeSample);
-    frame.transition(to, gpu::use::ComputeWrite);
-    resample_.bind(frame.cmd);
-    resample_.push(frame.cmd, gpu::Bindings()
-                                  .sampledImage("source", from.view(),
-                                                device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
-                                                gpu::use::ComputeSample.layout)
-                                  .storageImage("lattice", to.view()));
-    const uint32_t n = uint32_t(carryTo_);
-    resample_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
-    carry_ = intoStage ? Carry::StageWritten : Carry::None;
+    frame.transition(to, gpu::use::ComputeWriteBuffer);
+    overLattice(frame, resample_,
+                gpu::Bindings()
+                    .sampledImage("source", from.view(),
+                                  device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
+                                  gpu::use::ComputeSample.layout)
+                    .storageBuffer("Lattice", to.handle()),
+                shader::BloomResamplePush{uint32_t(builtLattice_)});
+    carry_ = Carry::Resampled;
+  }
+  // One invocation a voxel of the lattice (fill.comp, resample.comp).
+  template <typename Push>
+  void overLattice(const FrameContext& frame, const gpu::ComputeProgram& program, const gpu::Bindings& bindings,
+                   const Push& push) const {
+    const uint32_t n = uint32_t(builtLattice_);
+    program.bind(frame.cmd);
+    program.push(frame.cmd, bindings);
+    program.constants(frame.cmd, push);
+    program.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
   }
 
   std::array<float, 4> thresholds() const {
@@ -341,20 +366,18 @@ class BloomScene final : public Scene {
   void fill(const FrameContext& frame) {
     if (pendingFill_ <= 0.0f) return;
     const auto pass = frame.pass("bloom fill");
-    gpu::Image& lattice = frame.image(lattice_);
-    frame.transition(lattice, gpu::use::ComputeWrite);
-    fill_.bind(frame.cmd);
-    fill_.push(frame.cmd, gpu::Bindings().storageImage("lattice", lattice.view()));
-    fill_.constants(frame.cmd, shader::BloomFillPush{pendingFill_});
-    const uint32_t n = uint32_t(builtLattice_);
-    fill_.dispatchOver(frame.cmd, VkExtent3D{n, n, n});
+    gpu::Buffer& lattice = frame.buffer(lattice_);
+    frame.transition(lattice, gpu::use::ComputeWriteBuffer);
+    overLattice(frame, fill_, gpu::Bindings().storageBuffer("Lattice", lattice.handle()),
+                shader::BloomFillPush{pendingFill_, uint32_t(builtLattice_)});
     pendingFill_ = 0.0f;
   }
 
   // Each pending step is a frame of the plan: explicit sub-steps, or the stages of one super step
-  // rotating the lattice pair and the stage lattice (bloom_math.h: resultSlot), ending in the pair.
+  // rotating the lattice pair and the stage lattice (bloom_math.h: resultSlot), ending in the pair;
+  // the frame's last stage also writes the view.
   void simulate(const FrameContext& frame) {
-    if (stepsPending_ == 0 || carry_ == Carry::StageWritten) return;  // the stage is another side now
+    if (stepsPending_ == 0 || viewSide_ != builtLattice_) return;  // a carry's frame: the view is another side
     const auto pass = frame.pass("bloom diffuse");
     const uint32_t n = uint32_t(builtLattice_);
     const DiffusionPlan plan = this->plan();
@@ -362,10 +385,14 @@ class BloomScene final : public Scene {
                                   .diffusion = scaledD(),
                                   .decay = source_.on ? settings_.decayRising : settings_.decayVenting,
                                   .sigma = scaledSigma(settings_.sigma, n),
-                                  .sourceRate = source_.on ? source_.rate : 0.0f};
+                                  .sourceRate = source_.on ? source_.rate : 0.0f,
+                                  .side = n};
+    gpu::Image& view = frame.image(view_);
+    frame.transition(view, gpu::use::ComputeWrite);  // bound in every stage, written by the frame's last
     diffuse_.bind(frame.cmd);
-    for (uint32_t step = 0; step < uint32_t(stepsPending_) * plan.superSteps; ++step) {
-      gpu::Image* slots[3] = {&frame.image(lattice_), &frame.resources.previous(lattice_), &frame.image(stage_)};
+    const uint32_t steps = uint32_t(stepsPending_) * plan.superSteps;
+    for (uint32_t step = 0; step < steps; ++step) {
+      gpu::Buffer* slots[3] = {&frame.buffer(lattice_), &frame.resources.previous(lattice_), &frame.buffer(stage_)};
       uint32_t older = 0, here = 0;
       for (uint32_t j = 1; j <= plan.stages; ++j) {
         const uint32_t next = stageSlot(j, plan.stages, here, older);
@@ -374,13 +401,15 @@ class BloomScene final : public Scene {
         push.keep = w.keep;
         push.older = w.older;
         push.last = j == plan.stages ? 1u : 0u;
-        frame.transition(*slots[here], gpu::use::ComputeRead);
-        frame.transition(*slots[older], gpu::use::ComputeRead);
-        frame.transition(*slots[next], gpu::use::ComputeWrite);
+        push.writeView = push.last && step + 1 == steps ? 1u : 0u;
+        frame.transition(*slots[here], gpu::use::ComputeReadBuffer);
+        frame.transition(*slots[older], gpu::use::ComputeReadBuffer);
+        frame.transition(*slots[next], gpu::use::ComputeWriteBuffer);
         diffuse_.push(frame.cmd, gpu::Bindings()
-                                     .storageImage("current", slots[here]->view())
-                                     .storageImage("older", slots[older]->view())
-                                     .storageImage("next", slots[next]->view()));
+                                     .storageBuffer("Current", slots[here]->handle())
+                                     .storageBuffer("Older", slots[older]->handle())
+                                     .storageBuffer("Next", slots[next]->handle())
+                                     .storageImage("view", view.view()));
         diffuse_.constants(frame.cmd, push);
         diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
         older = here, here = next;
@@ -394,14 +423,16 @@ class BloomScene final : public Scene {
     const auto pass = frame.pass("bloom statistics");
     gpu::Buffer& counts = frame.buffer(statsCounts_);
     gpu::fillBuffer(frame.cmd, counts, 0, gpu::use::ComputeReadWriteBuffer);  // the workgroups' atomics add to it
-    gpu::Image& lattice = frame.image(lattice_);
-    frame.transition(lattice, gpu::use::ComputeRead);
+    // The view, not the lattice: read here, it is still in the L2 when the crystal samples it (reading the
+    // lattice made the crystal 6 % slower at 256^3 on the H200, and the pass itself 5 %).
+    gpu::Image& view = frame.image(view_);
+    frame.transition(view, gpu::use::ComputeRead);
     statistics_.bind(frame.cmd);
     statistics_.push(frame.cmd,
-                     gpu::Bindings().storageImage("lattice", lattice.view()).storageBuffer("Stats", counts.handle()));
+                     gpu::Bindings().storageImage("view", view.view()).storageBuffer("Stats", counts.handle()));
     const auto [amber, rose, crimson, climax] = thresholds();
     statistics_.constants(frame.cmd, shader::BloomStatsThresholds{amber, rose, crimson, climax});
-    const uint32_t n = uint32_t(builtLattice_);
+    const uint32_t n = uint32_t(viewSide_);
     statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomStatsColumn - 1) / shader::kBloomStatsColumn});
     statsReadback_.record(frame.cmd, counts, time_);
   }
@@ -419,8 +450,8 @@ class BloomScene final : public Scene {
 
   void drawCrystal(const FrameContext& frame) {
     const auto pass = frame.pass("bloom crystal");
-    gpu::Image& lattice = frame.image(lattice_);
-    frame.transition(lattice, gpu::use::FragmentSample);
+    gpu::Image& vapour = frame.image(view_);
+    frame.transition(vapour, gpu::use::FragmentSample);
     const auto rendering = frame.rendering({{{&frame.target, std::nullopt}}, std::nullopt});
     const glm::mat4 view = glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     glm::mat4 projection = glm::perspective(kFieldOfViewY, aspect_, 0.05f, 20.0f);
@@ -438,7 +469,7 @@ class BloomScene final : public Scene {
                                         .clearGlass = clearGlass() ? 1u : 0u};
     crystal_.bind(frame.cmd);
     crystal_.push(frame.cmd, gpu::Bindings().sampledImage(
-                                 "vapour", lattice.view(),
+                                 "vapour", vapour.view(),
                                  device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp),
                                  gpu::use::FragmentSample.layout));
     crystal_.constants(frame.cmd, push);
@@ -552,16 +583,17 @@ class BloomScene final : public Scene {
   gpu::GraphicsProgram crystal_;
   gpu::BufferHandle statsCounts_;
   gpu::ReadbackRing statsReadback_;
-  gpu::ImageHandle lattice_;
-  gpu::ImageHandle stage_;
+  gpu::BufferHandle lattice_;  // the pair a frame's diffusion ends in: the vapour, saved by checkpoints
+  gpu::BufferHandle stage_;
+  gpu::ImageHandle view_;
+  int viewSide_ = 0;  // the view's side: the lattices' but between a carry's two frames
   Settings settings_;
   int builtLattice_ = 0;  // the pair's side: the lattice setting at the tier in use
   int builtSetting_ = 0;  // the lattice setting it was built for
   float builtFill_ = 0.0f;
   bool recorded_ = false;  // a frame has run: a new tier's side carries the vapour over from now on
-  enum class Carry { None, StageDeclared, StageWritten, LatticeDeclared };
+  enum class Carry { None, Resample, Resampled };
   Carry carry_ = Carry::None;
-  int carryTo_ = 0;
   float aspect_ = 16.0f / 9.0f;
   double time_ = 0.0;
   uint64_t frame_ = 0;
