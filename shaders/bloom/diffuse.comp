@@ -20,6 +20,11 @@ layout(binding = 1, std430) readonly buffer Older { float older[]; };  // the st
 layout(binding = 2, std430) writeonly buffer Next { float next[]; };
 layout(binding = 3, r32f) uniform writeonly image3D view;  // the frame's result, for crystal.frag
 layout(push_constant) uniform Push { BloomDiffusePush pc; };
+// What a stage reads and writes besides its lattices specialises the pipeline (llvmpipe runs the side a
+// uniform branch skips too): the stage before's lattice (older weight not 0), and the view (the
+// frame's last stage).
+layout(constant_id = 0) const uint READS_OLDER = 1u;
+layout(constant_id = 1) const uint WRITES_VIEW = 0u;
 
 float at(ivec3 p, int n) { return current[latticeIndex(clamp(p, ivec3(0), ivec3(n - 1)), n)]; }
 
@@ -43,10 +48,10 @@ void main() {
         change += pc.sourceRate * exp(-dot(d, d) / (2.0 * pc.sigma * pc.sigma));
       }
       float v = pc.keep * here;
-      if (pc.older != 0.0) v += pc.older * older[latticeIndex(p, n)];  // uniform: an explicit step reads none
+      if (READS_OLDER != 0u) v += pc.older * older[latticeIndex(p, n)];  // an explicit step reads none
       v += pc.dt * change;
       if (pc.last != 0u) v = clamp(v, 0.0, 1.05);  // uniform
-      if (pc.writeView != 0u) imageStore(view, p, vec4(v));
+      if (WRITES_VIEW != 0u) imageStore(view, p, vec4(v));
       next[latticeIndex(p, n)] = v;
     }
     below = here;

@@ -18,7 +18,6 @@ struct BloomDiffusePush {
   float keep;        // the weight of the voxel's value
   float older;       // the weight of the stage before's; 0: not read
   uint last;         // 1: a super step's last stage, which clamps
-  uint writeView;    // 1: the frame's last stage, which also writes the view the crystal samples
   uint side;         // the lattice's side n (n^3 voxels)
 };
 

@@ -1,14 +1,14 @@
 // shaders/bloom/diffuse.comp against its CPU reference (src/scenes/bloom/bloom_math.h) on a small
 // lattice: random vapour inside the crystal, an off-centre source, several steps; and the lattice
 // vents at the same speed whatever sub-step a lattice size needs (the storage keeps every step).
-#include "gpu/program.h"
+#include <cmath>
+#include <random>
+
+#include "gpu/program_variants.h"
 #include "gpu/stream.h"
 #include "scenes/bloom/bloom_math.h"
 #include "shaders/bloom/diffuse_push.h"
 #include "support/gpu_test.h"
-
-#include <cmath>
-#include <random>
 
 namespace vitrine::bloom {
 namespace {
@@ -33,7 +33,7 @@ class BloomGpu : public test::GpuTest {
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gpu::Image view(device(), desc, "view");
     gpu::ProgramLibrary programs(device());
-    gpu::ComputeProgram diffuse(programs, "bloom/diffuse.comp");
+    gpu::ComputeVariants diffuse(programs, "bloom/diffuse.comp");
     gpu::StreamArena arena(device());
     gpu::Buffer readback(device(), 2 * bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
                          "lattice readback");
@@ -50,7 +50,6 @@ class BloomGpu : public test::GpuTest {
         gpu::uploadBuffer(cmd, arena, lattice, 0, std::as_bytes(std::span(texels)), gpu::use::ComputeReadBuffer);
       const std::vector<float> zeros(texels.size(), 0.0f);
       gpu::uploadImage(cmd, arena, view, std::as_bytes(std::span(zeros)), gpu::use::ComputeWrite);
-      diffuse.bind(cmd);
       const uint32_t steps = uint32_t(frames) * plan.superSteps;
       for (uint32_t step = 0; step < steps; ++step) {
         gpu::Buffer* slots[3] = {&lattices[state], &lattices[1 - state], &lattices[2]};
@@ -60,18 +59,20 @@ class BloomGpu : public test::GpuTest {
           const StageWeights w = rklStage(j, plan.stages);
           push.dt = w.step * plan.dt, push.keep = w.keep, push.older = w.older;
           push.last = j == plan.stages ? 1u : 0u;
-          push.writeView = push.last && step + 1 == steps ? 1u : 0u;
+          const gpu::ComputeProgram& stage = diffuse({w.older != 0.0f, push.last && step + 1 == steps});
+          stage.bind(cmd);
           slots[here]->use(cmd, gpu::use::ComputeReadBuffer);
           slots[older]->use(cmd, gpu::use::ComputeReadBuffer);
           slots[next]->use(cmd, gpu::use::ComputeWriteBuffer);
           view.use(cmd, gpu::use::ComputeWrite);
-          diffuse.push(cmd, gpu::Bindings()
-                                .storageBuffer("Current", slots[here]->handle())
-                                .storageBuffer("Older", slots[older]->handle())
-                                .storageBuffer("Next", slots[next]->handle())
-                                .storageImage("view", view.view()));
-          diffuse.constants(cmd, push);
-          diffuse.dispatchOver(cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
+          stage.push(cmd, gpu::Bindings()
+                              .storageBuffer("Current", slots[here]->handle())
+                              .storageBuffer("Older", slots[older]->handle())
+                              .storageBuffer("Next", slots[next]->handle())
+                              .storageImage("view", view.view()));
+          stage.constants(cmd, push);
+          stage.dispatchOver(cmd,
+                             VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
           older = here, here = next;
         }
         EXPECT_LT(here, 2u) << "a super step ends in the pair";

@@ -4,21 +4,8 @@
 // thresholds. The phases are read from the lattice itself (statistics reduced on the GPU, read back
 // a few frames later, never a stall) and reported as scene events.
 #include "scenes/bloom/bloom_scene.h"
-#include "scenes/adaptive_quality.h"
-
-#include "core/error.h"
-#include "gpu/buffer_commands.h"
-#include "gpu/readback_ring.h"
-#include "scenes/bloom/bloom_math.h"
-#include "scenes/bloom/settings.h"
-#include "shaders/bloom/chamber_push.h"
-#include "shaders/bloom/crystal_push.h"
-#include "shaders/bloom/diffuse_push.h"
-#include "shaders/bloom/stats_blocks.h"
-#include "text/text_pass.h"
 
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
 #include <algorithm>
@@ -27,9 +14,23 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <glm/gtc/matrix_transform.hpp>
 #include <optional>
 #include <utility>
 #include <vector>
+
+#include "core/error.h"
+#include "gpu/buffer_commands.h"
+#include "gpu/program_variants.h"
+#include "gpu/readback_ring.h"
+#include "scenes/adaptive_quality.h"
+#include "scenes/bloom/bloom_math.h"
+#include "scenes/bloom/settings.h"
+#include "shaders/bloom/chamber_push.h"
+#include "shaders/bloom/crystal_push.h"
+#include "shaders/bloom/diffuse_push.h"
+#include "shaders/bloom/stats_blocks.h"
+#include "text/text_pass.h"
 
 namespace vitrine::bloom {
 namespace {
@@ -389,7 +390,6 @@ class BloomScene final : public Scene {
                                   .side = n};
     gpu::Image& view = frame.image(view_);
     frame.transition(view, gpu::use::ComputeWrite);  // bound in every stage, written by the frame's last
-    diffuse_.bind(frame.cmd);
     const uint32_t steps = uint32_t(stepsPending_) * plan.superSteps;
     for (uint32_t step = 0; step < steps; ++step) {
       gpu::Buffer* slots[3] = {&frame.buffer(lattice_), &frame.resources.previous(lattice_), &frame.buffer(stage_)};
@@ -401,17 +401,20 @@ class BloomScene final : public Scene {
         push.keep = w.keep;
         push.older = w.older;
         push.last = j == plan.stages ? 1u : 0u;
-        push.writeView = push.last && step + 1 == steps ? 1u : 0u;
+        // diffuse.comp's READS_OLDER and WRITES_VIEW: the frame's last stage writes the view.
+        const gpu::ComputeProgram& diffuse = diffuse_({w.older != 0.0f, push.last && step + 1 == steps});
+        diffuse.bind(frame.cmd);
         frame.transition(*slots[here], gpu::use::ComputeReadBuffer);
         frame.transition(*slots[older], gpu::use::ComputeReadBuffer);
         frame.transition(*slots[next], gpu::use::ComputeWriteBuffer);
-        diffuse_.push(frame.cmd, gpu::Bindings()
-                                     .storageBuffer("Current", slots[here]->handle())
-                                     .storageBuffer("Older", slots[older]->handle())
-                                     .storageBuffer("Next", slots[next]->handle())
-                                     .storageImage("view", view.view()));
-        diffuse_.constants(frame.cmd, push);
-        diffuse_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
+        diffuse.push(frame.cmd, gpu::Bindings()
+                                    .storageBuffer("Current", slots[here]->handle())
+                                    .storageBuffer("Older", slots[older]->handle())
+                                    .storageBuffer("Next", slots[next]->handle())
+                                    .storageImage("view", view.view()));
+        diffuse.constants(frame.cmd, push);
+        diffuse.dispatchOver(frame.cmd,
+                             VkExtent3D{n, n, (n + shader::kBloomDiffuseColumn - 1) / shader::kBloomDiffuseColumn});
         older = here, here = next;
       }
       if (here == 1) frame.resources.flip(lattice_);
@@ -577,7 +580,7 @@ class BloomScene final : public Scene {
   float appliedGain_ = -1.0f;
   gpu::ComputeProgram fill_;
   gpu::ComputeProgram resample_;
-  gpu::ComputeProgram diffuse_;
+  gpu::ComputeVariants diffuse_;
   gpu::ComputeProgram statistics_;
   gpu::ComputeProgram chamber_;
   gpu::GraphicsProgram crystal_;
