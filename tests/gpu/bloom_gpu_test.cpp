@@ -1,14 +1,14 @@
 // shaders/bloom/diffuse.comp against its CPU reference (src/scenes/bloom/bloom_math.h) on a small
 // lattice: random vapour inside the crystal, an off-centre source, several steps; and the lattice
 // vents at the same speed whatever sub-step a lattice size needs (the storage keeps every step).
-#include <cmath>
-#include <random>
-
 #include "gpu/program_variants.h"
 #include "gpu/stream.h"
 #include "scenes/bloom/bloom_math.h"
 #include "shaders/bloom/diffuse_push.h"
 #include "support/gpu_test.h"
+
+#include <cmath>
+#include <random>
 
 namespace vitrine::bloom {
 namespace {

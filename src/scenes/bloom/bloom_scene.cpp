@@ -4,8 +4,22 @@
 // thresholds. The phases are read from the lattice itself (statistics reduced on the GPU, read back
 // a few frames later, never a stall) and reported as scene events.
 #include "scenes/bloom/bloom_scene.h"
+#include "scenes/adaptive_quality.h"
+
+#include "core/error.h"
+#include "gpu/buffer_commands.h"
+#include "gpu/program_variants.h"
+#include "gpu/readback_ring.h"
+#include "scenes/bloom/bloom_math.h"
+#include "scenes/bloom/settings.h"
+#include "shaders/bloom/chamber_push.h"
+#include "shaders/bloom/crystal_push.h"
+#include "shaders/bloom/diffuse_push.h"
+#include "shaders/bloom/stats_blocks.h"
+#include "text/text_pass.h"
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
 #include <algorithm>
@@ -14,23 +28,9 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
-#include <glm/gtc/matrix_transform.hpp>
 #include <optional>
 #include <utility>
 #include <vector>
-
-#include "core/error.h"
-#include "gpu/buffer_commands.h"
-#include "gpu/program_variants.h"
-#include "gpu/readback_ring.h"
-#include "scenes/adaptive_quality.h"
-#include "scenes/bloom/bloom_math.h"
-#include "scenes/bloom/settings.h"
-#include "shaders/bloom/chamber_push.h"
-#include "shaders/bloom/crystal_push.h"
-#include "shaders/bloom/diffuse_push.h"
-#include "shaders/bloom/stats_blocks.h"
-#include "text/text_pass.h"
 
 namespace vitrine::bloom {
 namespace {
@@ -115,7 +115,7 @@ class BloomScene final : public Scene {
     lattice_ = resources_.declare(latticeDecl(settings_.lattice));
     stage_ = resources_.declare(stageDecl(settings_.lattice));
     view_ = resources_.declare(viewDecl(settings_.lattice));
-    builtLattice_ = builtSetting_ = viewSide_ = settings_.lattice;
+    builtLattice_ = builtSetting_ = settings_.lattice;
   }
   ~BloomScene() override { audio_.drone(time_, false); }
 
@@ -283,7 +283,8 @@ class BloomScene final : public Scene {
     decl.state = false;
     return decl;
   }
-  // What the crystal samples (filtered) and the statistics count: the lattice as the frame's diffusion left it.
+  // What the crystal samples (filtered) and the statistics count: the lattice as the frame's diffusion
+  // left it.
   static gpu::ImageDecl viewDecl(int n) {
     gpu::ImageDecl decl{"bloom vapour view", kViewFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                         gpu::ImageSize::absolute(uint32_t(n), uint32_t(n), uint32_t(n))};
@@ -295,7 +296,6 @@ class BloomScene final : public Scene {
     resources_.redeclare(lattice_, latticeDecl(n));
     resources_.redeclare(stage_, stageDecl(n));
     resources_.redeclare(view_, viewDecl(n));
-    viewSide_ = n;
     carry_ = Carry::None;
   }
 
@@ -313,12 +313,12 @@ class BloomScene final : public Scene {
   // A tier's new side while the piece runs (the gallery's auto tier, or the panel) keeps the vapour:
   // the lattices are redeclared at the new side and the old view resampled into them; in the next
   // update the view is redeclared, and that frame's diffusion writes it. The frame between skips its
-  // diffusion (its steps wait for the next), as the view it would write is not the lattices' side. Steps advance here,
-  // in update, and the passes in record, so several updates before one record (a slow frame's) wait for it.
+  // diffusion (its steps wait for the next), as the view it would write is still the old side. Steps
+  // advance here, in update, and the passes in record, so several updates before one record (a slow
+  // frame's) wait for it.
   void advanceCarry(int wanted) {
     if (carry_ == Carry::Resampled) {
       resources_.redeclare(view_, viewDecl(builtLattice_));
-      viewSide_ = builtLattice_;
       carry_ = Carry::None;
     } else if (carry_ == Carry::None && wanted != builtLattice_) {
       resources_.redeclare(lattice_, latticeDecl(wanted));
@@ -378,7 +378,7 @@ class BloomScene final : public Scene {
   // rotating the lattice pair and the stage lattice (bloom_math.h: resultSlot), ending in the pair;
   // the frame's last stage also writes the view.
   void simulate(const FrameContext& frame) {
-    if (stepsPending_ == 0 || viewSide_ != builtLattice_) return;  // a carry's frame: the view is another side
+    if (stepsPending_ == 0 || carry_ != Carry::None) return;  // a carry's frame: the view is the old side
     const auto pass = frame.pass("bloom diffuse");
     const uint32_t n = uint32_t(builtLattice_);
     const DiffusionPlan plan = this->plan();
@@ -427,7 +427,7 @@ class BloomScene final : public Scene {
     gpu::Buffer& counts = frame.buffer(statsCounts_);
     gpu::fillBuffer(frame.cmd, counts, 0, gpu::use::ComputeReadWriteBuffer);  // the workgroups' atomics add to it
     // The view, not the lattice: read here, it is still in the L2 when the crystal samples it (reading the
-    // lattice made the crystal 6 % slower at 256^3 on the H200, and the pass itself 5 %).
+    // lattice made the crystal 6 % slower at 256^3 on the H200). In a carry's frame it is the old side.
     gpu::Image& view = frame.image(view_);
     frame.transition(view, gpu::use::ComputeRead);
     statistics_.bind(frame.cmd);
@@ -435,7 +435,7 @@ class BloomScene final : public Scene {
                      gpu::Bindings().storageImage("view", view.view()).storageBuffer("Stats", counts.handle()));
     const auto [amber, rose, crimson, climax] = thresholds();
     statistics_.constants(frame.cmd, shader::BloomStatsThresholds{amber, rose, crimson, climax});
-    const uint32_t n = uint32_t(viewSide_);
+    const uint32_t n = view.extent().width;
     statistics_.dispatchOver(frame.cmd, VkExtent3D{n, n, (n + shader::kBloomStatsColumn - 1) / shader::kBloomStatsColumn});
     statsReadback_.record(frame.cmd, counts, time_);
   }
@@ -589,7 +589,6 @@ class BloomScene final : public Scene {
   gpu::BufferHandle lattice_;  // the pair a frame's diffusion ends in: the vapour, saved by checkpoints
   gpu::BufferHandle stage_;
   gpu::ImageHandle view_;
-  int viewSide_ = 0;  // the view's side: the lattices' but between a carry's two frames
   Settings settings_;
   int builtLattice_ = 0;  // the pair's side: the lattice setting at the tier in use
   int builtSetting_ = 0;  // the lattice setting it was built for
