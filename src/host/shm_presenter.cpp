@@ -203,17 +203,17 @@ ShmPresenter::~ShmPresenter() {
 
 std::string ShmPresenter::build(VkExtent2D extent) {
   drain();
-  // The segment for this size now, while the thread is idle: where the system will not grant one
-  // (a kernel.shmmax under the window's bytes), the caller still has Vulkan's swapchain to turn to.
-  const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
-  if (std::string why = connection_->reserve(bytes); !why.empty()) return why;
-  if (!slots_.empty()) {
+  if (!slots_.empty()) {  // the old size's, which a refused size leaves none of
     std::vector<VkCommandBuffer> copies;
     for (const Slot& slot : slots_) copies.push_back(slot.copy);
     vkFreeCommandBuffers(device_, pool_, uint32_t(copies.size()), copies.data());  // every copy has finished
     device_.retire(std::move(slots_));  // frames in flight may still draw into the images
     slots_.clear();
   }
+  // The segment for this size now, while the thread is idle: where the system will not grant one
+  // (a kernel.shmmax under the window's bytes), the caller still has Vulkan's swapchain to turn to.
+  const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+  if (std::string why = connection_->reserve(bytes); !why.empty()) return why;
   extent_ = extent;
   next_ = 0;
   std::vector<VkCommandBuffer> copies(kImages);

@@ -35,8 +35,8 @@ class ShmPresenter {
   ~ShmPresenter();
 
   // Waits for the frames on their way to the window, retires the images and makes new ones. An empty
-  // string, or why the window cannot be drawn through shared memory at this size (the presenter is
-  // then of no further use).
+  // string, or why the window cannot be drawn through shared memory at this size (the presenter then
+  // holds no images until a build at a size that fits).
   std::string build(VkExtent2D extent);
   VkExtent2D extent() const { return extent_; }
   uint32_t imageCount() const { return uint32_t(slots_.size()); }

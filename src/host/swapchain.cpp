@@ -114,20 +114,29 @@ VkPresentModeKHR Swapchain::presentMode(bool vsync) const {
 }
 
 void Swapchain::build(VkExtent2D framebuffer, bool vsync) {
-  if (shm_) {
-    const std::string refused = shm_->build(framebuffer);
+  if (ShmPresenter* presenter = shm_ ? shm_.get() : parkedShm_.get()) {
+    const std::string refused = presenter->build(framebuffer);
     device_.retire(std::move(renderFinished_));  // frames in flight may still signal them
     renderFinished_.clear();
     if (refused.empty()) {
+      if (parkedShm_) {  // the window fits again: its frames leave Vulkan's swapchain
+        shm_ = std::move(parkedShm_);
+        device_.retire(std::move(views_));
+        device_.retire(std::move(swapchain_));
+        views_.clear();
+        images_.clear();
+        std::fprintf(stderr, "vitrine: frames reach a %ux%u window through X shared memory again\n",
+                     framebuffer.width, framebuffer.height);
+      }
       shm_->pace(vsync ? refreshInterval(window_) : std::chrono::nanoseconds(0));
       for (uint32_t i = 0; i < shm_->imageCount(); ++i)
         renderFinished_.push_back(gpu::createSemaphore(device_, fmt::format("render finished {}", i)));
       extent_ = framebuffer;
-    } else {
+    } else if (shm_) {
       // Vulkan's swapchain draws the same pixels, only slower on a software device: the window goes on.
-      std::fprintf(stderr, "vitrine: frames reach a %ux%u window through Vulkan's swapchain from now on (%s)\n",
+      std::fprintf(stderr, "vitrine: frames reach a %ux%u window through Vulkan's swapchain until it fits (%s)\n",
                    framebuffer.width, framebuffer.height, refused.c_str());
-      shm_.reset();  // its images are retired behind the frames in flight
+      parkedShm_ = std::move(shm_);
     }
   }
   if (!shm_) buildSwapchain(framebuffer, vsync);

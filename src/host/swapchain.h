@@ -5,7 +5,8 @@
 // render-finished semaphore: the presentation engine may still wait on one after its frame's fence
 // has signalled, and only acquiring that image again proves it is free. On a software device with an
 // X11 window it hands the frames to an ShmPresenter instead of Vulkan's swapchain (shm_presenter.h
-// says why); everything else is the same.
+// says why), except while the window is bigger than the shared memory the system grants; everything
+// else is the same.
 #include "gpu/device.h"
 #include "host/shm_presenter.h"
 
@@ -55,6 +56,9 @@ class Swapchain {
   GLFWwindow* window_;
   Presentation presentation_;  // chosen once: what a surface supports does not change with its size
   std::unique_ptr<ShmPresenter> shm_;  // set where it works: then there is no VkSwapchainKHR
+  // The presenter while the window is bigger than the shared memory the system grants: tried again at
+  // each new size, and back in shm_ once the window fits.
+  std::unique_ptr<ShmPresenter> parkedShm_;
   gpu::Unique<VkSwapchainKHR> swapchain_;
   std::vector<VkImage> images_;  // owned by the swapchain
   std::vector<gpu::Unique<VkImageView>> views_;

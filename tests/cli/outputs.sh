@@ -90,18 +90,26 @@ black "$out/middle.ppm" && fail "the middle of the main window is black: nothing
 
 # Where the system grants no shared-memory segment as big as the window (VITRINE_INJECT=shm-bytes: 640x360
 # fits, 1280x360 does not), the window goes on through Vulkan's swapchain: F11 makes it fullscreen, and it
-# shows the whole frame.
+# shows the whole frame. F11 again makes it 640x360, which fits: its frames go through X shared memory
+# again, and it shows the 640x360 frame.
 : >"$log"
 (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config-small VITRINE_INJECT=shm-bytes:1000000 exec "$vitrine" \
    --scene kifs --reduced-motion --set tier=high --size 640x360 --no-vsync --validate) >"$log" 2>&1 &
 app=$!
 wait_for_showing "$log"
-keys key:Tab key:F11 sleep:3 shot:0,0,1280,360,"$out/grown.ppm" key:Escape
+keys key:Tab key:F11 sleep:3 shot:0,0,1280,360,"$out/grown.ppm" key:F11 sleep:3 shot:0,0,640,360,"$out/shrunk.ppm" \
+  key:Escape
 oiiotool "$out/grown.ppm" --colorconvert sRGB linear -o "$out/grown.exr" || fail "cannot read the grab"
 "$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/grown.exr" | tee "$out/compare.txt" |
   grep -q "^pass" || fail "the grown window does not show the frame: $(cat "$out/compare.txt")"
-grep -q "^vitrine: frames reach a 1280x360 window through Vulkan's swapchain from now on (shmget of 1843200 bytes" \
+grep -q "^vitrine: frames reach a 1280x360 window through Vulkan's swapchain until it fits (shmget of 1843200 bytes" \
   "$log" || fail "the grown window did not turn to Vulkan's swapchain"
+"$vitrine" --headless --scene kifs --reduced-motion --set tier=high --size 640x360 --out "$out/small.exr" >/dev/null
+oiiotool "$out/shrunk.ppm" --colorconvert sRGB linear -o "$out/shrunk.exr" || fail "cannot read the grab"
+"$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/small.exr" "$out/shrunk.exr" | tee "$out/compare.txt" |
+  grep -q "^pass" || fail "the window made small again does not show the frame: $(cat "$out/compare.txt")"
+grep -q "^vitrine: frames reach a 640x360 window through X shared memory again" "$log" ||
+  fail "the window made small again stayed on Vulkan's swapchain"
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
 grep -q "validation messages" "$log" && fail "validation messages"
