@@ -94,6 +94,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     for (size_t i = 0; i < placements.size(); ++i) {
       if (!placements[i].warp) placements[i].warp = savedWarp(placements[i].name);
       outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
+      window_.takeKeysOf(outputs_.back()->handle());
     }
   }
   if (!warp_) warp_ = savedWarp(kMainOutput);  // a file named on the command line wins

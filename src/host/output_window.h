@@ -2,7 +2,8 @@
 // Another output of the gallery (a second projector, a monitor beside the one with the menu): a window
 // with no frame, fullscreen on its monitor or at a place given in pixels, showing the frame the scene
 // rendered once for the main window through this output's own warp (its region, turn, pin and soft
-// edges). It takes no input: the main window has the menu, the keys and the cursor.
+// edges). The main window has the menu and the cursor; keys pressed while an output has the focus
+// go to the main window (Window::takeKeysOf).
 #include "gpu/device.h"
 #include "host/scene_renderer.h"
 #include "host/swapchain.h"
@@ -54,6 +55,7 @@ class OutputWindow {
   maths::OutputWarp& warp() { return warp_; }
   const std::string& name() const { return name_; }
   VkExtent2D extent() const { return swapchain_->extent(); }
+  GLFWwindow* handle() const { return window_; }
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -211,6 +211,11 @@ Pointer Window::takePointer() {
                  std::exchange(leftReleasedAt_, std::nullopt)};
 }
 
+void Window::takeKeysOf(GLFWwindow* other) {
+  glfwSetWindowUserPointer(other, this);
+  glfwSetKeyCallback(other, &Window::onKey);
+}
+
 void Window::onKey(GLFWwindow* window, int key, int, int action, int) {
   if (key == GLFW_KEY_UNKNOWN) return;
   Window& self = owner(window);

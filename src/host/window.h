@@ -62,6 +62,9 @@ class Window {
   void toggleFullscreen();  // on the chosen monitor; back to the windowed position and size
   std::string monitorName() const;  // the chosen monitor's, for the settings it keeps per output
 
+  // Keys pressed while `other` (an output window: output_window.h) has the focus count as this
+  // window's, so a projector's window never swallows Esc, F7 or a scene's number.
+  void takeKeysOf(GLFWwindow* other);
   std::vector<int> takeKeys();  // GLFW key codes pressed since the last take, in order
   const std::vector<int>& keysHeld() const { return held_; }  // GLFW key codes down now
   std::vector<std::string> takeDrops();  // paths of files dropped onto the window since the last take

@@ -3,9 +3,9 @@
 # 1280x360: the main window (640x360 at the left) shows the left half of the frame (--output-warp with a
 # region), and a second output (--outputs: a window without a frame at 640,0) the right half. What the
 # screen shows, grabbed through X11, is a headless render of the whole 1280x360 frame to within 8-bit
-# rounding: the scene rendered once at the frame's size and each output drew its own half. Projector setup
-# (F7) drags a corner of each output and keeps the pins in the warp file and the settings file, and the
-# next start shows them. kifs under
+# rounding: the scene rendered once at the frame's size and each output drew its own half; Esc with the
+# second output focused quits. Projector setup (F7) drags a corner of each output and keeps the pins in
+# the warp file and the settings file, and the next start shows them. kifs under
 # --reduced-motion holds still, at the high tier the headless run uses. Then --span: one window over the
 # whole desktop shows the same frame, and so does a window grown past the shared memory the system grants. --list-monitors lists the display's monitor, and a monitor that is
 # not there, or a bad outputs file, is refused. On lavapipe the windows are drawn through X shared memory
@@ -38,8 +38,10 @@ oiiotool "$out/screen.ppm" --colorconvert sRGB linear -o "$out/screen.exr" || fa
 "$vitrine" compare --fail-fraction 0 --hard-limit 0.01 "$out/frame.exr" "$out/screen.exr" | tee "$out/compare.txt" |
   grep -q "^pass" || fail "the two outputs do not show the frame's halves: $(cat "$out/compare.txt")"
 grep -q "^vitrine: frames reach the window through X shared memory" "$log" || fail "not drawn through X shared memory"
-keys key:Escape
+# Esc pressed while the second output has the keyboard's focus still reaches the gallery.
+keys focus:960,180 key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
+kill -0 $app 2>/dev/null && fail "Esc in the second output's window did not reach the gallery"
 wait $app; code=$?
 grep -q "validation messages" "$log" && fail "validation messages"
 [ "$code" = 0 ] || fail "exit $code"

@@ -3,6 +3,8 @@
 XTEST extension, speaking the X11 protocol over the display's local socket (no xdotool on the test
 machine). Actions: key:NAME (a keysym name: F12, Tab, bracketright, 3 ...), move:X,Y, click:X,Y,
 ctrlclick:X,Y, drag:X,Y,TOX,TOY (pressed, moved there over half a second, released), wheel:X,Y,NOTCHES,
+focus:X,Y (the pointer there, and the keyboard's focus following the pointer from then on, as a window
+manager's focus-follows-mouse would give the window under it),
 sleep:SECONDS, and shot:X,Y,W,H,FILE.ppm, which saves that part of the
 root window (what every window on the screen shows) as a binary PPM. For the gallery's checks under Xvfb (started without access control)."""
 import os
@@ -118,6 +120,10 @@ def main():
                 fake(4, 5 if n > 0 else 4)
                 fake(5, 5 if n > 0 else 4)
                 time.sleep(0.05)
+        elif verb == "focus":
+            x, y = map(int, arg.split(","))
+            fake(6, 0, x, y)
+            request(sock, struct.pack("<BBHII", 42, 1, 3, 1, 0))  # SetInputFocus: PointerRoot, reverting to it
         elif verb == "shot":  # GetImage (ZPixmap) in bands that fit a reply, written as RGB
             x, y, w, h, path = arg.split(",", 4)
             x, y, w, h = int(x), int(y), int(w), int(h)
