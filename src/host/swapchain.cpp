@@ -11,6 +11,7 @@
 
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
+#include "host/window.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -40,11 +41,10 @@ std::optional<VkSurfaceFormatKHR> findFormat(const gpu::Device& device, const st
   return std::nullopt;
 }
 
-// How often the window's display refreshes: its monitor's when fullscreen, else the primary's; 60 Hz where
-// the display does not say (Xvfb reports 0).
+// How often the window's display refreshes: the monitor showing it's (monitorShowing); 60 Hz where the
+// display does not say (Xvfb reports 0).
 std::chrono::nanoseconds refreshInterval(GLFWwindow* window) {
-  GLFWmonitor* monitor = window ? glfwGetWindowMonitor(window) : nullptr;
-  if (!monitor) monitor = glfwGetPrimaryMonitor();
+  GLFWmonitor* monitor = window ? monitorShowing(window) : glfwGetPrimaryMonitor();
   const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
   const int hertz = mode && mode->refreshRate > 0 ? mode->refreshRate : 60;
   return std::chrono::nanoseconds(1'000'000'000 / hertz);
@@ -219,7 +219,15 @@ std::optional<uint32_t> Swapchain::acquire(VkSemaphore acquired) {
 }
 
 void Swapchain::present(uint32_t image) {
-  if (shm_) return shm_->present(image, renderFinished_[image]);
+  if (shm_) {
+    // A window moved onto a monitor of another rate keeps its size (no build): looked at every
+    // kPacedPresents presents, about a second at 60 Hz, for a few X round trips.
+    if (vsync_ && ++presentsPaced_ == kPacedPresents) {
+      presentsPaced_ = 0;
+      shm_->pace(refreshInterval(window_));
+    }
+    return shm_->present(image, renderFinished_[image]);
+  }
   VkSwapchainKHR swapchain = swapchain_;
   VkSemaphore wait = renderFinished_[image];
   VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};

@@ -67,6 +67,8 @@ class Swapchain {
   VkExtent2D builtFor_{};
   bool vsync_ = true;
   bool stale_ = false;
+  static constexpr uint32_t kPacedPresents = 60;  // presents between asking which monitor shows the window
+  uint32_t presentsPaced_ = 0;
 };
 
 }  // namespace vitrine::host

@@ -1,6 +1,7 @@
 #include "host/window.h"
 
 #include "gpu/check.h"
+#include "host/screen_area.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -64,7 +65,21 @@ GLFWmonitor* findMonitor(std::string_view wanted) {
   throw Error(fmt::format("No monitor '{}'; there are:\n{}", wanted, describeMonitors()));
 }
 
-
+GLFWmonitor* monitorShowing(GLFWwindow* window) {
+  if (GLFWmonitor* own = glfwGetWindowMonitor(window)) return own;
+  ScreenArea area;
+  glfwGetWindowPos(window, &area.x, &area.y);
+  glfwGetWindowSize(window, &area.width, &area.height);
+  const std::vector<GLFWmonitor*> all = monitors();
+  std::vector<ScreenArea> areas;
+  for (GLFWmonitor* monitor : all) {
+    ScreenArea& each = areas.emplace_back();
+    glfwGetMonitorPos(monitor, &each.x, &each.y);
+    if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) each.width = mode->width, each.height = mode->height;
+  }
+  const std::optional<size_t> shown = mostShared(area, areas);
+  return shown ? all[*shown] : glfwGetPrimaryMonitor();
+}
 
 Surface::Surface(Surface&& other) noexcept
     : instance_(other.instance_), surface_(std::exchange(other.surface_, VK_NULL_HANDLE)) {}

@@ -33,6 +33,9 @@ class Surface {
 // The monitor `wanted` names: its index in --list-monitors, or a part of its name (any case); empty:
 // the primary. GLFW must be up (a Window open). Throws vitrine::Error listing the monitors there are.
 GLFWmonitor* findMonitor(std::string_view wanted);
+// The monitor that shows `window`: its own when fullscreen, else the one holding most of it
+// (screen_area.h); the primary when it lies off every one.
+GLFWmonitor* monitorShowing(GLFWwindow* window);
 
 class Window {
  public:
