@@ -3,7 +3,8 @@
 W3C WebDriver protocol (standard library only), drives a headless neon run over its WebSocket: arrow
 keys on the `particles` slider change the parameter, a preset saved from the page is offered back as
 the user's and one the gallery lacks is refused on the page, and a drag on the touch pad releases tubes
-along its path. Requests without the access token are refused."""
+along its path. Requests without the access token are refused. Afterwards no Chromium of the test's is
+left running (the WebDriver session is ended, which closes the browser, before chromedriver stops)."""
 import json, os, re, signal, socket, struct, subprocess, sys, time, urllib.error, urllib.request
 
 vitrine, out = sys.argv[1], sys.argv[2]
@@ -48,7 +49,22 @@ run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x
                         "--remote-bind", "127.0.0.1:0", "--events", events, "--out", os.path.join(out, "remote.exr")],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                        env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))  # its presets: not the user's
-driver = None
+profile = os.path.join(out, "chromium-profile")  # names the test's browser processes on their command line
+
+
+def browsers_left():
+    found = []
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                if profile.encode() in f.read():
+                    found.append(int(pid))
+        except OSError:
+            pass
+    return found
+
+
+driver = session = None
 try:
     url = None
     deadline = time.time() + 60
@@ -78,7 +94,8 @@ try:
             time.sleep(0.1)
     capabilities = {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": {
         "binary": "/usr/bin/chromium",
-        "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=420,860"]}}}}
+        "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=420,860",
+                 f"--user-data-dir={profile}"]}}}}
     session = http("POST", wd + "/session", capabilities)["value"]["sessionId"]
     s = f"{wd}/session/{session}"
 
@@ -149,8 +166,14 @@ try:
                                               "actions": moves}]})
     time.sleep(1.0)  # a few frames for the last messages
 finally:
+    if session:  # ending the session closes the browser; chromedriver stopped first would leave it running
+        try:
+            urllib.request.urlopen(urllib.request.Request(s, method="DELETE"), timeout=30).close()
+        except OSError as e:
+            print("the WebDriver session did not end:", e)
     if driver:
         driver.terminate()
+        driver.wait(timeout=30)
     run.send_signal(signal.SIGTERM)
     try:
         output, _ = run.communicate(timeout=60)
@@ -160,6 +183,12 @@ finally:
 
 if run.returncode != 0:
     fail(f"vitrine exited with {run.returncode}:\n{output}")
+for _ in range(50):
+    if not browsers_left():
+        break
+    time.sleep(0.1)
+else:
+    fail(f"Chromium still running after the test (processes {browsers_left()})")
 lines = [json.loads(line) for line in open(events)]
 sets = [e for e in lines if e["event"] == "remote_set" and e["key"] == "particles"]
 releases = [e for e in lines if e["event"] == "release" and e["by"] == "cursor"]
