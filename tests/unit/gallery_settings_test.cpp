@@ -7,21 +7,36 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
 namespace vitrine::host {
 namespace {
 
-std::filesystem::path freshFolder(const std::string& name) {
-  const auto folder = std::filesystem::temp_directory_path() / ("vitrine-gallery-settings-" + name);
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  return folder;
-}
+// An empty folder for one test (the process's own), removed when the test ends.
+class FreshFolder {
+ public:
+  explicit FreshFolder(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() /
+              ("vitrine-gallery-settings-" + name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~FreshFolder() { std::filesystem::remove_all(path_); }
+  FreshFolder(const FreshFolder&) = delete;
+  FreshFolder& operator=(const FreshFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const char* name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwitch) {
-  const auto path = freshFolder("roundtrip") / "settings.json";
+  const FreshFolder folder("roundtrip");
+  const auto path = folder / "settings.json";
   const auto now = GallerySettings::Clock::now();
   {
     GallerySettings settings(path, false);
@@ -42,7 +57,7 @@ TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwit
 }
 
 TEST(GallerySettings, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
-  const auto folder = freshFolder("hostile");
+  const FreshFolder folder("hostile");
   const auto path = folder / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 42, "tier": "low"}}})";
   {
@@ -58,13 +73,13 @@ TEST(GallerySettings, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
   GallerySettings truncated(path, false);
   EXPECT_EQ(truncated.warnings().size(), 1u);
   size_t movedAside = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
     movedAside += entry.path().filename().string().starts_with("settings.json.bad-");
   EXPECT_EQ(movedAside, 1u) << "a file that does not parse is kept, beside";
 }
 
 TEST(GallerySettings, AnOutOfRangeNumberIsAWarningNotAnError) {
-  const auto folder = freshFolder("out-of-range");
+  const FreshFolder folder("out-of-range");
   const auto path = folder / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "elsewhere": {"n": 1e400}})";
   GallerySettings settings(path, false);  // threw nlohmann's out_of_range: "unexpected error", every start
@@ -75,7 +90,8 @@ TEST(GallerySettings, AnOutOfRangeNumberIsAWarningNotAnError) {
 
 // Two galleries on one file: each writes only what it changed, so neither undoes the other.
 TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
-  const auto path = freshFolder("two-galleries") / "settings.json";
+  const FreshFolder folder("two-galleries");
+  const auto path = folder / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 4}}})";
   const auto now = GallerySettings::Clock::now();
   GallerySettings first(path, false), second(path, false);
@@ -98,7 +114,8 @@ TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
 // Each output's warp (projector setup's pin) is kept under its name; a second gallery that set up another
 // output keeps the first's; an identity warp removes the entry; a warp that is not an object is a warning.
 TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
-  const auto path = freshFolder("outputs") / "settings.json";
+  const FreshFolder folder("outputs");
+  const auto path = folder / "settings.json";
   std::ofstream(path) << R"({"version": 1, "outputs": {"left": {"turn": 180}, "broken": [1, 2]}})";
   const auto now = GallerySettings::Clock::now();
   GallerySettings first(path, false), second(path, false);
@@ -121,7 +138,8 @@ TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
 
 // A kiosk cycles through the scenes; the scene the gallery starts with next time stays the user's.
 TEST(GallerySettings, AKioskKeepsTheGallerysLastScene) {
-  const auto path = freshFolder("kiosk") / "settings.json";
+  const FreshFolder folder("kiosk");
+  const auto path = folder / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "glass"})";
   const auto now = GallerySettings::Clock::now();
   {
