@@ -70,9 +70,7 @@ std::optional<SceneSetting> qualifiedName(std::string_view flag, std::string_vie
     setting.scene = name.substr(0, dot);
     name.remove_prefix(dot + 1);
     if (setting.scene.empty()) return std::nullopt;
-    if (!findScene(setting.scene))
-      throw Error(fmt::format("Unknown scene '{}' in {} {}; vitrine --list-scenes shows them.", setting.scene, flag,
-                              text));
+    if (!findScene(setting.scene)) throw Error(unknownScene(setting.scene, fmt::format(" in {} {}", flag, text)));
   }
   if (name.empty() || name.find('.') != std::string_view::npos) return std::nullopt;
   setting.key = name;
@@ -425,8 +423,7 @@ Options parseOptions(int argc, const char* const* argv) {
       options.mode = Mode::ListParams;
       if (i + 1 < argc && argv[i + 1][0] != '-') {  // the optional SCENE
         options.listParams = argv[++i];
-        if (!findScene(options.listParams))
-          throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", options.listParams));
+        if (!findScene(options.listParams)) throw Error(unknownScene(options.listParams));
       }
     }
     else if (arg == "--help" || arg == "-h") options.mode = Mode::Help;

@@ -131,7 +131,7 @@ int runBench(const Options& options) {
   else
     scenes.push_back(options.scene);
   for (const auto& scene : scenes)  // a typo fails before the device is made
-    if (!findScene(scene)) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", scene));
+    if (!findScene(scene)) throw Error(unknownScene(scene));
   const bool everyScene = scenes.size() > 1;
   if (everyScene)
     for (const auto& setting : options.parameters)

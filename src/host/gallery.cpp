@@ -50,7 +50,7 @@ double secondsBetween(Clock::time_point from, Clock::time_point to) {
 
 const SceneInfo& Gallery::namedScene(const std::string& name) {
   if (const SceneInfo* info = findScene(name)) return *info;
-  throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", name));
+  throw Error(unknownScene(name));
 }
 
 Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist)

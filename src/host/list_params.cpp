@@ -32,8 +32,7 @@ int runListParams(const Options& options) {
     }
     first = false;
   }
-  if (first)
-    throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", options.listParams));
+  if (first) throw Error(unknownScene(options.listParams));
   return 0;
 }
 

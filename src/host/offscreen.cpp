@@ -20,7 +20,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
   if (!(step_ > 0.0) || !std::isfinite(step_)) throw Error("an offscreen run needs a finite, positive time step");
   gpu::checkImageSize(device, size_);
   const SceneInfo* info = findScene(config.scene);
-  if (!info) throw Error(fmt::format("Unknown scene '{}'; vitrine --list-scenes shows them.", config.scene));
+  if (!info) throw Error(unknownScene(config.scene));
   if (config.flashGuard) guard_ = std::make_unique<FlashGuard>(device, programs_);
   renderer_.setFlashGuard(guard_.get());
   renderer_.setEventSink(config.events);

@@ -33,4 +33,15 @@ const SceneInfo* findScene(std::string_view name) {
   return nullptr;
 }
 
+std::string unknownScene(std::string_view name, std::string_view where) {
+  std::vector<std::string_view> names, begun;
+  for (const auto& info : sceneRegistry()) {
+    names.push_back(info.name);
+    if (!name.empty() && info.name.starts_with(name)) begun.push_back(info.name);
+  }
+  const std::string meant = begun.size() == 1 ? fmt::format(" (did you mean {}?)", begun.front()) : "";
+  return fmt::format("Unknown scene '{}'{}{}; the scenes are {}.", printable(name), where, meant,
+                     fmt::join(names, ", "));
+}
+
 }  // namespace vitrine

@@ -103,5 +103,8 @@ std::string checkAction(const SceneInfo& info, const ActionCall& call);
 // Every scene, in menu order: generated from the list in cmake/Scenes.cmake.
 std::span<const SceneInfo> sceneRegistry();
 const SceneInfo* findScene(std::string_view name);
+// What to say of a scene name no scene has (`where`: e.g. " in --set nope.grid=32"): the scenes there
+// are, and the one meant when the name begins only that one ("nood": noodles).
+std::string unknownScene(std::string_view name, std::string_view where = {});
 
 }  // namespace vitrine

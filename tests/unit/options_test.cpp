@@ -189,7 +189,7 @@ TEST(OptionsSettings, MalformedSetsAreRefused) {
   for (const char* bad : {"novalue", "=3", ".grid=3", "noodles.=3", "noodles.a.b=3", "noodles."})
     EXPECT_EQ(refusal({"--set", bad}), fmt::format("--set expects KEY=VALUE or SCENE.KEY=VALUE, not '{}'.", bad));
   EXPECT_EQ(refusal({"--set", "nope.grid=32"}),
-            "Unknown scene 'nope' in --set nope.grid=32; vitrine --list-scenes shows them.");
+            "Unknown scene 'nope' in --set nope.grid=32; the scenes are bloom, glass, neon, kifs, noodles, calibrate.");
 }
 
 TEST(OptionsSettings, ParametersForKeepsTheScenesOwnAndTheUnqualifiedWhenAskedInOrder) {
@@ -210,7 +210,7 @@ TEST(OptionsSettings, PresetsAreRepeatableAndMayNameTheirScene) {
   for (const char* bad : {"calm=1", ".calm", "noodles.", "noodles.a.b", ""})
     EXPECT_EQ(refusal({"--preset", bad}), fmt::format("--preset expects NAME or SCENE.NAME, not '{}'.", bad));
   EXPECT_EQ(refusal({"--preset", "nope.calm"}),
-            "Unknown scene 'nope' in --preset nope.calm; vitrine --list-scenes shows them.");
+            "Unknown scene 'nope' in --preset nope.calm; the scenes are bloom, glass, neon, kifs, noodles, calibrate.");
 }
 
 // The user's presets: files applied in every run mode, saved by headless runs, exported on their own;
@@ -249,7 +249,14 @@ TEST(OptionsListParams, ListsEveryOrOneScene) {
   o = parse({"--list-params", "--validate"});  // an option after it is not a scene
   EXPECT_EQ(o.listParams, "");
   EXPECT_TRUE(o.validation);
-  EXPECT_EQ(refusal({"--list-params", "nope"}), "Unknown scene 'nope'; vitrine --list-scenes shows them.");
+  EXPECT_EQ(refusal({"--list-params", "nope"}),
+            "Unknown scene 'nope'; the scenes are bloom, glass, neon, kifs, noodles, calibrate.");
+}
+
+TEST(Options, AnUnknownSceneIsRefusedNamingTheScenesAndTheOneItBegins) {
+  EXPECT_EQ(unknownScene("nood"), "Unknown scene 'nood' (did you mean noodles?); the scenes are bloom, glass, neon, kifs, noodles, calibrate.");
+  EXPECT_EQ(unknownScene("n"), "Unknown scene 'n'; the scenes are bloom, glass, neon, kifs, noodles, calibrate.") << "neon and noodles both begin so";
+  EXPECT_EQ(unknownScene("", " in --set .x=1"), "Unknown scene '' in --set .x=1; the scenes are bloom, glass, neon, kifs, noodles, calibrate.");
 }
 
 // --------------------------------------------------------------- --input, --events, --reset-settings
