@@ -41,8 +41,8 @@ std::optional<VkSurfaceFormatKHR> findFormat(const gpu::Device& device, const st
   return std::nullopt;
 }
 
-// How often the window's display refreshes: the monitor showing it's (monitorShowing); 60 Hz where the
-// display does not say (Xvfb reports 0).
+// How often the monitor showing the window refreshes (monitorShowing); 60 Hz where the display does
+// not say (Xvfb reports 0).
 std::chrono::nanoseconds refreshInterval(GLFWwindow* window) {
   GLFWmonitor* monitor = window ? monitorShowing(window) : glfwGetPrimaryMonitor();
   const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
