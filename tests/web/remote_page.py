@@ -5,7 +5,7 @@ keys on the `particles` slider change the parameter, a preset saved from the pag
 the user's and one the gallery lacks is refused on the page, and a drag on the touch pad releases tubes
 along its path. Requests without the access token are refused. Afterwards no Chromium of the test's is
 left running (the WebDriver session is ended, which closes the browser, before chromedriver stops)."""
-import json, os, re, signal, socket, struct, subprocess, sys, time, urllib.error, urllib.request
+import json, os, re, shutil, signal, socket, struct, subprocess, sys, time, urllib.error, urllib.request
 
 vitrine, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -50,6 +50,7 @@ run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                        env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))  # its presets: not the user's
 profile = os.path.join(out, "chromium-profile")  # names the test's browser processes on their command line
+shutil.rmtree(profile, ignore_errors=True)  # a fresh profile each run
 
 
 def browsers_left():
