@@ -3,11 +3,10 @@
 #include "host/gallery_settings.h"
 #include "scenes/scene.h"
 #include "support/files.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
@@ -15,28 +14,11 @@
 namespace vitrine::host {
 namespace {
 
-// An empty folder for one test (the process's own), removed when the test ends.
-class FreshFolder {
- public:
-  explicit FreshFolder(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("vitrine-gallery-settings-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~FreshFolder() { std::filesystem::remove_all(path_); }
-  FreshFolder(const FreshFolder&) = delete;
-  FreshFolder& operator=(const FreshFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const char* name) const { return path_ / name; }
+// Each test's own empty folder, removed afterwards (support/temp_folder.h).
+class GallerySettingsFile : public test::TempFolderTest {};
 
- private:
-  std::filesystem::path path_;
-};
-
-TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwitch) {
-  const FreshFolder folder("roundtrip");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwitch) {
+  const auto path = folder_ / "settings.json";
   const auto now = GallerySettings::Clock::now();
   {
     GallerySettings settings(path, false);
@@ -56,9 +38,8 @@ TEST(GallerySettings, ValuesSurviveASwitchAndARestartButTransientOnesOnlyTheSwit
   EXPECT_TRUE(again.valuesFor("noodles").empty());
 }
 
-TEST(GallerySettings, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
-  const FreshFolder folder("hostile");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
+  const auto path = folder_ / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 42, "tier": "low"}}})";
   {
     GallerySettings settings(path, false);
@@ -73,14 +54,13 @@ TEST(GallerySettings, ResetStartsCleanAndABadFileIsAWarningNotAnError) {
   GallerySettings truncated(path, false);
   EXPECT_EQ(truncated.warnings().size(), 1u);
   size_t movedAside = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+  for (const auto& entry : std::filesystem::directory_iterator(folder_))
     movedAside += entry.path().filename().string().starts_with("settings.json.bad-");
   EXPECT_EQ(movedAside, 1u) << "a file that does not parse is kept, beside";
 }
 
-TEST(GallerySettings, AnOutOfRangeNumberIsAWarningNotAnError) {
-  const FreshFolder folder("out-of-range");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, AnOutOfRangeNumberIsAWarningNotAnError) {
+  const auto path = folder_ / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "elsewhere": {"n": 1e400}})";
   GallerySettings settings(path, false);  // threw nlohmann's out_of_range: "unexpected error", every start
   ASSERT_EQ(settings.warnings().size(), 1u);
@@ -89,9 +69,8 @@ TEST(GallerySettings, AnOutOfRangeNumberIsAWarningNotAnError) {
 }
 
 // Two galleries on one file: each writes only what it changed, so neither undoes the other.
-TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
-  const FreshFolder folder("two-galleries");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, TwoGalleriesOnOneFileMergeKeyByKey) {
+  const auto path = folder_ / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 4}}})";
   const auto now = GallerySettings::Clock::now();
   GallerySettings first(path, false), second(path, false);
@@ -113,9 +92,8 @@ TEST(GallerySettings, TwoGalleriesOnOneFileMergeKeyByKey) {
 
 // Each output's warp (projector setup's pin) is kept under its name; a second gallery that set up another
 // output keeps the first's; an identity warp removes the entry; a warp that is not an object is a warning.
-TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
-  const FreshFolder folder("outputs");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, WarpsAreKeptPerOutputAndMerged) {
+  const auto path = folder_ / "settings.json";
   std::ofstream(path) << R"({"version": 1, "outputs": {"left": {"turn": 180}, "broken": [1, 2]}})";
   const auto now = GallerySettings::Clock::now();
   GallerySettings first(path, false), second(path, false);
@@ -137,9 +115,8 @@ TEST(GallerySettings, WarpsAreKeptPerOutputAndMerged) {
 }
 
 // A kiosk cycles through the scenes; the scene the gallery starts with next time stays the user's.
-TEST(GallerySettings, AKioskKeepsTheGallerysLastScene) {
-  const FreshFolder folder("kiosk");
-  const auto path = folder / "settings.json";
+TEST_F(GallerySettingsFile, AKioskKeepsTheGallerysLastScene) {
+  const auto path = folder_ / "settings.json";
   std::ofstream(path) << R"({"version": 1, "scene": "glass"})";
   const auto now = GallerySettings::Clock::now();
   {
