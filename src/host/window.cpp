@@ -29,6 +29,14 @@ std::vector<GLFWmonitor*> monitors() {
   return {list, list + std::max(count, 0)};
 }
 
+// Where a monitor lies on the desktop, in pixels (its current mode's size).
+ScreenArea areaOf(GLFWmonitor* monitor) {
+  ScreenArea area;
+  glfwGetMonitorPos(monitor, &area.x, &area.y);
+  if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) area.width = mode->width, area.height = mode->height;
+  return area;
+}
+
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return text;
@@ -72,11 +80,7 @@ GLFWmonitor* monitorShowing(GLFWwindow* window) {
   glfwGetWindowSize(window, &area.width, &area.height);
   const std::vector<GLFWmonitor*> all = monitors();
   std::vector<ScreenArea> areas;
-  for (GLFWmonitor* monitor : all) {
-    ScreenArea& each = areas.emplace_back();
-    glfwGetMonitorPos(monitor, &each.x, &each.y);
-    if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) each.width = mode->width, each.height = mode->height;
-  }
+  for (GLFWmonitor* monitor : all) areas.push_back(areaOf(monitor));
   const std::optional<size_t> shown = mostShared(area, areas);
   return shown ? all[*shown] : glfwGetPrimaryMonitor();
 }
@@ -108,11 +112,9 @@ Window::Window(VkExtent2D size, bool fullscreen, std::string_view monitor, bool 
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   int left = 0, top = 0, right = 0, bottom = 0;  // every monitor's area, for --span
   for (GLFWmonitor* each : monitors()) {
-    int x = 0, y = 0;
-    glfwGetMonitorPos(each, &x, &y);
-    const GLFWvidmode* mode = glfwGetVideoMode(each);
-    left = std::min(left, x), top = std::min(top, y);
-    right = std::max(right, x + mode->width), bottom = std::max(bottom, y + mode->height);
+    const ScreenArea area = areaOf(each);
+    left = std::min(left, area.x), top = std::min(top, area.y);
+    right = std::max(right, area.x + area.width), bottom = std::max(bottom, area.y + area.height);
   }
   if (span) {
     glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);
