@@ -14,23 +14,27 @@ struct FieldSettings {
   float lift;
 };
 
+// The flows from the gradients of their noise potentials: at q (gx), q + offsetY (gy), q + offsetZ (gz).
+vec3 curlOf(vec3 gx, vec3 gy, vec3 gz) {
+  NOISE_PRECISE vec3 curl = vec3(gz.y - gy.z, gx.z - gz.x, gy.x - gx.y);
+  return curl;
+}
+
+vec3 bitangentOf(vec3 gy, vec3 gz) {
+  NOISE_PRECISE vec3 t = gy.yzx * gz.zxy - gy.zxy * gz.yzx;  // cross(gy, gz), spelt out to carry `precise`
+  return t;
+}
+
 vec3 curlNoise(vec3 q, FieldSettings s) {
   NOISE_PRECISE vec3 qy = q + s.offsetY;
   NOISE_PRECISE vec3 qz = q + s.offsetZ;
-  vec3 gx = gradientNoise(q).gradient;
-  vec3 gy = gradientNoise(qy).gradient;
-  vec3 gz = gradientNoise(qz).gradient;
-  NOISE_PRECISE vec3 curl = vec3(gz.y - gy.z, gx.z - gz.x, gy.x - gx.y);
-  return curl;
+  return curlOf(gradientNoise(q).gradient, gradientNoise(qy).gradient, gradientNoise(qz).gradient);
 }
 
 vec3 bitangentNoise(vec3 q, FieldSettings s) {
   NOISE_PRECISE vec3 qy = q + s.offsetY;
   NOISE_PRECISE vec3 qz = q + s.offsetZ;
-  vec3 a = gradientNoise(qy).gradient;
-  vec3 b = gradientNoise(qz).gradient;
-  NOISE_PRECISE vec3 t = a.yzx * b.zxy - a.zxy * b.yzx;  // cross(a, b), spelt out to carry `precise`
-  return t;
+  return bitangentOf(gradientNoise(qy).gradient, gradientNoise(qz).gradient);
 }
 
 vec3 flowVelocity(vec3 p, FieldSettings s) {

@@ -30,8 +30,8 @@ vec3 latticeGradient(uvec3 cell) {
   return g;
 }
 
-NoiseSample cornerRamp(uvec3 cell, vec3 f, uvec3 corner) {
-  vec3 g = latticeGradient(cell + corner);
+// A corner's ramp dot(g, f - corner) and its gradient g.
+NoiseSample cornerRamp(vec3 g, vec3 f, uvec3 corner) {
   NOISE_PRECISE vec3 d = f - vec3(corner);
   NOISE_PRECISE float ramp = g.x * d.x + g.y * d.y + g.z * d.z;  // dot(g, d) in glm's order
   return NoiseSample(ramp, g);
@@ -44,20 +44,29 @@ NoiseSample blend(NoiseSample a, NoiseSample b, float w, float dw, int axis) {
   return blended;
 }
 
+// The noise at f (the point's place in its cell, 0..1) from the cell's eight corner gradients, gXYZ
+// for the corner at (X, Y, Z): gradientNoise hashes them, noodles' bake shares them across a workgroup.
+NoiseSample noiseFromCorners(vec3 f, vec3 g000, vec3 g100, vec3 g010, vec3 g110, vec3 g001, vec3 g101, vec3 g011,
+                             vec3 g111) {
+  NOISE_PRECISE vec3 w = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+  NOISE_PRECISE vec3 dw = 30.0 * f * f * (f * (f - 2.0) + 1.0);
+  NoiseSample x00 = blend(cornerRamp(g000, f, uvec3(0, 0, 0)), cornerRamp(g100, f, uvec3(1, 0, 0)), w.x, dw.x, 0);
+  NoiseSample x10 = blend(cornerRamp(g010, f, uvec3(0, 1, 0)), cornerRamp(g110, f, uvec3(1, 1, 0)), w.x, dw.x, 0);
+  NoiseSample x01 = blend(cornerRamp(g001, f, uvec3(0, 0, 1)), cornerRamp(g101, f, uvec3(1, 0, 1)), w.x, dw.x, 0);
+  NoiseSample x11 = blend(cornerRamp(g011, f, uvec3(0, 1, 1)), cornerRamp(g111, f, uvec3(1, 1, 1)), w.x, dw.x, 0);
+  NoiseSample y0 = blend(x00, x10, w.y, dw.y, 1);
+  NoiseSample y1 = blend(x01, x11, w.y, dw.y, 1);
+  return blend(y0, y1, w.z, dw.z, 2);
+}
+
 NoiseSample gradientNoise(vec3 x) {
   vec3 cellCorner = floor(x);
   NOISE_PRECISE vec3 f = x - cellCorner;
   uvec3 cell = latticeCell(cellCorner);
-  NOISE_PRECISE vec3 w = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
-  NOISE_PRECISE vec3 dw = 30.0 * f * f * (f * (f - 2.0) + 1.0);
-
-  NoiseSample x00 = blend(cornerRamp(cell, f, uvec3(0, 0, 0)), cornerRamp(cell, f, uvec3(1, 0, 0)), w.x, dw.x, 0);
-  NoiseSample x10 = blend(cornerRamp(cell, f, uvec3(0, 1, 0)), cornerRamp(cell, f, uvec3(1, 1, 0)), w.x, dw.x, 0);
-  NoiseSample x01 = blend(cornerRamp(cell, f, uvec3(0, 0, 1)), cornerRamp(cell, f, uvec3(1, 0, 1)), w.x, dw.x, 0);
-  NoiseSample x11 = blend(cornerRamp(cell, f, uvec3(0, 1, 1)), cornerRamp(cell, f, uvec3(1, 1, 1)), w.x, dw.x, 0);
-  NoiseSample y0 = blend(x00, x10, w.y, dw.y, 1);
-  NoiseSample y1 = blend(x01, x11, w.y, dw.y, 1);
-  return blend(y0, y1, w.z, dw.z, 2);
+  return noiseFromCorners(f, latticeGradient(cell), latticeGradient(cell + uvec3(1, 0, 0)),
+                          latticeGradient(cell + uvec3(0, 1, 0)), latticeGradient(cell + uvec3(1, 1, 0)),
+                          latticeGradient(cell + uvec3(0, 0, 1)), latticeGradient(cell + uvec3(1, 0, 1)),
+                          latticeGradient(cell + uvec3(0, 1, 1)), latticeGradient(cell + uvec3(1, 1, 1)));
 }
 
 #endif

@@ -174,23 +174,51 @@ TEST_F(NoodlesGpu, ChunkedBindingsMatchTheCpu) {
 
 // bake.comp writes what bakeField computes, to the storage's 10 bits (a step either way where the
 // device's fused arithmetic lands across a rounding boundary), in the order the volume is addressed.
-TEST_F(NoodlesGpu, TheBakedFlowHoldsTheCpuBake) {
-  StrandSettings s = smallGrid();
-  s.segments = 16;
-  s.bake = planFieldBake(s, FieldSource::Baked);
+void expectTheBakedFlowHoldsTheCpuBake(const StrandSettings& s, const std::vector<uint32_t>& texels) {
   ASSERT_TRUE(s.bake.baked());
-  integrateOnDevice(s, deviceBudget(device()));
   const std::vector<glm::vec3> cpu = bakeField(s.bake, s.field);
-  ASSERT_EQ(bakedTexels_.size(), cpu.size());
+  ASSERT_EQ(texels.size(), cpu.size());
   const float quantum = 2.0f * kBakeRange / 1023.0f;
   float worst = 0.0f;
   for (size_t i = 0; i < cpu.size(); ++i)
     for (int axis = 0; axis < 3; ++axis) {
-      const float stored = (float((bakedTexels_[i] >> (10 * axis)) & 1023u) / 1023.0f - 0.5f) * 2.0f * kBakeRange;
+      const float stored = (float((texels[i] >> (10 * axis)) & 1023u) / 1023.0f - 0.5f) * 2.0f * kBakeRange;
       worst = std::max(worst, std::fabs(stored - cpu[i][axis]));
       ASSERT_LE(std::fabs(stored - cpu[i][axis]), quantum * 1.01f) << fmt::format("texel {} axis {}", i, axis);
     }
-  RecordProperty("worst_texel_difference", fmt::format("{:.3g}", worst));
+  testing::Test::RecordProperty("worst_texel_difference", fmt::format("{:.3g}", worst));
+}
+
+TEST_F(NoodlesGpu, TheBakedFlowHoldsTheCpuBake) {
+  StrandSettings s = smallGrid();
+  s.segments = 16;
+  s.bake = planFieldBake(s, FieldSource::Baked);
+  integrateOnDevice(s, deviceBudget(device()));
+  expectTheBakedFlowHoldsTheCpuBake(s, bakedTexels_);
+}
+
+// The bitangent flow takes two potentials, not three, from the workgroup's shared lattice gradients.
+TEST_F(NoodlesGpu, TheBakedBitangentFlowHoldsTheCpuBake) {
+  StrandSettings s = smallGrid();
+  s.segments = 16;
+  s.field = fieldAtTime(FieldKind::Bitangent, 0.7f, 1.5f, 4.0);
+  s.bake = planFieldBake(s, FieldSource::Baked);
+  integrateOnDevice(s, deviceBudget(device()));
+  expectTheBakedFlowHoldsTheCpuBake(s, bakedTexels_);
+}
+
+// A coarsened bake: at 1.5 times the spacing a workgroup's texels span up to four lattice points along
+// an axis (what its table holds), at 3 times more than that, where the workgroup evaluates texel by texel.
+TEST_F(NoodlesGpu, CoarseBakesHoldTheCpuBake) {
+  for (const float coarser : {1.5f, 3.0f}) {
+    SCOPED_TRACE(fmt::format("spacing x{}", coarser));
+    StrandSettings s = smallGrid();
+    s.segments = 16;
+    s.bake = planFieldBake(s, FieldSource::Baked);
+    s.bake.spacing *= coarser;
+    integrateOnDevice(s, deviceBudget(device()));
+    expectTheBakedFlowHoldsTheCpuBake(s, bakedTexels_);
+  }
 }
 
 TEST_F(NoodlesGpu, CurlInTheBakedFlowMatchesTheCpu) {
