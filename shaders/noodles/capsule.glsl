@@ -78,23 +78,43 @@ vec2 sphereSlopes(float side, float depth, float radius) {
   return vec2(side * depth - root, side * depth + root) / (depth * depth - radius * radius);
 }
 
-// The sample cells (inclusive: xy the first, zw the last) that may hold a hit of the capsule;
-// x > z or y > w when none do.
-ivec4 capsuleCells(ScreenView view, vec3 a, vec3 b, float radius, uint samplesPerAxis) {
-  const ivec4 NONE = ivec4(0, 0, -1, -1);
+// The pixel boxes of the capsule's two end spheres (xy the least corner, zw the greatest, unclipped);
+// capsule.h's capsuleEndBoxes says why their hull holds the capsule's outline.
+struct EndBoxes {
+  vec4 a, b;
+  bool visible, bounded;
+};
+
+EndBoxes capsuleEndBoxes(ScreenView view, vec3 a, vec3 b, float radius) {
+  EndBoxes e = EndBoxes(vec4(0.0), vec4(0.0), false, false);
   vec3 va = toView(view, a), vb = toView(view, b);
   float nearest = view.nearPlane - radius;
-  if (va.z < nearest && vb.z < nearest) return NONE;
+  if (va.z < nearest && vb.z < nearest) return e;
+  e.visible = true;
   if (va.z < nearest) va = mix(va, vb, (nearest - va.z) / (vb.z - va.z));
   if (vb.z < nearest) vb = mix(vb, va, (nearest - vb.z) / (va.z - vb.z));
+  if (!(min(va.z, vb.z) > radius * 1.001)) return e;
+  e.bounded = true;
+  vec2 xa = sphereSlopes(va.x, va.z, radius), xb = sphereSlopes(vb.x, vb.z, radius);
+  vec2 ya = sphereSlopes(va.y, va.z, radius), yb = sphereSlopes(vb.y, vb.z, radius);
+  // slope / tanHalf is the NDC coordinate; y flips (framebuffer y points down).
+  vec2 toPixels = 0.5 * view.pixels;
+  e.a = vec4((xa.x / view.tanHalfX + 1.0) * toPixels.x, (1.0 - ya.y / view.tanHalfY) * toPixels.y,
+             (xa.y / view.tanHalfX + 1.0) * toPixels.x, (1.0 - ya.x / view.tanHalfY) * toPixels.y);
+  e.b = vec4((xb.x / view.tanHalfX + 1.0) * toPixels.x, (1.0 - yb.y / view.tanHalfY) * toPixels.y,
+             (xb.y / view.tanHalfX + 1.0) * toPixels.x, (1.0 - yb.x / view.tanHalfY) * toPixels.y);
+  return e;
+}
+
+// The sample cells (inclusive: xy the first, zw the last) that may hold a hit of the capsule;
+// x > z or y > w when none do.
+ivec4 capsuleCells(ScreenView view, EndBoxes e, uint samplesPerAxis) {
+  const ivec4 NONE = ivec4(0, 0, -1, -1);
+  if (!e.visible) return NONE;
   vec2 lo = vec2(0.0), hi = view.pixels;
-  if (min(va.z, vb.z) > radius * 1.001) {
-    vec2 xa = sphereSlopes(va.x, va.z, radius), xb = sphereSlopes(vb.x, vb.z, radius);
-    vec2 ya = sphereSlopes(va.y, va.z, radius), yb = sphereSlopes(vb.y, vb.z, radius);
-    float left = min(xa.x, xb.x), right = max(xa.y, xb.y);
-    float down = min(ya.x, yb.x), up = max(ya.y, yb.y);
-    lo = vec2((left / view.tanHalfX + 1.0) * 0.5 * view.pixels.x, (1.0 - up / view.tanHalfY) * 0.5 * view.pixels.y);
-    hi = vec2((right / view.tanHalfX + 1.0) * 0.5 * view.pixels.x, (1.0 - down / view.tanHalfY) * 0.5 * view.pixels.y);
+  if (e.bounded) {
+    lo = min(e.a.xy, e.b.xy);
+    hi = max(e.a.zw, e.b.zw);
   }
   lo = max(lo, vec2(0.0));
   hi = min(hi, view.pixels);
@@ -102,6 +122,30 @@ ivec4 capsuleCells(ScreenView view, vec3 a, vec3 b, float radius, uint samplesPe
   float s = float(samplesPerAxis);
   ivec2 last = ivec2(view.pixels) * int(samplesPerAxis) - 1;
   return ivec4(max(ivec2(floor(lo * s)), ivec2(0)), min(ivec2(floor(hi * s)), last));
+}
+
+// The columns of sample cells, within `cells`, that the hull of the end boxes reaches in the band of
+// pixel rows [y0, y1]; x > y when none. capsule.h's hullColumns says how.
+const float HULL_MARGIN = 1e-3;  // pixels: kHullMargin
+
+ivec2 hullColumns(EndBoxes e, float y0, float y1, ivec4 cells, uint samplesPerAxis) {
+  if (!e.bounded) return cells.xz;
+  y0 -= HULL_MARGIN;
+  y1 += HULL_MARGIN;
+  // The band meets box(t) where top(t) <= y1 and bottom(t) >= y0, each linear in t.
+  float t0 = 0.0, t1 = 1.0;
+  float dTop = e.b.y - e.a.y, dBottom = e.b.w - e.a.w;
+  if (dTop > 0.0) t1 = min(t1, (y1 - e.a.y) / dTop);
+  else if (dTop < 0.0) t0 = max(t0, (y1 - e.a.y) / dTop);
+  else if (e.a.y > y1) return ivec2(0, -1);
+  if (dBottom > 0.0) t0 = max(t0, (y0 - e.a.w) / dBottom);
+  else if (dBottom < 0.0) t1 = min(t1, (y0 - e.a.w) / dBottom);
+  else if (e.a.w < y0) return ivec2(0, -1);
+  if (t0 > t1) return ivec2(0, -1);
+  vec4 first = mix(e.a, e.b, t0), last = mix(e.a, e.b, t1);
+  float s = float(samplesPerAxis);
+  return ivec2(max(int(floor((min(first.x, last.x) - HULL_MARGIN) * s)), cells.x),
+               min(int(floor((max(first.z, last.z) + HULL_MARGIN) * s)), cells.z));
 }
 
 float nearestPossibleHit(vec3 eye, vec3 a, vec3 b, float radius) {

@@ -1,6 +1,7 @@
 #version 460
 // One invocation per segment (dispatched per chunk of strands, per phase: raster_blocks.h): cull it, bound its capsule on
-// screen, and cast the rays of the samples in that box itself when there are not many; a bigger box
+// screen, and cast the rays of the samples in that box itself when there are not many, row by row only
+// where the hull of its end spheres reaches (a thin diagonal segment fills a sliver of its box); a bigger box
 // (a segment near the camera) is listed for raster_big.comp, where a workgroup takes the segment, so
 // no invocation loops over thousands of samples while its neighbours idle.
 #extension GL_GOOGLE_include_directive : require
@@ -19,23 +20,34 @@ layout(local_size_x = 64) in;
 const uint MOST_CELLS_INLINE = 256u;
 const uint MOST_CELLS_INLINE_TWO_PHASES = 512u;
 
+// Every sample cell of the box that the hull of the end boxes reaches, row by row.
+void rasterBox(ivec4 cells, EndBoxes ends, Segment s) {
+  float pixelsPerCell = 1.0 / float(SAMPLES_PER_AXIS);
+  for (int y = cells.y; y <= cells.w; ++y) {
+    ivec2 columns = hullColumns(ends, float(y) * pixelsPerCell, float(y + 1) * pixelsPerCell, cells, SAMPLES_PER_AXIS);
+    for (int x = columns.x; x <= columns.y; ++x) rasterSample(uvec2(x, y), s);
+  }
+}
+
 void main() {
   uint invocation = gl_GlobalInvocationID.y * pc.invocationsPerRow + gl_GlobalInvocationID.x;
   if (invocation >= phaseSegments()) return;
   uint index = phaseSegment(invocation);
   Segment s = loadSegment(index);
-  ivec4 cells = capsuleCells(screenView(), s.a, s.b, pc.tubeRadius, SAMPLES_PER_AXIS);
+  EndBoxes ends = capsuleEndBoxes(screenView(), s.a, s.b, pc.tubeRadius);
+  ivec4 cells = capsuleCells(screenView(), ends, SAMPLES_PER_AXIS);
   if (cells.x > cells.z || cells.y > cells.w) return;
   if (pc.phase == NOODLES_RASTER_REST && hiddenByTiles(cells, s.nearestBits)) return;
   uvec2 size = uvec2(cells.zw - cells.xy) + 1u;
   if (size.x * size.y <= (pc.phase == NOODLES_RASTER_ALL ? MOST_CELLS_INLINE : MOST_CELLS_INLINE_TWO_PHASES)) {
     if (SAMPLES_PER_AXIS == 2u) {
-      for (int y = cells.y >> 1; y <= cells.w >> 1; ++y)
-        for (int x = cells.x >> 1; x <= cells.z >> 1; ++x) rasterPixel(uvec2(x, y), cells, s);
+      for (int y = cells.y >> 1; y <= cells.w >> 1; ++y) {
+        ivec2 columns = hullColumns(ends, float(y), float(y + 1), cells, 2u);
+        for (int x = columns.x >> 1; x <= columns.y >> 1; ++x) rasterPixel(uvec2(x, y), cells, s);
+      }
       return;
     }
-    for (int y = cells.y; y <= cells.w; ++y)
-      for (int x = cells.x; x <= cells.z; ++x) rasterSample(uvec2(x, y), s);
+    rasterBox(cells, ends, s);
     return;
   }
   uint slot = atomicAdd(counters.listed, 1u);
@@ -44,7 +56,5 @@ void main() {
     if (slot < MAX_BIG_GROUPS) atomicAdd(counters.groupsX, 1u);  // a workgroup each, up to the limit
     return;
   }
-  // The list is full (a pathological view): this invocation casts the box's rays itself.
-  for (int y = cells.y; y <= cells.w; ++y)
-    for (int x = cells.x; x <= cells.z; ++x) rasterSample(uvec2(x, y), s);
+  rasterBox(cells, ends, s);  // the list is full (a pathological view): this invocation casts them itself
 }

@@ -17,7 +17,7 @@ void main() {
   uint side = TILE_SIDE * SAMPLES_PER_AXIS;
   for (uint entry = gl_WorkGroupID.x; entry < listed; entry += gl_NumWorkGroups.x) {
     Segment s = loadSegment(bigSegments[entry]);
-    ivec4 cells = capsuleCells(view, s.a, s.b, pc.tubeRadius, SAMPLES_PER_AXIS);
+    ivec4 cells = capsuleCells(view, capsuleEndBoxes(view, s.a, s.b, pc.tubeRadius), SAMPLES_PER_AXIS);
     uvec2 start = uvec2(cells.xy) & ~uvec2(SAMPLES_PER_AXIS - 1u);
     uvec2 tiles = (uvec2(cells.zw) - start) / side + 1u;
     for (uint t = 0u; t < tiles.x * tiles.y; ++t) {  // the same tiles, in step, for the whole group

@@ -154,22 +154,31 @@ TEST(NoodlesCapsule, RaysMatchTheProjectionTheTubesUsedToBeDrawnWith) {
   }
 }
 
-// Every sample a brute-force cast hits lies in the capsule's cell box, for random capsules near,
-// far, crossing the near plane and off-screen; the box is not wildly loose either.
+// Every sample a brute-force cast hits lies in the capsule's cell box and in its row's hull columns,
+// for random capsules near, far, crossing the near plane and off-screen; the box is not wildly loose
+// either, and the hull columns take fewer cells than the box (far fewer for a thin diagonal tube).
 TEST(NoodlesCapsule, CellBoxHoldsEveryHitSample) {
   const glm::uvec2 pixels{64, 36};
   const ScreenView view = testView({0.0f, -3.0f, 0.5f}, {0.0f, 0.0f, 0.0f}, glm::vec2(pixels));
   std::mt19937 rng(16);
   std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.01f, 0.3f), length(0.02f, 1.0f);
   int hitCapsules = 0, tightCapsules = 0;
+  uint64_t boxCells = 0, hullCells = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const glm::vec3 a{coordinate(rng), coordinate(rng) - 1.0f, coordinate(rng)};
     const glm::vec3 b = a + length(rng) * glm::normalize(glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
     const float r = radius(rng);
     for (const uint32_t samples : {1u, 2u}) {
-      const CellBox box = cellsOf(capsuleScreenBox(view, a, b, r), samples, pixels);
+      const EndBoxes ends = capsuleEndBoxes(view, a, b, r);
+      const CellBox box = cellsOf(capsuleScreenBox(view, ends), samples, pixels);
+      boxCells += box.count();
       int hits = 0;
-      for (uint32_t y = 0; y < pixels.y * samples; ++y)
+      for (uint32_t y = 0; y < pixels.y * samples; ++y) {
+        const float pixelsPerCell = 1.0f / float(samples);
+        const glm::ivec2 columns =
+            hullColumns(ends, float(y) * pixelsPerCell, float(y + 1) * pixelsPerCell, box, samples);
+        if (!box.empty() && int(y) >= box.min.y && int(y) <= box.max.y && columns.x <= columns.y)
+          hullCells += uint64_t(columns.y - columns.x + 1);
         for (uint32_t x = 0; x < pixels.x * samples; ++x) {
           const glm::vec3 direction = glm::normalize(rayThrough(view, cellSamplePosition({x, y}, samples)));
           const float t = capsuleHit(view.eye, direction, a, b, r);
@@ -178,7 +187,11 @@ TEST(NoodlesCapsule, CellBoxHoldsEveryHitSample) {
           EXPECT_TRUE(int(x) >= box.min.x && int(x) <= box.max.x && int(y) >= box.min.y && int(y) <= box.max.y)
               << "trial " << trial << " cell " << x << "," << y << " outside " << box.min.x << ".." << box.max.x << ", "
               << box.min.y << ".." << box.max.y;
+          EXPECT_TRUE(int(x) >= columns.x && int(x) <= columns.y)
+              << "trial " << trial << " cell " << x << "," << y << " outside the hull's " << columns.x << ".."
+              << columns.y;
         }
+      }
       if (hits > 0 && samples == 2) {
         ++hitCapsules;
         if (box.count() <= uint32_t(hits) * 8u + 64u) ++tightCapsules;
@@ -187,6 +200,18 @@ TEST(NoodlesCapsule, CellBoxHoldsEveryHitSample) {
   }
   EXPECT_GT(hitCapsules, 100);                     // the trials do exercise visible capsules
   EXPECT_GT(tightCapsules, hitCapsules * 7 / 10);  // and the boxes are mostly close fits
+  EXPECT_LT(hullCells * 100, boxCells * 97) << hullCells << " of " << boxCells << " cells";  // the hull cuts some
+
+  // A thin diagonal tube across the view: its box is most of the image, its hull a sliver of it.
+  const EndBoxes thin = capsuleEndBoxes(view, {-1.5f, 0.0f, -0.8f}, {1.5f, 0.0f, 1.8f}, 0.01f);
+  const CellBox box = cellsOf(capsuleScreenBox(view, thin), 2, pixels);
+  uint32_t reached = 0;
+  for (int y = box.min.y; y <= box.max.y; ++y) {
+    const glm::ivec2 columns = hullColumns(thin, 0.5f * float(y), 0.5f * float(y + 1), box, 2);
+    reached += uint32_t(std::max(columns.y - columns.x + 1, 0));
+  }
+  EXPECT_GT(box.count(), 2000u);
+  EXPECT_LT(reached * 5, box.count()) << reached << " of " << box.count() << " cells";
 }
 
 TEST(NoodlesCapsule, BoxIsEmptyBehindTheCameraAndOffScreen) {

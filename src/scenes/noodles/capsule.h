@@ -137,32 +137,54 @@ struct PixelBox {
   bool empty() const { return !(min.x <= max.x && min.y <= max.y); }
 };
 
-// A box in pixels that holds every hit of the capsule at or beyond the near plane, clipped to the
-// image; empty when it is off-screen or wholly nearer than the near plane. Hits beyond the near plane
-// lie within `radius` of the part of the segment at depth >= near - radius; perspective keeps convex
-// sets convex, so the capsule's outline is the hull of its two end spheres' outlines, bounded exactly
-// per axis by the planes tangent to them. An end sphere reaching the eye's plane is unbounded: the
-// whole image (the tile pass takes such big boxes).
-inline PixelBox capsuleScreenBox(const ScreenView& view, glm::vec3 a, glm::vec3 b, float radius) {
+// The pixel boxes of the capsule's two end spheres (unclipped), the segment first cut where it comes
+// nearer than the near plane: hits beyond the near plane lie within `radius` of the part of the
+// segment at depth >= near - radius, and perspective keeps convex sets convex, so the capsule's
+// outline is the hull of its end spheres' outlines, each bounded exactly per axis by the planes
+// tangent to it. Not `visible` when the capsule lies wholly nearer than the near plane; not `bounded`
+// when an end sphere reaches the eye's plane (then the whole image may hold it).
+struct EndBoxes {
+  PixelBox a, b;
+  bool visible = false, bounded = false;
+};
+
+inline EndBoxes capsuleEndBoxes(const ScreenView& view, glm::vec3 a, glm::vec3 b, float radius) {
+  EndBoxes ends;
   glm::vec3 va = toView(view, a), vb = toView(view, b);
   const float nearest = view.nearPlane - radius;
-  if (va.z < nearest && vb.z < nearest) return {};
+  if (va.z < nearest && vb.z < nearest) return ends;
+  ends.visible = true;
   if (va.z < nearest) va = glm::mix(va, vb, (nearest - va.z) / (vb.z - va.z));
   if (vb.z < nearest) vb = glm::mix(vb, va, (nearest - vb.z) / (va.z - vb.z));
+  if (!(std::min(va.z, vb.z) > radius * 1.001f)) return ends;
+  ends.bounded = true;
+  const auto boxOf = [&](glm::vec3 v) {
+    const glm::vec2 x = sphereSlopes(v.x, v.z, radius), y = sphereSlopes(v.y, v.z, radius);
+    // slope / tanHalf is the NDC coordinate; y flips (framebuffer y points down).
+    const glm::vec2 half = 0.5f * view.pixels;
+    return PixelBox{{(x.x / view.tanHalfX + 1.0f) * half.x, (1.0f - y.y / view.tanHalfY) * half.y},
+                    {(x.y / view.tanHalfX + 1.0f) * half.x, (1.0f - y.x / view.tanHalfY) * half.y}};
+  };
+  ends.a = boxOf(va);
+  ends.b = boxOf(vb);
+  return ends;
+}
+
+// A box in pixels that holds every hit of the capsule at or beyond the near plane, clipped to the
+// image: its end boxes' union, the whole image when they are unbounded (the tile pass takes such big
+// boxes), empty when it is off-screen or wholly nearer than the near plane.
+inline PixelBox capsuleScreenBox(const ScreenView& view, const EndBoxes& ends) {
+  if (!ends.visible) return {};
   const glm::vec2 image = view.pixels;
   PixelBox box{glm::vec2(0.0f), image};
-  if (std::min(va.z, vb.z) > radius * 1.001f) {
-    const glm::vec2 xa = sphereSlopes(va.x, va.z, radius), xb = sphereSlopes(vb.x, vb.z, radius);
-    const glm::vec2 ya = sphereSlopes(va.y, va.z, radius), yb = sphereSlopes(vb.y, vb.z, radius);
-    const float left = std::min(xa.x, xb.x), right = std::max(xa.y, xb.y);
-    const float down = std::min(ya.x, yb.x), up = std::max(ya.y, yb.y);
-    // slope / tanHalf is the NDC coordinate; y flips (framebuffer y points down).
-    box.min = {(left / view.tanHalfX + 1.0f) * 0.5f * image.x, (1.0f - up / view.tanHalfY) * 0.5f * image.y};
-    box.max = {(right / view.tanHalfX + 1.0f) * 0.5f * image.x, (1.0f - down / view.tanHalfY) * 0.5f * image.y};
-  }
+  if (ends.bounded) box = {glm::min(ends.a.min, ends.b.min), glm::max(ends.a.max, ends.b.max)};
   box.min = glm::max(box.min, glm::vec2(0.0f));
   box.max = glm::min(box.max, image);
   return box;
+}
+
+inline PixelBox capsuleScreenBox(const ScreenView& view, glm::vec3 a, glm::vec3 b, float radius) {
+  return capsuleScreenBox(view, capsuleEndBoxes(view, a, b, radius));
 }
 
 // The sample cells (inclusive) whose samples may lie in the box: cell x spans pixels
@@ -179,6 +201,41 @@ inline CellBox cellsOf(const PixelBox& box, uint32_t samplesPerAxis, glm::uvec2 
   const glm::ivec2 last = glm::ivec2(pixels * samplesPerAxis) - 1;
   return {glm::max(glm::ivec2(glm::floor(box.min * s)), glm::ivec2(0)),
           glm::min(glm::ivec2(glm::floor(box.max * s)), last)};
+}
+
+// The columns of sample cells, within `cells`, that the hull of the end boxes reaches in the band of
+// pixel rows [y0, y1] (min > max when none): the rasteriser casts only those of each row. The hull of
+// two boxes is the union of the boxes between them, (1 - t) a + t b for t in [0, 1], so the band meets
+// those of an interval of t, and since each box edge is linear in t the interval's ends hold the
+// span's ends. A margin of kHullMargin pixels keeps rounding from dropping a cell the outline reaches.
+inline constexpr float kHullMargin = 1e-3f;
+
+inline glm::ivec2 hullColumns(const EndBoxes& ends, float y0, float y1, const CellBox& cells, uint32_t samplesPerAxis) {
+  const glm::ivec2 none{0, -1};
+  if (!ends.bounded) return {cells.min.x, cells.max.x};
+  y0 -= kHullMargin;
+  y1 += kHullMargin;
+  // The band meets box(t) where its top is at most y1 and its bottom at least y0, each linear in t.
+  float t0 = 0.0f, t1 = 1.0f;
+  const float dTop = ends.b.min.y - ends.a.min.y, dBottom = ends.b.max.y - ends.a.max.y;
+  if (dTop > 0.0f)
+    t1 = std::min(t1, (y1 - ends.a.min.y) / dTop);
+  else if (dTop < 0.0f)
+    t0 = std::max(t0, (y1 - ends.a.min.y) / dTop);
+  else if (ends.a.min.y > y1)
+    return none;
+  if (dBottom > 0.0f)
+    t0 = std::max(t0, (y0 - ends.a.max.y) / dBottom);
+  else if (dBottom < 0.0f)
+    t1 = std::min(t1, (y0 - ends.a.max.y) / dBottom);
+  else if (ends.a.max.y < y0)
+    return none;
+  if (t0 > t1) return none;
+  const float left = std::min(glm::mix(ends.a.min.x, ends.b.min.x, t0), glm::mix(ends.a.min.x, ends.b.min.x, t1));
+  const float right = std::max(glm::mix(ends.a.max.x, ends.b.max.x, t0), glm::mix(ends.a.max.x, ends.b.max.x, t1));
+  const float s = float(samplesPerAxis);
+  return {std::max(int(std::floor((left - kHullMargin) * s)), cells.min.x),
+          std::min(int(std::floor((right + kHullMargin) * s)), cells.max.x)};
 }
 
 // No ray from `eye` meets the capsule nearer than this: the distance to its axis' nearest point, less
