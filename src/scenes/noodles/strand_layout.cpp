@@ -33,7 +33,7 @@ StrandLayout planStrands(glm::uvec3 grid, uint32_t segments, const DeviceBudget&
                          const StrandWorkgroups& workgroups) {
   const uint64_t strands = uint64_t(grid.x) * grid.y * grid.z;
   const std::string what =
-      fmt::format("noodles: {}x{}x{} strands of {} segments", grid.x, grid.y, grid.z, segments);
+      fmt::format("{}x{}x{} strands of {} segments", grid.x, grid.y, grid.z, segments);
   if (strands == 0 || segments == 0) throw Error(what + " is empty: grid and segments must be at least 1.");
   // Instance and strand indices are 32-bit in the shaders (gl_InstanceIndex is even signed).
   if (strands * segments > uint64_t(INT32_MAX))
