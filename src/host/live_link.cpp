@@ -46,7 +46,7 @@ std::vector<live::Mapping> mappingsOf(const LiveConfig& config) {
     if (!mapping) throw Error(fmt::format("--map {}: {}", map, why));
     if (mapping->scene.empty()) mapping->scene = config.runScene;
     const SceneInfo* scene = findScene(mapping->scene);
-    if (!scene) throw Error(fmt::format("--map {}: unknown scene '{}'; vitrine --list-scenes shows them", map, mapping->scene));
+    if (!scene) throw Error(fmt::format("--map {}: {}", map, unknownScene(mapping->scene)));
     if (auto reason = live::checkMapping(*mapping, *scene); !reason.empty())
       throw Error(fmt::format("--map {}: {}", map, reason));
     mappings.push_back(std::move(*mapping));

@@ -231,7 +231,7 @@ std::vector<Mapping> parseMappingText(std::string_view text, const std::string& 
     if (mapping->scene.empty())
       throw fail(fmt::format("'{}': a mapping file names the scene of each target, SCENE.{}", mapping->target, mapping->target));
     const SceneInfo* scene = findScene(mapping->scene);
-    if (!scene) throw fail(fmt::format("unknown scene '{}'; vitrine --list-scenes shows them", mapping->scene));
+    if (!scene) throw fail(unknownScene(mapping->scene));
     if (auto reason = checkMapping(*mapping, *scene); !reason.empty()) throw fail(reason);
     mappings.push_back(std::move(*mapping));
   }

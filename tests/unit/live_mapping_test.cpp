@@ -132,7 +132,7 @@ TEST(LiveMapping, FileRoundTripsAndNamesTheBadLine) {
   };
   expectRefused("# comment\n\naudio.bass=kifs.fold:1:1.1\naudio.bass=kifs.fold:0:9\n", "4", "from 0.8 to 1.3");
   expectRefused("audio.bass=fold\n", "1", "names the scene");
-  expectRefused("audio.bass=moon.fold\n", "1", "unknown scene");
+  expectRefused("audio.bass=moon.fold\n", "1", "Unknown scene 'moon'; the scenes are bloom");
   expectRefused("audio.bass=bloom.lattice:64:96\n", "1", "rebuilds");
   expectRefused("audio.bass=kifs.fold \x01\n", "1", "plain ASCII");
   EXPECT_THROW(loadMappingFile(dir / "missing.map"), Error);
