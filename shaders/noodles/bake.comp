@@ -7,7 +7,7 @@
 // workgroup's texels (under one noise unit across at the planned spacing) share a few dozen lattice
 // points: the workgroup hashes each of them once into shared memory and every texel blends from there.
 // Where a coarsened bake spans more of the lattice than the table holds, the workgroup evaluates the
-// field texel by texel as before; both give the same values.
+// field texel by texel as before; both give the same field.
 #extension GL_GOOGLE_include_directive : require
 #include "common/flow_field.glsl"
 #include "noodles/integrate_push.h"
@@ -30,11 +30,12 @@ vec3 noisePoint(ivec3 texel, int which) {
 }
 
 vec3 sharedGradient(vec3 x, int which, ivec3 first) {
-  vec3 cellCorner = floor(x);
-  ivec3 c = ivec3(cellCorner) - first;
-  int i = which * SPAN_POINTS + (c.z * SPAN + c.y) * SPAN + c.x;
+  // Clamped to the table: should this texel's arithmetic round x an ulp across a cell boundary from
+  // where the workgroup's corners saw it, the neighbouring cell gives the same noise there (it is C1).
+  const ivec3 c = clamp(ivec3(floor(x)) - first, ivec3(0), ivec3(SPAN - 2));
+  const int i = which * SPAN_POINTS + (c.z * SPAN + c.y) * SPAN + c.x;
   const int Y = SPAN, Z = SPAN * SPAN;
-  return noiseFromCorners(x - cellCorner, lattice[i], lattice[i + 1], lattice[i + Y], lattice[i + Y + 1],
+  return noiseFromCorners(x - vec3(first + c), lattice[i], lattice[i + 1], lattice[i + Y], lattice[i + Y + 1],
                           lattice[i + Z], lattice[i + Z + 1], lattice[i + Z + Y], lattice[i + Z + Y + 1])
       .gradient;
 }
@@ -52,7 +53,8 @@ void main() {
     fits = fits && all(lessThanEqual(span, ivec3(SPAN)));
   }
   if (fits) {  // uniform across the workgroup
-    for (int k = int(gl_LocalInvocationIndex); k < 3 * SPAN_POINTS; k += int(gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z)) {
+    const int invocations = int(gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z);
+    for (int k = int(gl_LocalInvocationIndex); k < 3 * SPAN_POINTS; k += invocations) {
       const int which = k / SPAN_POINTS, j = k % SPAN_POINTS;
       if (BAKE_FIELD != FIELD_CURL && which == 0) continue;
       const ivec3 point = first[which] + ivec3(j % SPAN, (j / SPAN) % SPAN, j / (SPAN * SPAN));
