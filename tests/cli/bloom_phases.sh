@@ -3,7 +3,7 @@
 # cursor held on the crystal, button down, makes it flip amber, rose, crimson and bloom (chroma) in
 # that order; after the bloom it exhales through every phase back to pristine, each vent naming the
 # phase it leaves. The same arc by hover alone (no button: the seed's only gesture) and by hold, at a
-# pace one feels, at LATTICE^3 (96, the default, when not given; ctest also runs 160, hover only); the vent from
+# pace one feels, at LATTICE^3 (96, the default, when not given; ctest also runs 128, hover only); the vent from
 # the climax back to pristine takes the physics' time (the same at every size, within 5 %).
 # At 96^3 it goes on with a 48^3 run whose WAV holds a bell at E4, B4 and E5 (within 1 Hz) at those
 # moments, the drone, and no clipping, and the seed's CPU proxy. Small frames: only the lattice matters.
@@ -34,8 +34,8 @@ print(f"{sys.argv[2]}: " + ", ".join(f"{s} {t:.2f}" for s, t in zip(seen, times)
 PY
 }
 arc hover$lattice "$lattice" bloom_hover.txt 570 2.22
-# At 160^3 the suite plays the hover arc only (the held arc is the same physics driven harder, played
-# at 96^3 and 48^3 here; at 160^3 it was measured by hand, docs/BLOOM.md): each 160^3 run costs minutes
+# At 128^3 the suite plays the hover arc only (the held arc is the same physics driven harder, played
+# at 96^3 and 48^3 here; at 160^3 it was measured by hand, docs/BLOOM.md): each larger run costs minutes
 # of lavapipe.
 [ "$lattice" = 96 ] || exit 0
 arc hold$lattice "$lattice" bloom_hold.txt 430 2.37

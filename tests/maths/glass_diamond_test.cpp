@@ -5,6 +5,7 @@
 #include "scenes/glass/optics.h"
 #include "scenes/glass/shapes.h"
 #include "support/random_vectors.h"
+#include "support/trials.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
@@ -477,7 +478,7 @@ float marchedExit(glm::vec3 p, glm::vec3 d) {
 TEST(DiamondRays, ExitMatchesMarchingAndNamesTheFacet) {
   uint32_t seed = 0;
   int agree = 0, facetsChecked = 0;
-  constexpr int kRays = 4000;
+  constexpr int kRays = test::trials(4000);
   for (uint32_t i = 0; i < kRays; ++i, ++seed) {
     const glm::vec3 p = randomInside(seed), d = randomDirection(i, 61u);
     float t;
@@ -500,7 +501,7 @@ TEST(DiamondRays, ExitMatchesMarchingAndNamesTheFacet) {
 
 TEST(DiamondRays, EnterFromOutsideMatchesMarching) {
   uint32_t seed = 0;
-  for (uint32_t i = 0; i < 2000; ++i, ++seed) {
+  for (uint32_t i = 0; i < uint32_t(test::trials(2000)); ++i, ++seed) {
     const glm::vec3 target = randomInside(seed);
     const glm::vec3 ro = randomDirection(i, 67u) * (1.5f * kDiameter);
     const glm::vec3 rd = glm::normalize(target - ro);

@@ -4,6 +4,7 @@
 #include "scenes/glass/diamond.h"
 #include "scenes/glass/shapes.h"
 #include "support/random_vectors.h"
+#include "support/trials.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/matrix.hpp>
@@ -157,7 +158,7 @@ TEST_P(Shape, NormalsPointOutOfTheSurface) {
 
 // The analytic back exit against brute-force marching from random inside points along random directions.
 TEST_P(Shape, ExitAgreesWithMarching) {
-  constexpr int kRays = 3000;
+  constexpr int kRays = test::trials(3000);
   int agree = 0;
   uint32_t seed = 0;
   for (uint32_t i = 0; i < kRays; ++i, ++seed) {

@@ -34,6 +34,7 @@
 #include "core/error.h"
 #include "support/temp_folder.h"
 #include "support/files.h"
+#include "support/trials.h"
 
 // Counts heap allocations, so a test can show that rendering makes none. Replacing the global
 // operators is per program; every other test just allocates through malloc as before.
@@ -271,7 +272,7 @@ TEST(AudioReverb, ImpulseFollowsItsEnvelopeAndItsSeed) {
 TEST(AudioReverb, PartitionedConvolutionEqualsDirect) {
   std::mt19937 random(42);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  std::vector<float> x(20000);
+  std::vector<float> x(test::trials(20000));
   for (float& s : x) s = uniform(random);
   // The plate with two block sizes, and a short response that ends mid-partition.
   std::vector<float> odd(1000);

@@ -3,6 +3,7 @@
 #include "scenes/noodles/camera.h"
 #include "scenes/noodles/capsule.h"
 #include "scenes/noodles/tube_view.h"
+#include "support/trials.h"
 
 #include <gtest/gtest.h>
 
@@ -164,7 +165,8 @@ TEST(NoodlesCapsule, CellBoxHoldsEveryHitSample) {
   std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.01f, 0.3f), length(0.02f, 1.0f);
   int hitCapsules = 0, tightCapsules = 0;
   uint64_t boxCells = 0, hullCells = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  const int kTrials = test::trials(300);
+  for (int trial = 0; trial < kTrials; ++trial) {
     const glm::vec3 a{coordinate(rng), coordinate(rng) - 1.0f, coordinate(rng)};
     const glm::vec3 b = a + length(rng) * glm::normalize(glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
     const float r = radius(rng);
@@ -198,7 +200,7 @@ TEST(NoodlesCapsule, CellBoxHoldsEveryHitSample) {
       }
     }
   }
-  EXPECT_GT(hitCapsules, 100);                     // the trials do exercise visible capsules
+  EXPECT_GT(hitCapsules, kTrials / 3);             // the trials do exercise visible capsules
   EXPECT_GT(tightCapsules, hitCapsules * 7 / 10);  // and the boxes are mostly close fits
   EXPECT_LT(hullCells * 100, boxCells * 97) << hullCells << " of " << boxCells << " cells";  // the hull cuts some
 
@@ -225,7 +227,8 @@ TEST(NoodlesCapsule, HullColumnsHoldTheHitsOfSegmentsReachingFarOffScreen) {
   std::uniform_real_distribution<float> near(-0.3f, 0.3f), slope(-0.01f, 0.01f), reach(5.0f, 60.0f),
       radius(0.005f, 0.03f);
   uint64_t hits = 0;
-  for (int trial = 0; trial < 60; ++trial) {
+  const int kTrials = test::trials(60);
+  for (int trial = 0; trial < kTrials; ++trial) {
     const glm::vec3 a{near(rng), near(rng), near(rng)};
     const float far = reach(rng) * (trial % 2 ? 1.0f : -1.0f);
     const glm::vec3 b =
@@ -247,7 +250,7 @@ TEST(NoodlesCapsule, HullColumnsHoldTheHitsOfSegmentsReachingFarOffScreen) {
       }
     }
   }
-  EXPECT_GT(hits, 10000u);  // the segments do cross the view
+  EXPECT_GT(hits, 10000u * kTrials / 60);  // the segments do cross the view (10,000 hits in 60 trials)
 }
 
 TEST(NoodlesCapsule, BoxIsEmptyBehindTheCameraAndOffScreen) {
@@ -271,7 +274,7 @@ TEST(NoodlesCapsule, TilesTurnedAwayHoldNoHit) {
   std::mt19937 rng(61);
   std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.005f, 0.3f), length(0.02f, 3.0f);
   int turnedAway = 0, kept = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < test::trials(200); ++trial) {
     const glm::vec3 a{coordinate(rng), coordinate(rng) - 1.0f, coordinate(rng)};
     const glm::vec3 b = a + length(rng) * glm::normalize(glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
     const float r = radius(rng);
