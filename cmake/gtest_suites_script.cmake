@@ -1,5 +1,5 @@
 # Run after a build by vitrine_gtest_suites (GTestSuites.cmake): lists TEST_EXECUTABLE's suites and
-# writes CTEST_FILE, one add_test per suite.
+# writes CTEST_FILE, one add_test per suite, each with TEST_ENVIRONMENT (a list of VAR=VALUE) if given.
 execute_process(COMMAND "${TEST_EXECUTABLE}" --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE result
                 TIMEOUT 60)
 if(NOT result EQUAL 0)
@@ -13,6 +13,9 @@ foreach(line IN LISTS lines)
   if(line MATCHES "^([A-Za-z0-9_/]+)\\.")
     set(suite "${CMAKE_MATCH_1}")
     string(APPEND content "add_test([=[${suite}]=] [=[${TEST_EXECUTABLE}]=] [=[--gtest_filter=${suite}.*]=])\n")
+    if(TEST_ENVIRONMENT)
+      string(APPEND content "set_tests_properties([=[${suite}]=] PROPERTIES ENVIRONMENT [=[${TEST_ENVIRONMENT}]=])\n")
+    endif()
   endif()
 endforeach()
 file(WRITE "${CTEST_FILE}" "${content}")
