@@ -5,11 +5,12 @@
 # screen shows, grabbed through X11, is a headless render of the whole 1280x360 frame to within 8-bit
 # rounding: the scene rendered once at the frame's size and each output drew its own half; Esc with the
 # second output focused quits. Projector setup (F7) drags a corner of each output and keeps the pins in
-# the warp file and the settings file, and the next start shows them. kifs under
-# --reduced-motion holds still, at the low tier the headless run is given too (the cheapest frame that still shows the whole
-# fractal; a gallery without vsync draws flat out while the script waits). Then --span: one window over the
-# whole desktop shows the same frame, and so does a window grown past the shared memory the system grants. --list-monitors lists the display's monitor, and a monitor that is
-# not there, or a bad outputs file, is refused. On lavapipe the windows are drawn through X shared memory
+# the warp file and the settings file, and the next start shows them. kifs under --reduced-motion holds
+# still, at the low tier the headless run is given too (the cheapest frame that still shows the whole
+# fractal; a gallery without vsync draws flat out while the script waits). Then --span: one window over
+# the whole desktop shows the same frame, and so does a window grown past the shared memory the system
+# grants. --list-monitors lists the display's monitor, and a monitor that is not there, or a bad outputs
+# file, is refused. On lavapipe the windows are drawn through X shared memory
 # (src/host/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
 # swapchain), so both paths are held to the headless frame.
 set -u
