@@ -153,18 +153,20 @@ int Gallery::run() {
     window_.pollEvents();
     if (window_.hidden()) {
       audio_.pause();  // minimised: no drone playing to nobody
+      const auto hiddenAt = Clock::now();
       // Sleep on events (a few wake-ups a second, so a stop signal is still seen) until shown again.
       while (window_.hidden() && !window_.shouldClose() && !stopRequested) window_.waitForEvents(0.25);
       audio_.resume();
-      lastFrame_ = Clock::now();  // time spent minimised is not simulated
+      lastFrame_ = Clock::now();  // time spent minimised is not simulated, nor counted as shown
+      shownTime_.hidden(hiddenAt, lastFrame_);
       continue;
     }
     frame();
   }
   device_.waitIdle();
-  // What the viewer saw: frames a second from the first one shown to the last (minimised time included).
+  // What the viewer saw: frames a second from the first one shown to the last.
   if (frameCount_ > 1) {
-    const double seconds = secondsBetween(firstShown_, Clock::now());
+    const double seconds = shownTime_.seconds(Clock::now());
     std::fprintf(stderr, "vitrine: showed %llu frames in %.1f s (%.1f fps)\n", (unsigned long long)(frameCount_ - 1),
                  seconds, double(frameCount_ - 1) / std::max(seconds, 1e-9));
   }
@@ -234,7 +236,7 @@ void Gallery::frame() {
   // One line once the window shows its first frame: what is showing where (and what the gallery's
   // checks wait for instead of guessing how long a start takes).
   if (frameCount_++ == 0) {
-    firstShown_ = Clock::now();
+    shownTime_.firstShown(Clock::now());
     std::fprintf(stderr, "vitrine: showing %s on %s\n", std::string(renderer_->info().name).c_str(),
                  device_.properties().deviceName);
   }

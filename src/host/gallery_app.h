@@ -35,6 +35,7 @@
 #include "host/remote_link.h"
 #include "host/scene_renderer.h"
 #include "host/screenshot.h"
+#include "host/shown_time.h"
 #include "host/swapchain.h"
 #include "host/tier_watch.h"
 #include "host/user_presets.h"
@@ -146,7 +147,7 @@ class Gallery {
   bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;
   Clock::time_point lastFrame_ = Clock::now();
-  Clock::time_point firstShown_{};  // when the first frame was presented: the run's frame rate counts from it
+  ShownTime shownTime_;  // from the first frame presented, minimised spells left out: the run's frame rate
   Clock::time_point lastShaderPoll_ = Clock::now();
   double frameSeconds_ = 0.0;  // smoothed over about twenty frames, for the fps readout
   double cpuMs_ = 0.0;

@@ -1,4 +1,5 @@
-// The gallery's pure logic: fixed steps from real time, and the pointer turned into scene input.
+// The gallery's pure logic: fixed steps from real time, the pointer turned into scene input, and the
+// time it showed frames for.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "host/cursor_tracker.h"
 #include "host/fixed_step.h"
 #include "host/menu.h"
+#include "host/shown_time.h"
 #include "scenes/scene.h"
 
 namespace vitrine::host {
@@ -31,6 +33,21 @@ TEST(Help, ListsWhatExists) {
   }
   for (const char* key : {"Tab", "F1, ?", "P", ".", "[  ]", "\\", "F5", "V", "M", "F11", "F12", "Esc"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+}
+
+// The closing frame rate counts the time frames were shown: spells minimised after the first frame are
+// left out, and one before it (a window started minimised) was never part of the count.
+TEST(ShownTime, LeavesMinimisedSpellsOut) {
+  using namespace std::chrono_literals;
+  const ShownTime::Clock::time_point t0{};
+  ShownTime shown;
+  EXPECT_EQ(shown.seconds(t0 + 5s), 0.0) << "nothing shown yet";
+  shown.hidden(t0, t0 + 3s);  // before the first frame
+  shown.firstShown(t0 + 4s);
+  EXPECT_DOUBLE_EQ(shown.seconds(t0 + 6s), 2.0);
+  shown.hidden(t0 + 6s, t0 + 66s);  // a minute minimised
+  shown.hidden(t0 + 67s, t0 + 68s);
+  EXPECT_DOUBLE_EQ(shown.seconds(t0 + 70s), 5.0) << "66 s since the first frame, 61 of them minimised";
 }
 
 TEST(TimeControl, PauseStepAndSpeed) {
