@@ -8,23 +8,23 @@ const float NO_HIT = -1.0;
 float capsuleHit(vec3 origin, vec3 direction, vec3 a, vec3 b, float radius) {
   float shift = dot(0.5 * (a + b) - origin, direction);
   vec3 o = origin + shift * direction;
-  vec3 ba = b - a, oa = o - a;
+  vec3 ba = b - a, oa = o - a, across = cross(direction, ba);
   float baba = dot(ba, ba), bard = dot(ba, direction), baoa = dot(ba, oa);
-  float rdoa = dot(direction, oa), oaoa = dot(oa, oa);
-  float qa = baba - bard * bard;
-  float qb = baba * rdoa - baoa * bard;
-  float qc = baba * oaoa - baoa * baoa - radius * radius * baba;
-  float h = qb * qb - qa * qc;
+  float qa = dot(across, across);
+  float qb = baba * dot(direction, oa) - baoa * bard;
+  float apart = dot(oa, across);
+  float h = baba * (qa * radius * radius - apart * apart);
   if (h < 0.0) return NO_HIT;
   float side = qa > 0.0 ? (-qb - sqrt(h)) / qa : 0.0;
   float along = qa > 0.0 ? baoa + side * bard : (bard > 0.0 ? -1.0 : baba + 1.0);
   float t = side;
   if (along <= 0.0 || along >= baba) {
     vec3 oc = along <= 0.0 ? oa : o - b;
-    float sb = dot(direction, oc), sc = dot(oc, oc) - radius * radius;
-    float sh = sb * sb - sc;
+    float nearest = -dot(direction, oc);
+    vec3 miss = oc + nearest * direction;
+    float sh = radius * radius - dot(miss, miss);
     if (sh < 0.0) return NO_HIT;
-    t = -sb - sqrt(sh);
+    t = nearest - sqrt(sh);
   }
   float hit = t + shift;
   return hit > 0.0 ? hit : NO_HIT;

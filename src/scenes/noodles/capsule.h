@@ -23,19 +23,24 @@ inline constexpr float kNoHit = -1.0f;
 
 // Nearest t > 0 at which origin + t * direction (unit length) enters the capsule, else kNoHit; a ray
 // starting inside sees nothing (a tube the camera flies through is not drawn from within).
-// The ray is first moved to where it passes the segment's middle, so the quadratic's terms are of the
-// capsule's size, not the camera's distance: far away, float cancellation would otherwise eat the
-// radius (|o|^2 ~ 10^4 against r^2 ~ 10^-4).
+// Float rounding must not eat the radius:
+//  - the ray is first moved to where it passes the segment's middle, so no term is of the camera's
+//    distance (|o|^2 ~ 10^4 against r^2 ~ 10^-4 far away);
+//  - whether it meets the infinite cylinder comes from the distance between the ray's line and the
+//    axis, one dot product with d x ba, not from the quadratic's discriminant qb^2 - qa qc (equal in
+//    exact arithmetic): those terms are of |ba|^2 |o - a|^2, and their difference lost the radius for
+//    segments a few thousand radii long (which the step and radius sliders reach), drawing rays that
+//    passed outside and dropping rays that passed inside;
+//  - an end sphere is met from the ray's point nearest its centre, for the same reason.
 inline float capsuleHit(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm::vec3 b, float radius) {
   const float shift = glm::dot(0.5f * (a + b) - origin, direction);
   const glm::vec3 o = origin + shift * direction;
-  const glm::vec3 ba = b - a, oa = o - a;
+  const glm::vec3 ba = b - a, oa = o - a, across = glm::cross(direction, ba);
   const float baba = glm::dot(ba, ba), bard = glm::dot(ba, direction), baoa = glm::dot(ba, oa);
-  const float rdoa = glm::dot(direction, oa), oaoa = glm::dot(oa, oa);
-  const float qa = baba - bard * bard;
-  const float qb = baba * rdoa - baoa * bard;
-  const float qc = baba * oaoa - baoa * baoa - radius * radius * baba;
-  const float h = qb * qb - qa * qc;
+  const float qa = glm::dot(across, across);  // baba - bard^2, without its cancellation for rays near the axis
+  const float qb = baba * glm::dot(direction, oa) - baoa * bard;
+  const float apart = glm::dot(oa, across);  // the two lines' distance times |d x ba|
+  const float h = baba * (qa * radius * radius - apart * apart);
   if (h < 0.0f) return kNoHit;  // misses the infinite cylinder, hence both end spheres inside it
   // Where the ray enters the infinite cylinder, as a distance along the axis times |ba|; a ray along
   // the axis (qa = 0) enters at the end it meets first.
@@ -44,10 +49,11 @@ inline float capsuleHit(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm:
   float t = side;
   if (along <= 0.0f || along >= baba) {  // beyond an end: the sphere round that node
     const glm::vec3 oc = along <= 0.0f ? oa : o - b;
-    const float sb = glm::dot(direction, oc), sc = glm::dot(oc, oc) - radius * radius;
-    const float sh = sb * sb - sc;
+    const float nearest = -glm::dot(direction, oc);
+    const glm::vec3 miss = oc + nearest * direction;  // from the centre to the ray's nearest point
+    const float sh = radius * radius - glm::dot(miss, miss);
     if (sh < 0.0f) return kNoHit;
-    t = -sb - std::sqrt(sh);
+    t = nearest - std::sqrt(sh);
   }
   const float hit = t + shift;
   return hit > 0.0f ? hit : kNoHit;  // entered behind the origin: it starts inside, or all is behind
