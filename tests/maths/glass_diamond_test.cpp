@@ -501,7 +501,8 @@ TEST(DiamondRays, ExitMatchesMarchingAndNamesTheFacet) {
 
 TEST(DiamondRays, EnterFromOutsideMatchesMarching) {
   uint32_t seed = 0;
-  for (uint32_t i = 0; i < uint32_t(test::trials(2000)); ++i, ++seed) {
+  constexpr uint32_t kRays = test::trials(2000);
+  for (uint32_t i = 0; i < kRays; ++i, ++seed) {
     const glm::vec3 target = randomInside(seed);
     const glm::vec3 ro = randomDirection(i, 67u) * (1.5f * kDiameter);
     const glm::vec3 rd = glm::normalize(target - ro);

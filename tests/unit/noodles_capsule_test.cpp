@@ -103,7 +103,7 @@ TEST(NoodlesCapsule, LongThinSegmentsKeepTheirRadius) {
     const glm::vec3 target = glm::mix(a, b, unit(rng) * 1.1f - 0.05f) + offset(rng) * r * side;
     const glm::vec3 direction = glm::normalize(target - origin);
     const double distance = raySegmentDistance(origin, direction, a, b) / r;
-    if (std::abs(distance - 1.0) < 0.002) continue;  // the band float's rounding may put either way
+    if (std::abs(distance - 1.0) < 0.002) continue;  // within float rounding of the surface: either way
     const bool hit = capsuleHit(origin, direction, a, b, r) != kNoHit;
     if (distance < 1.0) {
       ++inside;
@@ -323,7 +323,8 @@ TEST(NoodlesCapsule, TilesTurnedAwayHoldNoHit) {
   std::mt19937 rng(61);
   std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), radius(0.005f, 0.3f), length(0.02f, 3.0f);
   int turnedAway = 0, kept = 0;
-  for (int trial = 0; trial < test::trials(200); ++trial) {
+  const int kTrials = test::trials(200);
+  for (int trial = 0; trial < kTrials; ++trial) {
     const glm::vec3 a{coordinate(rng), coordinate(rng) - 1.0f, coordinate(rng)};
     const glm::vec3 b = a + length(rng) * glm::normalize(glm::vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
     const float r = radius(rng);
