@@ -1,7 +1,8 @@
 #version 460
 // The crystal: the ray's entry and exit found analytically (a convex polytope of 8 planes), the vapour
-// integrated front to back over jittered samples in the crystal's state colour, and a Fresnel rim and facet shading at the entry; during the
-// climax a spectral shimmer. The silhouette is antialiased from the ray's analytic chord through the
+// integrated front to back over jittered samples, each in the colour of its own concentration (colour
+// fronts move through the crystal with the vapour), and a Fresnel rim and facet shading at the entry;
+// during the climax a spectral shimmer. The silhouette is antialiased from the ray's analytic chord through the
 // octahedron, so a lower render scale is softer, never stair-stepped. Output is premultiplied: the
 // chamber shows through what the crystal lets pass.
 #extension GL_GOOGLE_include_directive : require
@@ -15,16 +16,17 @@ layout(push_constant) uniform Push { BloomCrystalPush pc; };
 
 const vec3 kLight = normalize(vec3(-0.4, 0.8, 0.6));
 
-// The facet whose outward normal has these signs, over a path of `volumeAlpha`: premultiplied colour
-// and alpha.
-vec4 shadeFacet(vec3 signs, vec3 rd, float volumeAlpha) {
+// The facet whose outward normal has these signs, over the volume's premultiplied colour and alpha:
+// premultiplied colour and alpha.
+vec4 shadeFacet(vec3 signs, vec3 rd, vec4 volume) {
   const vec3 normal = signs * 0.57735027;
   // A glass surface: some opacity however thin the path, so the silhouette stays crisp.
   const float fresnel = 0.02 + 0.98 * pow(1.0 - abs(dot(normal, rd)), 5.0);
-  const float alpha = volumeAlpha + (1.0 - volumeAlpha) * (0.22 + 0.5 * fresnel);
+  const float surface = (1.0 - volume.a) * (0.22 + 0.5 * fresnel);
   // Facets catch the light; the rim brightens towards grazing angles.
-  const vec3 lit = pc.tint * alpha * (0.72 + 0.38 * max(dot(normal, kLight), 0.0)) + vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
-  return vec4(lit, alpha);
+  const vec3 lit = (volume.rgb + kPristine * surface) * (0.72 + 0.38 * max(dot(normal, kLight), 0.0)) +
+                   vec3(1.0, 0.99, 0.97) * fresnel * 0.55;
+  return vec4(lit, volume.a + surface);
 }
 
 void main() {
@@ -54,34 +56,42 @@ void main() {
   if (coverage <= 0.0) discard;
   const float span = max(chordOut - t, 0.0);
 
-  // Front-to-back in the state's colour; the vapour makes it dense (bloom_math.h: sampleDensity). The
-  // samples follow the chord's length (crystalSamples): a step no longer than the longest chord's.
+  // Front to back, each sample in its own concentration's colour; the vapour makes it dense
+  // (bloom_math.h: sampleDensity). A sample's colour counts by what it adds to the path's opacity and by
+  // its pigment, the square of its concentration (vapourPigment): a thin amber rim over a saturated
+  // heart tints it little, and white glass with no vapour counts only where nothing else is.
+  // The samples follow the chord's length (crystalSamples): a step no longer than the longest chord's.
+  // The march stops where the path is opaque (transmittance 0.005).
   const uint samples = crystalSamples(span, kCrystalRadius, pc.samples);
   const float step = span / float(samples);
   const float jitter = hash01(uvec3(uvec2(gl_FragCoord.xy), pc.seed ^ (pc.frame * 747796405u)));
-  // The transmittances multiply, so the optical depth adds: one exp at the end rather than one a sample,
-  // and the march stops where the path is opaque (depth 5.3: alpha 0.995).
-  // Clear glass (no vapour anywhere past kCoverFrom, the state the crystal rests in): every sample's
-  // density is kGlassDensity, so the path's depth is known without sampling the lattice.
-  float depth = pc.clearGlass != 0u ? kGlassDensity * step * float(samples) : 0.0;
-  for (uint i = 0u; pc.clearGlass == 0u && i < samples && depth < 5.3; ++i) {
+  float transmit = 1.0;
+  vec4 tinted = vec4(kPristine, 1.0) * 1e-6;  // colour x weight, weight
+  if (pc.clearGlass != 0u) {
+    // Clear glass (no vapour anywhere past kCoverFrom, the state the crystal rests in): every sample is
+    // the glass's density and colour, so the path is known without sampling the lattice.
+    transmit = exp(-kGlassDensity * span);
+  }
+  for (uint i = 0u; pc.clearGlass == 0u && i < samples && transmit > 0.005; ++i) {
     const vec3 p = entry + rd * ((float(i) + jitter) * step);
     const float v = textureLod(vapour, p / kCrystalRadius * 0.5 + 0.5, 0.0).r;
-    depth += sampleDensity(v) * step;
+    const float a = 1.0 - exp(-sampleDensity(v) * step);
+    tinted += vec4(vapourColour(v, pc.thresholds), 1.0) * (transmit * a * vapourPigment(v));
+    transmit *= 1.0 - a;
   }
-  const float volumeAlpha = 1.0 - exp(-depth);
+  const vec4 volume = vec4(tinted.rgb / tinted.a * (1.0 - transmit), 1.0 - transmit);  // premultiplied
   // The facet the pixel sees, shaded; where an edge between facets crosses it, each facet weighted by
   // its share: a hard switch there, between facets shaded differently, showed as stair-steps.
   vec4 shaded;  // premultiplied colour, alpha
   if (all(equal(positiveShare, round(positiveShare)))) {
-    shaded = shadeFacet(positiveShare * 2.0 - 1.0, rd, volumeAlpha);
+    shaded = shadeFacet(positiveShare * 2.0 - 1.0, rd, volume);
   } else {
     shaded = vec4(0.0);
     for (int k = 0; k < 8; ++k) {
       const vec3 signs = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
       const vec3 shares = mix(1.0 - positiveShare, positiveShare, greaterThan(signs, vec3(0.0)));
       const float share = shares.x * shares.y * shares.z;
-      if (share > 0.0) shaded += share * shadeFacet(signs, rd, volumeAlpha);
+      if (share > 0.0) shaded += share * shadeFacet(signs, rd, volume);
     }
   }
   vec3 sum = shaded.rgb;

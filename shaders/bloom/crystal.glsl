@@ -2,8 +2,13 @@
 const float kCrystalRadius = 0.8;
 const float kCoreRadius = 0.7;
 const vec3 kPristine = vec3(0.86, 0.89, 0.93);
-const float kCoverFrom = 0.04, kCoverTo = 0.20;
-const float kGlassDensity = 0.9, kVapourDensity = 9.0;
+const vec3 kAmber = vec3(0.955, 0.40, 0.021);
+const vec3 kRose = vec3(0.84, 0.155, 0.30);
+const vec3 kCrimson = vec3(0.30, 0.0025, 0.017);
+const float kColourEdge = 0.06, kColourLead = 0.05;
+const float kGlassPigment = 0.01;
+const float kCoverFrom = 0.04;
+const float kGlassDensity = 0.9, kVapourDensity = 18.0;
 
 bool insideCrystal(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= 1.0; }
 bool insideCore(vec3 normalised) { return abs(normalised.x) + abs(normalised.y) + abs(normalised.z) <= kCoreRadius; }
@@ -32,5 +37,13 @@ uint crystalSamples(float span, float radius, uint samples) {
   return clamp(uint(max(wanted, 1.0)), 1u, max(samples, 1u));
 }
 
-float vapourCover(float v) { return smoothstep(kCoverFrom, kCoverTo, v); }
-float sampleDensity(float v) { return kGlassDensity + kVapourDensity * vapourCover(v); }
+// A sample's colour from its own concentration; `thresholds` are amber's, rose's and crimson's.
+vec3 vapourColour(float v, vec3 thresholds) {
+  const vec3 at = thresholds - kColourLead;
+  vec3 c = mix(kPristine, kAmber, smoothstep(at.x - 0.5 * kColourEdge, at.x + 0.5 * kColourEdge, v));
+  c = mix(c, kRose, smoothstep(at.y - 0.5 * kColourEdge, at.y + 0.5 * kColourEdge, v));
+  return mix(c, kCrimson, smoothstep(at.z - 0.5 * kColourEdge, at.z + 0.5 * kColourEdge, v));
+}
+
+float vapourPigment(float v) { return kGlassPigment + v * v; }
+float sampleDensity(float v) { return kGlassDensity + kVapourDensity * v * v; }

@@ -9,7 +9,7 @@ struct BloomCrystalPush {
   mat4 viewProjection;
   vec3 eye;
   float time;        // seconds: the climax's spectral shimmer moves with it
-  vec3 tint;         // the crystal's state colour (bloom_math.h: flipColour), linear
+  vec3 thresholds;   // amber's, rose's and crimson's concentrations (bloom_math.h: vapourColour)
   uint seed;
   uint frame;        // 0 under reduced motion: the jitter holds still
   uint samples;      // volume samples along the longest chord (56); shorter chords take fewer

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace vitrine::host {
+
+constexpr float kRestingSlackPixels = 2.0f;
 
 void CursorTracker::observe(const Pointer& pointer, bool menuWantsMouse) {
   const glm::vec2 size(std::max(1u, pointer.framebuffer.width), std::max(1u, pointer.framebuffer.height));
@@ -12,7 +16,12 @@ void CursorTracker::observe(const Pointer& pointer, bool menuWantsMouse) {
   if (!pointer.leftHeld) state_.dragging = false;
   if (state_.dragging && wasDragging) state_.dragDelta += normalized - state_.normalized;
   if (!menuWantsMouse) state_.wheel += pointer.wheel;
-  state_.present = pointer.inside && !menuWantsMouse;
+  if (!engaged_) {  // a resting pointer engages once it moves (more than a pixel: a window settling), presses or leaves
+    if (!restingAt_ && pointer.inside) restingAt_ = pointer.pixels;
+    engaged_ = !pointer.inside || pointer.leftPressed || pointer.leftHeld || pointer.wheel != 0.0f ||
+               glm::length(pointer.pixels - *restingAt_) > kRestingSlackPixels;
+  }
+  state_.present = engaged_ && pointer.inside && !menuWantsMouse;
   state_.pixels = pointer.pixels;
   state_.normalized = normalized;
 }

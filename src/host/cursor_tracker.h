@@ -5,15 +5,23 @@
 #include "host/pointer.h"
 #include "scenes/scene.h"
 
+#include <optional>
+
 namespace vitrine::host {
 
 class CursorTracker {
  public:
+  // `waitForMovement`: a pointer already resting over the view when the tracker first sees it (a window
+  // opened under it) is not the scene's until it moves, presses or leaves and comes back: a gallery that
+  // starts under a resting pointer shows its first look, not whatever the pointer would start there.
+  explicit CursorTracker(bool waitForMovement = false) : engaged_(!waitForMovement) {}
   void observe(const Pointer& pointer, bool menuWantsMouse);  // once per rendered frame
   CursorInput take();                                         // once per simulation step
 
  private:
   CursorInput state_;
+  bool engaged_;
+  std::optional<glm::vec2> restingAt_;  // where a resting pointer was first seen, until it moves
 };
 
 }  // namespace vitrine::host

@@ -137,7 +137,7 @@ class Gallery {
   size_t setupOutput_ = 0;                  // the output whose pin setup moves
   std::optional<size_t> setupShown_;        // the output whose setup the log last said is showing
   static constexpr std::string_view kMainOutput = "main";  // the main window's name in the settings file
-  CursorTracker cursor_;
+  CursorTracker cursor_{/*waitForMovement=*/true};
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
 

@@ -5,6 +5,7 @@
 # phase it leaves. The same arc by hover alone (no button: the seed's only gesture) and by hold, at a
 # pace one feels, at LATTICE^3 (96, the default, when not given; ctest also runs 128, hover only); the vent from
 # the climax back to pristine takes the physics' time (the same at every size, within 5 %).
+# A hover on a face, towards the edge and on a vertex climbs to CHROMA within 1.5x the centre's time.
 # At 96^3 it goes on with a 48^3 run whose WAV holds a bell at E4, B4 and E5 (within 1 Hz) at those
 # moments, the drone, and no clipping, and the seed's CPU proxy. Small frames: only the lattice matters.
 set -eu
@@ -34,6 +35,28 @@ print(f"{sys.argv[2]}: " + ", ".join(f"{s} {t:.2f}" for s, t in zip(seen, times)
 PY
 }
 arc hover$lattice "$lattice" bloom_hover.txt 570 2.22
+# The footprint, not the distance from the centre: a hover on a face, towards the silhouette's edge and
+# on a vertex climbs through every phase to CHROMA within 1.5x the time the centre's hover took.
+for place in "face 0.6 0.35" "edge 0.36 0.45" "vertex 0.315 0.5"; do
+  set -- $place
+  printf '# A hover on the crystal %s, no button.\n0.05 move %s %s\n' "$1" "$2" "$3" >"$out/hover-$1.txt"
+  "$vitrine" --headless --scene bloom --size 48x27 --frames 380 --set lattice="$lattice" --validate \
+    --input "$out/hover-$1.txt" --events "$out/hover-$1-$lattice.jsonl" --out "$out/hover-$1-$lattice.exr"
+  python3 - "$out/hover$lattice.jsonl" "$out/hover-$1-$lattice.jsonl" "$1" <<'PY'
+import json, sys
+def climb(path):  # the first time each phase is reached
+    first = {}
+    for e in map(json.loads, open(path)):
+        first.setdefault(e["event"], e["t"])
+    return first
+centre, here, name = climb(sys.argv[1]), climb(sys.argv[2]), sys.argv[3]
+phases = ("amber", "rose", "crimson", "chroma")
+for phase in phases:
+    assert phase in here, (name, "never reached", phase, here)
+    assert here[phase] <= 1.5 * centre[phase], (name, phase, here[phase], "centre", centre[phase])
+print(f"{name}: " + ", ".join(f"{p} {here[p]:.2f} s ({here[p] / centre[p]:.2f}x the centre's)" for p in phases))
+PY
+done
 # At 128^3 the suite plays the hover arc only (the held arc is the same physics driven harder, played
 # at 96^3 and 48^3 here; at 160^3 it was measured by hand, docs/BLOOM.md): each larger run costs minutes
 # of lavapipe.

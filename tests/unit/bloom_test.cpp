@@ -191,10 +191,31 @@ TEST(BloomColour, TheCrystalFlipsToItsStateQuicklyAndTheVapourSetsItsDensity) {
   EXPECT_EQ(flipColour(kAmber, kRose, kFlipSeconds, kFlipSeconds), kRose);
   EXPECT_LE(kFlipSeconds, 0.15f) << "a flip, not a fade";
   EXPECT_GT(kReducedMotionFlipSeconds, kFlipSeconds);
-  EXPECT_EQ(vapourCover(0.0f), 0.0f);
-  EXPECT_EQ(vapourCover(0.25f), 1.0f) << "an amber crystal is already fully coloured";
-  EXPECT_GT(sampleDensity(0.3f) * 0.8f, 4.0f) << "filled, a path through the centre is opaque (optical depth > 4)";
+  EXPECT_GT(sampleDensity(0.35f) * 1.6f, 3.0f) << "an amber crystal, filled, is nearly opaque through its centre";
+  EXPECT_GT(sampleDensity(1.0f) * 0.3f, 3.0f) << "a saturated heart is opaque within a fifth of the crystal";
+  EXPECT_LT(sampleDensity(0.3f) * 0.1f, 0.3f) << "a thin amber rim lets a crimson heart show through";
+  EXPECT_GT(vapourPigment(1.0f), 8.0f * vapourPigment(0.3f)) << "and tints it little";
+  EXPECT_GT(vapourPigment(0.3f), 5.0f * vapourPigment(0.0f)) << "the glass's white counts only where nothing else is";
   EXPECT_LT(sampleDensity(0.0f) * 0.1f, 0.1f) << "the drained shell is thin glass";
+  EXPECT_LT(sampleDensity(kCoverFrom), kGlassDensity * 1.04f) << "below kCoverFrom the vapour changes nothing";
+}
+
+// Each sample's colour follows its own concentration (the seed's three smoothsteps at 0.20 / 0.40 /
+// 0.60 for the default thresholds), sharp: within 0.03 of a step it is (nearly) one state or the other.
+TEST(BloomColour, EachSampleTakesItsConcentrationsStateSharply) {
+  const glm::vec3 t{0.25f, 0.45f, 0.65f};
+  const auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 0.02f; };
+  EXPECT_TRUE(near(vapourColour(0.0f, t), kPristine));
+  EXPECT_TRUE(near(vapourColour(0.16f, t), kPristine));
+  EXPECT_TRUE(near(vapourColour(0.24f, t), kAmber));
+  EXPECT_TRUE(near(vapourColour(0.36f, t), kAmber));
+  EXPECT_TRUE(near(vapourColour(0.44f, t), kRose));
+  EXPECT_TRUE(near(vapourColour(0.56f, t), kRose));
+  EXPECT_TRUE(near(vapourColour(0.64f, t), kCrimson));
+  EXPECT_TRUE(near(vapourColour(1.05f, t), kCrimson));
+  const glm::vec3 halfway = vapourColour(0.20f, t);
+  EXPECT_TRUE(near(halfway, (kPristine + kAmber) * 0.5f)) << "the seed's 0.20 is the middle of the first step";
+  EXPECT_TRUE(near(vapourColour(0.45f, {0.45f, 0.55f, 0.65f}), kAmber)) << "the steps follow the thresholds";
 }
 
 // The longest chord takes every sample; shorter ones fewer at no longer a step; a sliver still one.
@@ -261,19 +282,29 @@ TEST(BloomSettings, LowerTiersTakeASmallerLatticeAndSamplesInProportion) {
   EXPECT_EQ(tierSamples(8, 96, 64), 8);
 }
 
-TEST(BloomCalibration, AHoverReachesEveryPhaseAndTheClimaxThenVents) {
-  const Settings settings;
-  const uint32_t n = 48;
+// The default settings' diffusion at n^3 with a source at `point` (world) of `rate`, in a 60 Hz frame's
+// explicit sub-steps, and the thresholds.
+struct Hover {
+  Settings settings;
   DiffusionParams p;
-  p.diffusion = scaledDiffusion(settings.diffusion, n);
-  p.sigma = scaledSigma(settings.sigma, n);
-  p.source = worldToVoxel(cursorVapour(cameraRay(0.5f, 0.45f, 16.0f / 9.0f)).point, n);
-  p.sourceRate = settings.sourceRate;
+  uint32_t substeps = 1;
+  std::array<float, 4> thresholds{};
+  Hover(glm::vec3 point, float rate, uint32_t n) {
+    p.diffusion = scaledDiffusion(settings.diffusion, n);
+    p.sigma = scaledSigma(settings.sigma, n);
+    p.source = worldToVoxel(point, n);
+    p.sourceRate = rate;
+    substeps = substepsFor(p.diffusion, 1.0f / 60.0f);
+    p.dt = 1.0f / 60.0f / float(substeps);
+    thresholds = {settings.thresholdAmber, settings.thresholdRose, settings.thresholdCrimson, settings.thresholdChroma};
+  }
+};
+
+TEST(BloomCalibration, AHoverReachesEveryPhaseAndTheClimaxThenVents) {
+  const uint32_t n = 48;
   const float frame = 1.0f / 60.0f;
-  const uint32_t substeps = substepsFor(p.diffusion, frame);
-  p.dt = frame / float(substeps);
-  const std::array<float, 4> thresholds{settings.thresholdAmber, settings.thresholdRose, settings.thresholdCrimson,
-                                        settings.thresholdChroma};
+  Hover hover(cursorVapour(cameraRay(0.5f, 0.45f, 16.0f / 9.0f), Settings{}.reach).point, Settings{}.sourceRate, n);
+  auto& [settings, p, substeps, thresholds] = hover;
   std::vector<float> a(size_t(n) * n * n, 0.0f), b;
   PhaseDetector detector;
   std::vector<std::pair<std::string, float>> seen;
@@ -296,18 +327,112 @@ TEST(BloomCalibration, AHoverReachesEveryPhaseAndTheClimaxThenVents) {
   EXPECT_LT(seen[7].second - 8.0f, 4.0f) << "vented within seconds";
 }
 
-TEST(BloomCursor, TheCentreOfTheViewPointsAtTheCrystal) {
-  const CursorVapour centre = cursorVapour(cameraRay(0.5f, 0.5f, 16.0f / 9.0f));
-  EXPECT_LT(centre.distance, 0.1f);
-  const CursorVapour corner = cursorVapour(cameraRay(0.02f, 0.02f, 16.0f / 9.0f));
-  EXPECT_GT(corner.distance, 1.3f * kCrystalRadius) << "a corner of the view is out of reach";
-  EXPECT_EQ(worldToVoxel(glm::vec3(0.0f), 96), glm::vec3(48.0f));
+// The times a cursor held at (u, v) of a 16:9 view takes to flip amber, rose, crimson and reach the
+// climax, on the CPU reference at n^3 with the scene's rule (bloom_math.h: cursorVapour, sourceBoost);
+// `drag` the held button's boost. Fewer than four times: it never got there in 12 s.
+std::vector<float> arcTimes(float u, float v, uint32_t n, float drag = 1.0f) {
+  const Settings settings;
+  const CursorVapour cursor = cursorVapour(cameraRay(u, v, 16.0f / 9.0f), settings.reach);
+  if (!cursor.over) return {};
+  Hover hover(cursor.point, settings.sourceRate * drag * sourceBoost(cursor.point / kCrystalRadius, settings.sigma / 48.0f), n);
+  auto& [unused, p, substeps, thresholds] = hover;
+  p.sourceOn = true;
+  p.decay = settings.decayRising;
+  const float frame = 1.0f / 60.0f;
+  std::vector<float> a(size_t(n) * n * n, 0.0f), b;
+  PhaseDetector detector;
+  std::vector<float> times;
+  for (int f = 0; f < 60 * 12 && !detector.climax(); ++f) {
+    for (uint32_t i = 0; i < substeps; ++i) diffuseLattice(a, b, n, p), std::swap(a, b);
+    for (const PhaseEvent& e : detector.observe(interiorFractions(a, n, thresholds), kFractionBands))
+      if (e.kind != PhaseEvent::Kind::Vent) times.push_back(float(f + 1) * frame);
+  }
+  return times;
+}
+
+// The seed drives the phases wherever the cursor is over the crystal's footprint: a hover (and a hold)
+// on a face, near the silhouette's edge, on a vertex and just off it plays the whole arc (amber, rose,
+// crimson, CHROMA) within 1.5x the centre's time, at two lattice sizes (the held button at one; the
+// GPU's, 96^3 and 128^3, are tests/cli/bloom_phases.sh). Before the rule followed the footprint, x = 0.36 stopped at amber and a
+// vertex did nothing.
+TEST(BloomCalibration, AHoverAnywhereOverTheFootprintPlaysTheWholeArc) {
+  const float aspect = 16.0f / 9.0f;
+  const glm::vec2 left = projectToView({-kCrystalRadius, 0.0f, 0.0f}, aspect);
+  const glm::vec2 top = projectToView({0.0f, kCrystalRadius, 0.0f}, aspect);
+  const std::vector<std::pair<const char*, glm::vec2>> places{
+      {"face", {0.6f, 0.35f}}, {"towards the edge", {0.36f, 0.45f}}, {"left vertex", {left.x + 0.005f, left.y}},
+      {"top vertex", {top.x, top.y + 0.005f}}, {"just off the silhouette", {left.x - 0.008f, left.y}}};
+  for (const auto& [n, drag] : {std::pair{48u, 1.0f}, std::pair{48u, Settings{}.dragBoost}, std::pair{64u, 1.0f}}) {
+      const std::vector<float> centre = arcTimes(0.5f, 0.45f, n, drag);
+      ASSERT_EQ(centre.size(), 4u);
+      for (const auto& [name, at] : places) {
+        const std::vector<float> times = arcTimes(at.x, at.y, n, drag);
+        ASSERT_EQ(times.size(), 4u) << name << " at " << n << "^3, drag " << drag;
+        for (size_t k = 0; k < 4; ++k)
+          EXPECT_LE(times[k], 1.5f * centre[k]) << name << " event " << k << " at " << n << "^3, drag " << drag;
+      }
+    }
+}
+
+TEST(BloomCursor, TheFootprintDecidesWhereTheCursorInjects) {
+  const float aspect = 16.0f / 9.0f;
+  const Settings settings;
+  EXPECT_TRUE(cursorVapour(cameraRay(0.5f, 0.5f, aspect), settings.reach).over);
+  EXPECT_LT(glm::length(cursorVapour(cameraRay(0.5f, 0.5f, aspect), settings.reach).point), 0.05f);
+  // The left vertex shows at (0.310, 0.5): on it and just off it the cursor plays; a corner does not.
+  const glm::vec2 vertex = projectToView({-kCrystalRadius, 0.0f, 0.0f}, aspect);
+  EXPECT_NEAR(vertex.x, 0.310f, 0.002f);
+  EXPECT_TRUE(cursorVapour(cameraRay(vertex.x + 0.002f, vertex.y, aspect), 1.0f).over);
+  EXPECT_FALSE(cursorVapour(cameraRay(vertex.x - 0.01f, vertex.y, aspect), 1.0f).over) << "off the silhouette";
+  EXPECT_TRUE(cursorVapour(cameraRay(vertex.x - 0.01f, vertex.y, aspect), settings.reach).over) << "within reach";
+  EXPECT_FALSE(cursorVapour(cameraRay(0.02f, 0.02f, aspect), settings.reach).over) << "a corner of the view";
+  // The footprint, not the distance from the centre: just off the upper-right edge a ray passes 0.74 R
+  // from the centre and misses; towards the left vertex one passing at 0.92 R meets the crystal.
+  const auto passes = [&](float u, float v) {
+    return glm::length(cursorVapour(cameraRay(u, v, aspect), 1.0f).point) / kSourcePull / kCrystalRadius;
+  };
+  EXPECT_FALSE(cursorVapour(cameraRay(0.604f, 0.325f, aspect), 1.0f).over);
+  EXPECT_NEAR(passes(0.604f, 0.325f), 0.74f, 0.01f);
+  EXPECT_TRUE(cursorVapour(cameraRay(0.32f, 0.5f, aspect), 1.0f).over);
+  EXPECT_NEAR(passes(0.32f, 0.5f), 0.92f, 0.01f);
+  // The source is pulled in towards the heart, and boosted there by what of it would fall outside.
+  const CursorVapour atVertex = cursorVapour(cameraRay(vertex.x + 0.002f, vertex.y, aspect), 1.0f);
+  EXPECT_NEAR(glm::length(atVertex.point), kSourcePull * kCrystalRadius, 0.02f);
+  EXPECT_LT(atVertex.point.x, 0.0f) << "on the cursor's side";
+  const float sigma = settings.sigma / 48.0f;
+  EXPECT_FLOAT_EQ(sourceBoost(glm::vec3(0.0f), sigma), 1.0f);
+  const float boost = sourceBoost(atVertex.point / kCrystalRadius, sigma);
+  EXPECT_GT(boost, 1.1f);
+  EXPECT_LE(boost, kMaxSourceBoost);
+  EXPECT_NEAR(sourceMassInside(glm::vec3(0.3f, 0.0f, 0.0f), sigma), sourceMassInside(glm::vec3(0.0f, -0.3f, 0.0f), sigma),
+              1e-3f * sourceMassInside(glm::vec3(0.0f), sigma))
+      << "the octahedron's symmetry";
   // Projection is the inverse of the camera ray: a point along a pixel's ray shows at that pixel.
   const Ray ray = cameraRay(0.3f, 0.7f, 1.5f);
   const glm::vec2 back = projectToView(ray.origin + ray.direction * 2.5f, 1.5f);
   EXPECT_NEAR(back.x, 0.3f, 1e-5f);
   EXPECT_NEAR(back.y, 0.7f, 1e-5f);
+  EXPECT_EQ(worldToVoxel(glm::vec3(0.0f), 96), glm::vec3(48.0f));
   EXPECT_EQ(worldToVoxel(glm::vec3(5.0f), 96), glm::vec3(96.0f)) << "clamped into the lattice";
+}
+
+// The words fade with the vapour: a label is full at its flip and gone as the next phase flips or as its
+// own signal falls to leaving; CHROMA is full through the climax and gone as the crystal leaves crimson.
+TEST(BloomType, TheWordsFadeWithTheVapourNotAClock) {
+  const auto& b = kFractionBands;
+  EXPECT_FLOAT_EQ(labelPresence(1, {0.45f, 0.0f, 0.0f, 0.0f}, b), 1.0f) << "amber at its flip";
+  EXPECT_GT(labelPresence(1, {0.9f, 0.3f, 0.0f, 0.0f}, b), 0.7f);
+  EXPECT_FLOAT_EQ(labelPresence(1, {1.0f, 0.45f, 0.0f, 0.0f}, b), 0.0f) << "gone as rose flips";
+  EXPECT_FLOAT_EQ(labelPresence(3, {1.0f, 1.0f, 1.0f, 0.5f}, b), 0.0f) << "crimson gives way to CHROMA";
+  EXPECT_FLOAT_EQ(labelPresence(2, {1.0f, 0.25f, 0.1f, 0.0f}, b), 0.0f) << "rose, vented to leaving";
+  EXPECT_GT(labelPresence(2, {1.0f, 0.4f, 0.1f, 0.0f}, b), 0.8f);
+  EXPECT_EQ(labelPresence(0, {1.0f, 1.0f, 1.0f, 1.0f}, b), 0.0f);
+  EXPECT_EQ(chromaPresence(true, 0.2f, 1.0f, b[2]), 1.0f);
+  EXPECT_FLOAT_EQ(chromaPresence(false, 0.97f, 0.97f, b[2]), 1.0f) << "continuous as the climax ends";
+  const float half = chromaPresence(false, 0.6f, 0.97f, b[2]);
+  EXPECT_GT(half, 0.2f);
+  EXPECT_LT(half, 0.8f);
+  EXPECT_EQ(chromaPresence(false, 0.25f, 0.97f, b[2]), 0.0f) << "gone as the crystal leaves crimson";
 }
 
 TEST(BloomProxy, RisesAndVentsAtTheSeedsRates) {

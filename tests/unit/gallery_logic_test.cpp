@@ -214,5 +214,32 @@ TEST(CursorTracker, WheelGoesToTheSceneOnlyWhenTheMenuDoesNotWantIt) {
   EXPECT_EQ(tracker.take().wheel, 3.0f);
 }
 
+// A gallery opened under a resting pointer shows its first look: the pointer is the scene's once it
+// moves past the window's settling slack, presses or leaves; a script's tracker takes it at once.
+TEST(CursorTracker, APointerRestingOverANewGalleryWaitsUntilItMoves) {
+  const auto inside = [](float x, float y) { return Pointer{{x, y}, {200, 100}, false, false, 0.0f, true}; };
+  CursorTracker gallery(/*waitForMovement=*/true);
+  gallery.observe(inside(100, 50), false);
+  EXPECT_FALSE(gallery.take().present);
+  gallery.observe(inside(101, 51), false);  // a window settling: a pixel or so
+  EXPECT_FALSE(gallery.take().present);
+  gallery.observe(inside(104, 50), false);
+  EXPECT_TRUE(gallery.take().present);
+
+  CursorTracker pressed(/*waitForMovement=*/true);
+  pressed.observe(inside(100, 50), false);
+  pressed.observe(Pointer{{100, 50}, {200, 100}, true, true, 0.0f, true}, false);
+  EXPECT_TRUE(pressed.take().present);
+
+  CursorTracker entering(/*waitForMovement=*/true);
+  entering.observe(Pointer{{0, 0}, {200, 100}, false, false, 0.0f, false}, false);
+  entering.observe(inside(100, 50), false);
+  EXPECT_TRUE(entering.take().present) << "a pointer that comes in from outside is moving";
+
+  CursorTracker script;
+  script.observe(inside(100, 50), false);
+  EXPECT_TRUE(script.take().present);
+}
+
 }  // namespace
 }  // namespace vitrine::host

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fmt/format.h>
+#include <optional>
 
 #include <string>
 #include <string_view>
@@ -222,27 +223,53 @@ inline constexpr glm::vec3 kRose{0.84f, 0.155f, 0.30f};
 inline constexpr glm::vec3 kCrimson{0.30f, 0.0025f, 0.017f};
 inline constexpr std::array<glm::vec3, 4> kPhaseColours{kPristine, kAmber, kRose, kCrimson};
 
-// The crystal shows the state the phase detector reports, so the crystal and its label flip together:
-// from the previous state's colour to the new one's over a flip of kFlipSeconds (a flip, not a fade;
-// softer under reduced motion). The vapour's own concentration sets how dense the colour is
-// (vapourCover): the drained shell is thin tinted glass the chamber shows through, the vapour-filled
-// interior is deep and opaque.
+// The chamber's glow shows the state the phase detector reports, flipping with the label: from the
+// previous state's colour to the new one's over kFlipSeconds (a flip, not a fade; softer under reduced
+// motion). The crystal's own samples are coloured by their concentration (vapourColour), which also
+// sets how dense they are (sampleDensity): the drained shell is thin glass the chamber shows through,
+// the vapour-filled interior deep and opaque.
 inline constexpr float kFlipSeconds = 0.12f;
 inline constexpr float kReducedMotionFlipSeconds = 0.6f;
 inline glm::vec3 flipColour(glm::vec3 from, glm::vec3 to, float age, float seconds) {
   const float t = std::clamp(age / seconds, 0.0f, 1.0f);
   return glm::mix(from, to, t * t * (3.0f - 2.0f * t));
 }
-// How much of a sample is vapour-filled: 0 in the drained shell, 1 past 0.2.
-inline constexpr float kCoverFrom = 0.04f, kCoverTo = 0.20f;
+// Each volume sample takes its colour from its own concentration (the seed's phaseColor), so the vapour
+// is seen moving through the crystal as colour fronts: amber where it has arrived, white where it has
+// not, crimson throughout only once saturated. Three smoothsteps kColourEdge wide, each centred
+// kColourLead under its phase's threshold (0.20 / 0.40 / 0.60 at the defaults, the seed's numbers): a
+// sample flips just before the interior's share of it names the phase.
+inline constexpr float kColourEdge = 0.06f, kColourLead = 0.05f;
 inline float smoothstep(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
 }
-inline float vapourCover(float v) { return smoothstep(kCoverFrom, kCoverTo, v); }
-// The extinction (per world unit) of a volume sample: thin glass plus what the vapour adds.
-inline constexpr float kGlassDensity = 0.9f, kVapourDensity = 9.0f;
-inline float sampleDensity(float v) { return kGlassDensity + kVapourDensity * vapourCover(v); }
+inline glm::vec3 vapourColour(float v, glm::vec3 thresholds) {  // amber, rose, crimson
+  glm::vec3 c = kPristine;
+  for (int k = 0; k < 3; ++k) {
+    const float at = thresholds[k] - kColourLead;
+    c = glm::mix(c, kPhaseColours[size_t(k + 1)], smoothstep(at - 0.5f * kColourEdge, at + 0.5f * kColourEdge, v));
+  }
+  return c;
+}
+
+// Vapour under kCoverFrom changes nothing a viewer sees (white, and under 4 % of the glass's density):
+// the crystal is clear glass while no voxel is past it.
+inline constexpr float kCoverFrom = 0.04f;
+// The extinction (per world unit) of a volume sample: thin glass plus what the vapour adds, growing
+// with the square of its concentration. The vapour fronts are graded shells (white outside, crimson
+// at the heart), and a square keeps the thin outer grades translucent while a saturated heart is
+// opaque, so a crimson heart shows as crimson through its amber rim (a density that was already full
+// at 0.2 hid everything behind the first amber).
+inline constexpr float kGlassDensity = 0.9f, kVapourDensity = 18.0f;
+inline float sampleDensity(float v) { return kGlassDensity + kVapourDensity * v * v; }
+// How strongly a sample's colour counts where it shows (crystal.frag weighs each sample's colour by
+// its share of the path's opacity and this): its concentration squared, as its pigment, so a thin
+// amber rim over a saturated heart tints it little; the glass's own white, kGlassPigment, counts only
+// where there is no vapour. Compositing by opacity alone showed a saturated crystal as a pink mix of
+// the rims in front of its heart.
+inline constexpr float kGlassPigment = 0.01f;
+inline float vapourPigment(float v) { return kGlassPigment + v * v; }
 
 // ------------------------------------------------------------------------------------ the camera
 inline constexpr glm::vec3 kEye{0.0f, 0.2f, 3.0f};
@@ -272,17 +299,65 @@ inline glm::vec2 projectToView(glm::vec3 world, float aspect) {
   return {(glm::dot(d, right) / depth / (h * aspect) + 1.0f) * 0.5f, (1.0f - glm::dot(d, up) / depth / h) * 0.5f};
 }
 
-// Where the cursor puts the vapour: the point of its ray nearest the crystal's centre, and how far
-// that is from the centre (world units). The scene injects while that distance is small enough.
+// The chord of a ray through the octahedron |x| + |y| + |z| <= radius (its 8 half-spaces), as the
+// ray's parameters where it enters and leaves; none where it misses.
+struct Chord {
+  float in, out;
+};
+inline std::optional<Chord> octahedronChord(const Ray& ray, float radius) {
+  Chord chord{-1e30f, 1e30f};
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 n((k & 1) ? 1.0f : -1.0f, (k & 2) ? 1.0f : -1.0f, (k & 4) ? 1.0f : -1.0f);
+    const float towards = glm::dot(n, ray.direction), room = radius - glm::dot(n, ray.origin);
+    if (towards > 1e-6f) chord.out = std::min(chord.out, room / towards);
+    else if (towards < -1e-6f) chord.in = std::max(chord.in, room / towards);
+    else if (room < 0.0f) return std::nullopt;  // parallel to a face, outside it
+  }
+  if (chord.out <= std::max(chord.in, 0.0f)) return std::nullopt;
+  return chord;
+}
+
+// Where the cursor puts the vapour, and whether it does. It injects while its ray meets the crystal
+// grown by `reach` (the silhouette, and a margin around it): the rule follows the footprint, so a
+// vertex plays like the centre. The source sits on the ray's point nearest the centre, pulled in to
+// kSourcePull of that distance: the vapour arrives first on the cursor's side, and there is room
+// around the source for it to reach the far side of the interior. Measured on the CPU reference at
+// 48^3 and 96^3: with the pull at 1 (the source where the ray passes) a vertex never reached the
+// climax; at 0.4, with sourceBoost, it takes 1.25x the centre's time.
+inline constexpr float kSourcePull = 0.4f;
 struct CursorVapour {
   glm::vec3 point;
-  float distance;
+  bool over;
 };
-inline CursorVapour cursorVapour(const Ray& ray) {
+inline CursorVapour cursorVapour(const Ray& ray, float reach) {
   const float t = std::max(0.0f, -glm::dot(ray.origin, ray.direction));
-  const glm::vec3 p = ray.origin + ray.direction * t;
-  return {p, glm::length(p)};
+  return {(ray.origin + ray.direction * t) * kSourcePull, octahedronChord(ray, reach * kCrystalRadius).has_value()};
 }
+
+// The share of a Gaussian source's mass (sigma and centre in the lattice's normalised cube [-1, 1]^3)
+// that falls inside the crystal, where the diffusion injects it: a midpoint sum over a 16^3 grid, close
+// enough for a ratio (within 1 % of a 64^3 sum).
+inline float sourceMassInside(glm::vec3 centre, float sigma) {
+  constexpr int kGrid = 16;
+  float mass = 0.0f;
+  for (int z = 0; z < kGrid; ++z)
+    for (int y = 0; y < kGrid; ++y)
+      for (int x = 0; x < kGrid; ++x) {
+        const glm::vec3 p = voxelCentre(glm::uvec3(x, y, z), kGrid);
+        if (!insideCrystal(p)) continue;
+        const glm::vec3 d = p - centre;
+        mass += std::exp(-glm::dot(d, d) / (2.0f * sigma * sigma));
+      }
+  return mass;
+}
+// How much stronger the source runs away from the heart, so the crystal takes in the same vapour a
+// second wherever the cursor is: the heart's mass inside over this centre's, at most kMaxSourceBoost.
+inline constexpr float kMaxSourceBoost = 2.0f;
+inline float sourceBoost(glm::vec3 centre, float sigma) {
+  return std::clamp(sourceMassInside(glm::vec3(0.0f), sigma) / std::max(sourceMassInside(centre, sigma), 1e-6f), 1.0f,
+                    kMaxSourceBoost);
+}
+
 // World position to voxel coordinates (0..n across the bounding box), clamped into the lattice.
 inline glm::vec3 worldToVoxel(glm::vec3 world, uint32_t n) {
   return glm::clamp((world / kCrystalRadius * 0.5f + 0.5f) * float(n), glm::vec3(0.0f), glm::vec3(float(n)));
@@ -362,6 +437,22 @@ class PhaseDetector {
 // 100 / 100 / 100 / 99 %), where the whole crystal, shell included, stops at 53 / 39 / 28 % past the
 // last three: a hover reaches every phase and the climax, and the hysteresis keeps a margin.
 inline constexpr std::array<Hysteresis, 4> kFractionBands{{{0.45f, 0.25f}, {0.45f, 0.25f}, {0.45f, 0.25f}, {0.5f, 0.25f}}};
+
+// The words fade with the vapour, not on a clock. A phase's name is as present as the lattice stands in
+// the phase: full from its flip, fading as its own signal falls towards leaving (a vent) or as the next
+// phase's rises towards its flip (crimson's next is the climax).
+inline float labelPresence(int phase, const std::array<float, 4>& signal, const std::array<Hysteresis, 4>& bands) {
+  if (phase < 1 || phase > 3) return 0.0f;
+  const size_t own = size_t(phase - 1), next = size_t(phase);
+  return smoothstep(bands[own].off, bands[own].on, signal[own]) *
+         (1.0f - smoothstep(bands[next].off, bands[next].on, signal[next]));
+}
+// CHROMA holds while the climax does, then fades with the vent: from full as the climax ends (the
+// crimson signal then at `crimsonAtVent`) to nothing as the crystal leaves crimson.
+inline float chromaPresence(bool climax, float crimsonSignal, float crimsonAtVent, const Hysteresis& crimsonBand) {
+  if (climax) return 1.0f;
+  return smoothstep(crimsonBand.off, std::max(crimsonAtVent, crimsonBand.off + 1e-3f), crimsonSignal);
+}
 
 // After the climax the crystal blooms for kBloomSeconds with the vapour still flowing, then exhales:
 // no vapour enters until it has vented back to pristine, whether or not the cursor stays.

@@ -134,15 +134,17 @@ class BloomScene final : public Scene {
     if (gain != appliedGain_) audio_.volume(time_, appliedGain_ = gain);
     frame_ = input.frame;
     seed_ = input.seed;
-    // The cursor's ray, unprojected into the crystal's space, is the vapour source near the crystal.
+    // The cursor's ray, unprojected into the crystal's space, is the vapour source over the crystal's
+    // footprint (bloom_math.h: cursorVapour).
     const Ray ray = cameraRay(input.cursor.normalized.x, input.cursor.normalized.y, aspect_);
-    const CursorVapour vapour = cursorVapour(ray);
-    const bool near = input.cursor.present && vapour.distance < settings_.reach * kCrystalRadius;
+    const CursorVapour vapour = cursorVapour(ray, settings_.reach);
+    const bool near = input.cursor.present && vapour.over;
     // Without the cursor, the crystal breathes vapour in at its heart as strongly as `breath` says
     // (live input plays it with the music's level).
     const bool breathing = !near && settings_.breath > 0.0f;
     source_.point = breathing ? glm::vec3(0.0f) : vapour.point;
-    source_.rate = settings_.sourceRate * (breathing ? settings_.breath : input.cursor.dragging ? settings_.dragBoost : 1.0f);
+    source_.rate = settings_.sourceRate * (breathing ? settings_.breath : input.cursor.dragging ? settings_.dragBoost : 1.0f) *
+                   boost(source_.point);
     stepSeconds_ = input.dt;
     if (stepsPending_ < std::max(1, int(std::lround(kMaxSecondsPerFrame / stepSeconds_))))
       ++stepsPending_;
@@ -150,7 +152,8 @@ class BloomScene final : public Scene {
       givenUpSeconds_ += double(stepSeconds_);
 
     // The seed's CPU proxy runs beside the lattice, as a selectable source and for the panel's plot.
-    proxy_ = proxyStep(proxy_, !exhaling_ && ((input.cursor.present && vapour.distance < kCrystalRadius) || breathing), input.dt,
+    const bool overCrystal = input.cursor.present && octahedronChord(ray, kCrystalRadius).has_value();
+    proxy_ = proxyStep(proxy_, !exhaling_ && (overCrystal || breathing), input.dt,
                        {0.20f, settings_.decayRising, settings_.decayVenting});
     if (settings_.phaseSource == PhaseSource::Cpu)
       detect({proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds()), time_);
@@ -199,7 +202,7 @@ class BloomScene final : public Scene {
       while (auto reading = pollStatistics()) carried_.push_back(*reading);
     state(droning_, appliedGain_, builtLattice_, builtSetting_, builtFill_, recorded_, time_, frame_, seed_, source_, stepsPending_,
           givenUpSeconds_, stepSeconds_, proxy_, stats_, detector_, history_, carried_, label_, labelTime_,
-          chromaTime_, ventTime_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_, statsTime_,
+          chromaTime_, crimsonAtVent_, climaxTime_, exhaling_, reducedMotion_, shownPhase_, flipFrom_, flipTime_, statsTime_,
           lastVapour_);
     if (state.isRestoring()) {  // the checkpoint's vapour, over zeros
       redeclareLattices(builtLattice_);  // a carry half done starts again from the restored lattice
@@ -464,7 +467,8 @@ class BloomScene final : public Scene {
     const shader::BloomCrystalPush push{.viewProjection = projection * view,
                                         .eye = kEye,
                                         .time = float(time_),
-                                        .tint = tint(),
+                                        .thresholds = glm::vec3(settings_.thresholdAmber, settings_.thresholdRose,
+                                                                settings_.thresholdCrimson),
                                         .seed = seed_,
                                         .frame = reducedMotion_ ? 0u : uint32_t(frame_),
                                         .samples = uint32_t(tierSamples(settings_.samples, settings_.lattice, builtLattice_)),
@@ -480,43 +484,41 @@ class BloomScene final : public Scene {
   }
 
   // The type is the chemistry's voice, time-locked to the phases: the new phase's name types in above
-  // the crystal in Cormorant SC and fades; at the climax CHROMA blooms over it in deep-charcoal
-  // Fraunces italic, holds four seconds and fades once the crystal has vented.
+  // the crystal in Cormorant SC and fades with the vapour (bloom_math.h: labelPresence); at the climax
+  // CHROMA blooms over it in deep-charcoal Fraunces italic, holds while the climax does and fades with
+  // the vent (chromaPresence).
   void drawType(const FrameContext& frame) {
     std::vector<text::TextDraw> draws;
     const float height = float(frame.target.extent2d().height);
     const double now = time_;
+    const auto [signal, bands] = phaseSignal();
     if (label_ > 0) {
-      const double age = now - labelTime_;
       // It types in (under reduced motion it is simply there, and fades as the others do).
-      const float reveal = reducedMotion_ ? 1.0f : float(std::clamp(age / 0.35, 0.0, 1.0));
-      const float fade = float(std::clamp(1.0 - (age - 0.9) / 1.8, 0.0, 1.0));
-      if (fade > 0.0f) {
+      const float reveal = reducedMotion_ ? 1.0f : float(std::clamp((now - labelTime_) / 0.35, 0.0, 1.0));
+      const float presence = labelPresence(label_, signal, bands);
+      if (presence > 0.0f) {
         text::TextDraw label;
         label.layout = &labels_[size_t(label_)];
         label.position = labelPosition_;
         label.normalized = true;
         label.sizePx = height * 0.075f;
         label.color = glm::vec4(phaseInk(label_), 1.0f);
-        label.opacity = fade;
+        label.opacity = presence;
         label.reveal = reveal;
         draws.push_back(label);
       }
     }
     if (chromaTime_ >= 0.0) {
-      const double age = now - chromaTime_;
-      const double bloom = reducedMotion_ ? 1.0 : std::clamp(age / 0.8, 0.0, 1.0);
-      // Hold four seconds, then fade over two once the crystal has vented (sooner it stays).
-      const double fadeFrom = std::max(chromaTime_ + 4.8, ventTime_);
-      const double fade = detector_.climax() ? 1.0 : std::clamp(1.0 - (now - fadeFrom) / 2.0, 0.0, 1.0);
-      if (fade <= 0.0 && !detector_.climax()) chromaTime_ = -1.0;
+      const double bloom = reducedMotion_ ? 1.0 : std::clamp((now - chromaTime_) / 0.8, 0.0, 1.0);
+      const float presence = chromaPresence(detector_.climax(), signal[2], crimsonAtVent_, bands[2]);
+      if (presence <= 0.0f) chromaTime_ = -1.0;
       text::TextDraw title;
       title.layout = &chroma_;
       title.position = {0.5f, 0.47f};
       title.normalized = true;
       title.sizePx = height * 0.21f * float(0.92 + 0.08 * bloom);
       title.color = glm::vec4(0.030f, 0.028f, 0.027f, 1.0f);  // deep charcoal, linear
-      title.opacity = float(bloom * fade);
+      title.opacity = float(bloom) * presence;
       title.softnessEm = float(0.25 * (1.0 - bloom));  // it blooms: soft, then sharp
       title.glow = {kCrimson * 0.35f * float(1.0 - bloom * 0.6), 0.12f};
       if (title.opacity > 0.0f) draws.push_back(title);
@@ -526,10 +528,26 @@ class BloomScene final : public Scene {
     text_.record(frame, draws);
   }
 
+  // What the phases are read from, with its bands: the interior's shares past each threshold (gpu), or
+  // the seed's proxy V against the thresholds (cpu).
+  std::pair<std::array<float, 4>, std::array<Hysteresis, 4>> phaseSignal() const {
+    if (settings_.phaseSource == PhaseSource::Gpu) return {stats_.fractions(), kFractionBands};
+    return {{proxy_, proxy_, proxy_, proxy_}, proxyBands(thresholds())};
+  }
+
+  // The source's strength away from the heart (bloom_math.h: sourceBoost), kept while it stays put.
+  float boost(glm::vec3 point) {
+    const glm::vec3 centre = point / kCrystalRadius;
+    const float sigma = settings_.sigma / float(kReferenceLattice) * 2.0f;  // in the normalised cube
+    if (centre != boostCentre_ || sigma != boostSigma_)
+      boostCentre_ = centre, boostSigma_ = sigma, boost_ = sourceBoost(centre, sigma);
+    return boost_;
+  }
+
   // The label's ink: the phase's colour, darkened to read on bone white.
   static glm::vec3 phaseInk(int phase) { return kPhaseColours[size_t(phase)] * 0.55f; }
 
-  // The crystal's colour now: flipping (kFlipSeconds; softer under reduced motion) to its state's.
+  // The chamber glow's colour now: flipping (kFlipSeconds; softer under reduced motion) to the state's.
   glm::vec3 tint() const {
     return flipColour(flipFrom_, kPhaseColours[size_t(shownPhase_)], float(time_ - flipTime_),
                       reducedMotion_ ? kReducedMotionFlipSeconds : kFlipSeconds);
@@ -547,8 +565,8 @@ class BloomScene final : public Scene {
       if (event.kind == PhaseEvent::Kind::Up) label_ = int(event.phase), labelTime_ = time_;
       if (event.kind == PhaseEvent::Kind::Vent && !event.fromClimax && event.phase != Phase::Amber)
         label_ = int(event.phase) - 1, labelTime_ = time_;
-      if (event.kind == PhaseEvent::Kind::Climax) chromaTime_ = climaxTime_ = time_, ventTime_ = 1e30;
-      if (event.kind == PhaseEvent::Kind::Vent && event.fromClimax) ventTime_ = time_;
+      if (event.kind == PhaseEvent::Kind::Climax) chromaTime_ = climaxTime_ = time_;
+      if (event.kind == PhaseEvent::Kind::Vent && event.fromClimax) crimsonAtVent_ = signal[2];
     }
     // The crystal flips with its label, in the same frame.
     if (int(detector_.phase()) != shownPhase_) {
@@ -625,13 +643,15 @@ class BloomScene final : public Scene {
   double labelTime_ = 0.0;
   glm::vec2 labelPosition_{0.5f, 0.1f};
   double chromaTime_ = -1.0;  // when CHROMA bloomed; negative: not showing
-  double ventTime_ = 1e30;    // when the climax ended
+  float crimsonAtVent_ = 1.0f;  // the crimson signal when the climax ended: CHROMA fades from there
   double climaxTime_ = 0.0;   // when the last climax began
   bool exhaling_ = false;     // after the bloom: no vapour enters until the crystal is pristine again
   bool reducedMotion_ = false;
   int shownPhase_ = 0;        // the phase whose colour the crystal shows (or flips to)
   glm::vec3 flipFrom_ = kPristine;
   double flipTime_ = -1e9;
+  glm::vec3 boostCentre_{0.0f};
+  float boostSigma_ = 0.0f, boost_ = 1.0f;
 };
 
 }  // namespace

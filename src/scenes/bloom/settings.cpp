@@ -33,9 +33,9 @@ const params::Schema& schema() {
                                 &S::dragBoost, 1.0, 10.0));
     s.add(params::floatParam<S>({"sigma", "source sigma", "Width of the Gaussian source, voxels at 96^3.", "vapour"},
                                 &S::sigma, 2.0, 60.0));
-    s.add(params::floatParam<S>({"reach", "reach", "The cursor's ray injects within this many crystal radii of "
-                                 "the centre.", "vapour"},
-                                &S::reach, 0.5, 3.0));
+    s.add(params::floatParam<S>({"reach", "reach", "The cursor injects while its ray meets the crystal grown by "
+                                 "this factor: its silhouette and a margin around it.", "vapour"},
+                                &S::reach, 1.0, 3.0));
     s.add(params::choiceParam<S>({"phase_source", "phase source", "gpu: the lattice's own statistics; cpu: the "
                                   "write-up's proxy dV/dt = S - D V.", "phases"},
                                  &S::phaseSource, {"gpu", "cpu"}));

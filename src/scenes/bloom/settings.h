@@ -17,7 +17,7 @@ struct Settings {
   float breath = 0.0f;             // without the cursor: a source at the heart, times sourceRate (live input)
   float dragBoost = 2.5f;          // times the source rate while the button is held
   float sigma = 20.0f;             // source width, voxels at 96^3
-  float reach = 1.3f;              // the cursor's ray injects within this many crystal radii of the centre
+  float reach = 1.1f;              // the cursor injects while its ray meets the crystal grown by this
   PhaseSource phaseSource = PhaseSource::Gpu;
   float thresholdAmber = 0.25f;    // concentrations whose crossing is a phase event
   float thresholdRose = 0.45f;
