@@ -223,7 +223,7 @@ TEST(KifsTurn, TheFirstSecondsAreNotMirroredAboutTheFrameAxes) {
   }
 }
 
-TEST(KifsTurn, StartsAtTheOrganicOrientationAndTurnsContinuously) {
+TEST(KifsTurn, TurnsContinuouslyFromItsStart) {
   EXPECT_EQ(kifs::tumbleAngles(0.0, {}), kifs::kTumbleStart);  // and reduced motion holds it
   const glm::vec2 drag{0.5f, -0.25f};
   EXPECT_NEAR(glm::length(kifs::tumbleAngles(0.0, drag) - (kifs::kTumbleStart + drag * kifs::kDragToAngle)), 0.0f,
