@@ -40,7 +40,7 @@ struct NoodlesRasterPush {
   vec2 pixels;             // the target's size (the samples a pixel specialise the pipeline: raster_push.glsl)
   uint segmentsPerStrand;
   uint totalStrands;       // in the whole grid, for colour
-  uint colouring;          // COLOURING_GRADIENT or COLOURING_HSV
+  uint colouring;          // COLOURING_GRADIENT, COLOURING_HSV or COLOURING_GREY
   uint stripe;             // 1: paint the side between frame angles 0 and 45 degrees
   uint firstStrand;        // the chunk's first strand
   uint chunkStrands;       // strands in this chunk

@@ -343,5 +343,36 @@ TEST_F(NoodlesGpu, OccludersFirstDrawTheSamePicture) {
   EXPECT_GT(lit, onePass.pixels.size() / 4 / 5) << "the nest covers a fifth of the frame or more";
 }
 
+// The seed preset draws grey strands (shade.comp's palette.glsl mirrors palette.h's grey ramp): the lit
+// pixels' saturation, their summed (max - min) over their summed max, is 0.07 (the write-up's ambient
+// light is a little blue, and so are the tubes' shaded sides), where the default's strands give 0.49.
+TEST_F(NoodlesGpu, TheSeedPresetDrawsGreyStrands) {
+  const auto saturation = [&](const char* colour) {
+    host::OffscreenConfig config;
+    config.scene = "noodles";
+    config.size = {96, 54};
+    config.startTime = 4.0;
+    config.presets = {"seed"};
+    config.parameters = {{"colour", colour}};
+    host::Offscreen offscreen(device(), config);
+    offscreen.renderFrame();
+    const ImageRgba image = offscreen.readback();
+    double spread = 0.0, brightest = 0.0;
+    size_t lit = 0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+      const float r = image.pixels[i], g = image.pixels[i + 1], b = image.pixels[i + 2];
+      const float hi = std::max(r, std::max(g, b)), lo = std::min(r, std::min(g, b));
+      if (hi < 0.05f) continue;  // the background, and tube edges mostly background
+      spread += hi - lo;
+      brightest += hi;
+      ++lit;
+    }
+    EXPECT_GT(lit, image.pixels.size() / 4 / 20) << colour << ": the nest covers a twentieth of the frame or more";
+    return lit ? spread / brightest : 1.0;
+  };
+  EXPECT_LT(saturation("grey"), 0.1);
+  EXPECT_GT(saturation("gradient"), 0.3);
+}
+
 }  // namespace
 }  // namespace vitrine::noodles

@@ -133,7 +133,7 @@ TEST(Vignette, QuadraticFalloff) {
 // The finished picture's display value along a grid of the shader's rays (stage 9, no jitter), at a
 // march budget: what a tier's budget changes is measured on the rays themselves.
 std::vector<glm::vec3> displayRays(int maxSteps) {
-  const glm::vec2 angles = 3.0f * kifs::kTumbleRate;
+  const glm::vec2 angles = kifs::tumbleAngles(3.0, {});  // the golden frames' moment
   std::vector<glm::vec3> out;
   for (int y = 0; y < 36; ++y)
     for (int x = 0; x < 64; ++x) {
@@ -169,6 +169,69 @@ TEST(KifsTiers, EveryTierMarchesThePictureOfTheFullBudget) {
   }
   // The old low tier's 40 steps cut the core's rays short: stripes across it, a dimmer frame.
   EXPECT_GT(shareMoved(full, displayRays(40)), 0.01);
+}
+
+// The finished frame's luminance at orientation `angles`, 32x18 cells of 4x4 rays each (stage 9, no
+// jitter): averaging the rays keeps the warp's fine filaments from aliasing into noise at this size.
+std::vector<float> frameLuminance(glm::vec2 angles, int wide, int high) {
+  constexpr int kRaysPerSide = 4;
+  std::vector<float> out;
+  for (int y = 0; y < high; ++y)
+    for (int x = 0; x < wide; ++x) {
+      float sum = 0.0f;
+      for (int j = 0; j < kRaysPerSide; ++j)
+        for (int i = 0; i < kRaysPerSide; ++i) {
+          const glm::vec2 pixel{x + (i + 0.5f) / kRaysPerSide, y + (j + 0.5f) / kRaysPerSide};
+          const glm::vec2 uv{(pixel.x - 0.5f * wide) / high, -(pixel.y - 0.5f * high) / high};
+          const glm::vec3 ro = kifs::tumble({0.0f, 0.0f, -4.5f}, 9, angles);
+          const glm::vec3 rd = kifs::tumble(glm::normalize(glm::vec3(uv, 1.0f)), 9, angles);
+          const glm::vec3 glow = kifs::marchGlow(ro, rd, 0.0f, 9, kifs::kTierMarch[int(Tier::High)].marchSteps);
+          const glm::vec3 display = kifs::kNavy + maths::acesNarkowicz(glow * kifs::vignette(uv) * 0.9f);
+          sum += glm::dot(display, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+        }
+      out.push_back(sum / (kRaysPerSide * kRaysPerSide));
+    }
+  return out;
+}
+
+// How far the frame at `angles` is from its mirror image about the frame's vertical axis (x) and its
+// horizontal axis (y): the mean absolute difference in luminance over the mean luminance, 0 when
+// mirrored. Horizontal and vertical stripes through the middle, a starburst, mirror about both.
+glm::vec2 mirrorDifference(glm::vec2 angles) {
+  constexpr int kWide = 32, kHigh = 18;
+  const std::vector<float> l = frameLuminance(angles, kWide, kHigh);
+  auto at = [&](int x, int y) { return l[size_t(y * kWide + x)]; };
+  double total = 0.0, acrossVertical = 0.0, acrossHorizontal = 0.0;
+  for (int y = 0; y < kHigh; ++y)
+    for (int x = 0; x < kWide; ++x) {
+      total += at(x, y);
+      acrossVertical += std::fabs(at(x, y) - at(kWide - 1 - x, y));
+      acrossHorizontal += std::fabs(at(x, y) - at(x, kHigh - 1 - y));
+    }
+  return {float(acrossVertical / total), float(acrossHorizontal / total)};
+}
+
+// The turn's first seconds show the fractal askew. Unturned (the start at angles 0), the frame is a
+// starburst of horizontal and vertical stripes: 0.078 and 0.081 from its mirror images, and 1 s into
+// that turn still 0.13 about the horizontal axis; from kTumbleStart, 0.24 or more at 0, 1 and 3 s.
+TEST(KifsTurn, TheFirstSecondsAreNotMirroredAboutTheFrameAxes) {
+  const glm::vec2 unturned = mirrorDifference({0.0f, 0.0f});
+  EXPECT_LT(std::max(unturned.x, unturned.y), 0.1f) << "the measure no longer sees the axis-aligned starburst";
+  for (const double seconds : {0.0, 1.0, 3.0}) {
+    const glm::vec2 turned = mirrorDifference(kifs::tumbleAngles(seconds, {}));
+    EXPECT_GT(std::min(turned.x, turned.y), 0.2f) << "at " << seconds << " s: " << turned.x << ", " << turned.y;
+  }
+}
+
+TEST(KifsTurn, TurnsContinuouslyFromItsStart) {
+  EXPECT_EQ(kifs::tumbleAngles(0.0, {}), kifs::kTumbleStart);  // and reduced motion holds it
+  const glm::vec2 drag{0.5f, -0.25f};
+  EXPECT_NEAR(glm::length(kifs::tumbleAngles(0.0, drag) - (kifs::kTumbleStart + drag * kifs::kDragToAngle)), 0.0f,
+              1e-6f);
+  for (double t = 0.0; t < 60.0; t += 0.25) {  // no jump anywhere: a frame turns by the rate's 1/60
+    const glm::vec2 step = kifs::tumbleAngles(t + 1.0 / 60.0, {}) - kifs::tumbleAngles(t, {});
+    EXPECT_NEAR(glm::length(step), glm::length(kifs::kTumbleRate) / 60.0f, 1e-4f) << "at " << t << " s";
+  }
 }
 
 TEST(KifsTiers, LowerTiersCostLess) {

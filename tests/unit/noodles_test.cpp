@@ -3,6 +3,7 @@
 // plan, the camera.
 #include "gpu/check.h"
 #include "maths/flow_field.h"
+#include "params/schema_impl.h"
 #include "scenes/noodles/camera.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
@@ -555,6 +556,50 @@ TEST(NoodlesPalette, HsvPrimariesAndGradientEnds) {
   EXPECT_EQ(strandColour(0, 100, Colouring::Gradient), kGradientFirst);
   EXPECT_EQ(strandColour(99, 100, Colouring::Gradient), kGradientLast);
   EXPECT_NE(strandColour(10, 100, Colouring::Hsv), strandColour(60, 100, Colouring::Hsv));
+}
+
+// Saturation as HSV has it: 0 for a grey, 1 for a pure hue.
+float saturation(glm::vec3 c) {
+  const float hi = std::max(c.r, std::max(c.g, c.b)), lo = std::min(c.r, std::min(c.g, c.b));
+  return hi > 0.0f ? (hi - lo) / hi : 0.0f;
+}
+
+TEST(NoodlesPalette, GreyRunsFromGreyToWhiteByIndex) {
+  constexpr uint32_t kStrands = 1024;
+  EXPECT_EQ(strandColour(0, kStrands, Colouring::Grey), glm::vec3(kGreyFirst));
+  EXPECT_EQ(strandColour(kStrands - 1, kStrands, Colouring::Grey), glm::vec3(1.0f));
+  EXPECT_GT(kGreyFirst, 0.05f) << "the first strand must stay visible on the near-black background";
+  float previous = -1.0f;
+  for (uint32_t i = 0; i < kStrands; ++i) {
+    const glm::vec3 c = strandColour(i, kStrands, Colouring::Grey);
+    ASSERT_EQ(saturation(c), 0.0f) << "strand " << i;
+    ASSERT_GT(c.g, previous) << "strand " << i << ": brighter by index";
+    previous = c.g;
+  }
+  EXPECT_GT(saturation(strandColour(0, kStrands, Colouring::Gradient)), 0.5f);  // the default's blue is no grey
+}
+
+// The seed preset is the write-up's final look: grey strands by index, every seed on one flat sheet
+// (the write-up's (x, 0, y): a vertical sheet in this z-up world), whatever was set before it.
+TEST(NoodlesPresets, SeedIsGreyStrandsFromAFlatSheet) {
+  NoodleSettings settings;
+  settings.grid = {8, 8, 8};
+  settings.colour = Colouring::Hsv;
+  ASSERT_EQ(params::applyPreset(params::bindSettings(schema(), settings), "seed"), "");
+  EXPECT_EQ(settings.colour, Colouring::Grey);
+  StrandSettings strands;
+  strands.grid = settings.grid;
+  strands.spacing = settings.spacing;
+  const uint32_t count = settings.grid.x * settings.grid.y * settings.grid.z;
+  ASSERT_GE(count, 256u);
+  glm::vec3 lo{1e9f}, hi{-1e9f};
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::vec3 p = strandStart(strands, i);
+    lo = glm::min(lo, p), hi = glm::max(hi, p);
+  }
+  EXPECT_EQ(lo.y, hi.y) << "every seed on one plane";
+  EXPECT_GT(hi.x - lo.x, 4.0f * settings.spacing);
+  EXPECT_GT(hi.z - lo.z, 4.0f * settings.spacing) << "a sheet, not a row";
 }
 
 // ------------------------------------------------------------------------------ the baked flow

@@ -31,6 +31,11 @@ inline constexpr float kWarpAmp = 0.29f;
 inline constexpr float kCoreRadius = 0.44f;
 inline constexpr float kDragToAngle = 0.35f;
 inline constexpr glm::vec2 kTumbleRate{0.11f, 0.07f};  // radians per second on the xz and xy planes
+// Where the slow turn starts, radians on the xz and xy planes. At (0, 0) the fold's mirror planes face
+// the camera and the first frame is a starburst of horizontal and vertical stripes, mirrored about
+// both axes of the frame; from here the filaments run askew from the first frame on (chosen by eye at
+// 1280x720 over t = 0..3 s).
+inline constexpr glm::vec2 kTumbleStart{0.4f, 0.9f};
 
 // Rotates v by angle a (counter-clockwise).
 inline glm::vec2 rotate(glm::vec2 v, float a) {
@@ -57,6 +62,12 @@ inline glm::vec3 tumble(glm::vec3 p, int step, glm::vec2 angles) {
   const glm::vec2 xy = rotate({p.x, p.y}, angles.y);
   p.x = xy.x, p.y = xy.y;
   return p;
+}
+
+// The orientation at `seconds` into the slow turn, nudged by the accumulated cursor drag. The scene
+// holds `seconds` at 0 under reduced motion: still, at the turn's organic start.
+inline glm::vec2 tumbleAngles(double seconds, glm::vec2 drag) {
+  return kTumbleStart + float(seconds) * kTumbleRate + drag * kDragToAngle;
 }
 
 // The distance estimate the march samples at stage `step`, at a point already in the tumbled frame.

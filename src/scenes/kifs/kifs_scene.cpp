@@ -29,8 +29,7 @@ class KifsScene final : public Scene {
       settings_.dragX += input.cursor.dragDelta.x * 2.0f;
       settings_.dragY += input.cursor.dragDelta.y * 2.0f;
     }
-    const float tumble = input.reducedMotion ? 0.0f : float(input.time);
-    angles_ = tumble * kTumbleRate + glm::vec2(settings_.dragX, settings_.dragY) * kDragToAngle;
+    angles_ = tumbleAngles(input.reducedMotion ? 0.0 : input.time, {settings_.dragX, settings_.dragY});
     reducedMotion_ = input.reducedMotion;
     quality_.update(settings_.tier, settings_.targetMs, input);
   }

@@ -122,9 +122,10 @@ const params::Schema& schema() {
                                  &S::frames, {"up", "rmf"}));
     s.add(params::floatParam<S>({"radius", "radius", "Tube radius, world units.", "tubes", kLogarithmic},
                                 &S::radius, 0.0001, 1.0));
-    s.add(params::choiceParam<S>({"colour", "colour", "Colour along each strand: the write-up's gradient or a "
-                                  "hue per strand.", "tubes"},
-                                 &S::colour, {"gradient", "hsv"}));
+    s.add(params::choiceParam<S>({"colour", "colour", "Colour by strand index: gradient (deep blue to warm "
+                                  "sand), hsv (a pastel hue per strand) or grey (the write-up's final look: "
+                                  "grey to white).", "tubes"},
+                                 &S::colour, {"gradient", "hsv", "grey"}));
     s.add(params::boolParam<S>({"stripe", "stripe", "Paint one side of every tube, so the frames' twist shows.",
                                 "tubes"},
                                &S::stripe));
@@ -146,6 +147,8 @@ const params::Schema& schema() {
     s.preset({"rising", "Strands carried upwards, striped, with rotation-minimising frames.",
               {{"lift", "2"}, {"stripe", "on"}, {"tangent", "normalized"}, {"frames", "rmf"}}});
     s.preset({"smooth", "RK4 along the unit direction.", {{"integrator", "rk4"}, {"tangent", "normalized"}}});
+    s.preset({"seed", "The write-up's final look: strands seeded on one flat sheet, grey to white by index.",
+              {{"grid", "32x1x32"}, {"segments", "128"}, {"colour", "grey"}}});
     addQualityParams<S>(s, "Render scale (every tier draws every strand, at the samples msaa asks for)", 16.0f);
     return s;
   }();
