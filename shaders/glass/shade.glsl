@@ -169,14 +169,11 @@ Shaded shadeFrontHit(vec2 fragCoord, int instance, FrontHit hit) {
       route = walk.route;
       exhausted = exhausted || walk.status == WALK_EXHAUSTED;
       missed = missed || walk.status == WALK_MISSED;
-      // Light still trapped when the budget runs out: the seed shows the silhouette's background (or
-      // the environment's reflection); physical optics lets the rest leave along its last direction.
+      // Light still trapped when the budget runs out leaves along its last direction, split by
+      // wavelength like any exit (the original showed the front reflection there, the same for
+      // every wavelength: grey patches where a diamond's light should still be coloured).
       float trapped = max(1.0 - emitted, 0.0);
-      if (trapped > 0.0) {
-        vec3 fallback = physical() ? sceneAlong(centre + toWorld * walk.p, toWorld * walk.d, 0.0)
-                                   : (shadeOption(GLASS_SHADE_ENVIRONMENT) ? reflection : sceneAlong(rayOrigin, rayDir, 0.0));
-        light += trapped * fallback;
-      }
+      if (trapped > 0.0) light += trapped * sceneAlong(centre + toWorld * walk.p, seen(rayDir, toWorld * walk.d), 0.0);
       transmitted = light;
     } else if (ok) {
       float t;

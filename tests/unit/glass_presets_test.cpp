@@ -48,7 +48,7 @@ TEST(GlassPresets, EachGivesTheSameSettingsWhateverCameBefore) {
   }
 }
 
-TEST(GlassPresets, PhysicalOpticsThenTheDiamondIsTheOriginalsDiamond) {
+TEST(GlassPresets, PhysicalOpticsThenTheDiamondIsThePresetsSeedDiamond) {
   Settings physical;
   ASSERT_EQ(params::applyValues(params::bindSettings(glass::schema(), physical), {{"optics", "physical"}}), "");
   const Settings diamond = withPreset(physical, "diamond");
@@ -57,7 +57,7 @@ TEST(GlassPresets, PhysicalOpticsThenTheDiamondIsTheOriginalsDiamond) {
   EXPECT_EQ(diamond.shape, glass::ShapeKind::Diamond);
   EXPECT_FLOAT_EQ(diamond.ior, 2.418f);
   EXPECT_FLOAT_EQ(diamond.abbe, 55.0f);
-  EXPECT_FLOAT_EQ(diamond.strength, 0.2f);
+  EXPECT_FLOAT_EQ(diamond.strength, glass::kDiamondStrength);
   EXPECT_EQ(diamond.bounces, 6);
   EXPECT_TRUE(diamond.environment);
   EXPECT_EQ(diamond.panorama, glass::kStudioPanorama);

@@ -192,9 +192,11 @@ const params::Schema& schema() {
             {"plate_size", "346"}, {"plate_thickness", "60"}, {"plate_edge", "10.5"}, {"wave_amplitude", "17"},
             {"wave_length", "535"}});
     // The original lit its diamond with a photo studio panorama (exposure 0.75, rotation -1.0995); this
-    // one stands in the program's own studio (studio.h), exposure and rotation chosen by looking.
+    // one stands in the program's own studio (studio.h), exposure and rotation chosen by looking, and
+    // leans its exits not at all (settings.h says why; the original's strength is 0.2).
     preset("diamond", "One round brilliant in a bright photo studio.",
-           {{"shape", "diamond"}, {"n", "16"}, {"ior", "2.418"}, {"abbe", "55"}, {"strength", "0.2"},
+           {{"shape", "diamond"}, {"n", "16"}, {"ior", "2.418"}, {"abbe", "55"},
+            {"strength", params::formatFloat(kDiamondStrength)},
             {"diamond_size", "560"}, {"environment", "on"}, {"panorama", std::string(kStudioPanorama)},
             {"exposure", params::formatFloat(kDiamondExposure)},
             {"env_rotation", params::formatFloat(kDiamondRotation)}},

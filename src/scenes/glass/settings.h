@@ -71,6 +71,11 @@ int tierWavelengths(int wavelengths, Tier tier, bool jitter);
 // The diamond preset's exposure and panorama rotation in the built-in studio, chosen by looking.
 inline constexpr float kDiamondExposure = 1.0f;
 inline constexpr float kDiamondRotation = 0.0f;
+// The diamond preset's seed-optics lean: none. Light the stone returns leaves far from the view ray
+// (through the crown, back toward the camera), and leaning it toward that ray by the original's 0.2
+// looks through the stone at the wall behind it and shrinks the wavelengths' angular split fivefold,
+// the fire. Unleaned, the seed's stone has a diamond's dark-and-white contrast and coloured flashes.
+inline constexpr float kDiamondStrength = 1.0f;
 
 const params::Schema& schema();
 
