@@ -604,7 +604,7 @@ TEST(NeonChains, AFollowerConvergesGeometricallyToAStillHead) {
     ASSERT_NEAR(glm::length(glm::vec3(next[1]) - head), expected, 1e-5f + 1e-5f * expected) << "frame " << n;
     // Straight in: the follower stays on the segment from its start to the head.
     ASSERT_NEAR(glm::length(glm::cross(glm::vec3(next[1]) - head, start - head)), 0.0f, 1e-4f);
-    ASSERT_EQ(next[1].w, 0.75f);  // life copied from the head, for tapering
+    ASSERT_EQ(next[1].w, 0.75f);  // life copied from the head, for the fade
     std::swap(previous, next);
   }
   // The second follower chases the first: it lags, but it gets there too.

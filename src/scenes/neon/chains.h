@@ -1,8 +1,8 @@
 #pragma once
 // One frame of the neon tubes' particle chains, in plain C++: the reference that
 // shaders/neon/chains.comp mirrors line for line. Particles are stored chain-major as vec4s
-// (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
-// tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
+// (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, by which the
+// tube renderer fades the gas. Each frame reads last frame's positions and writes this frame's, so every
 // particle depends only on the previous frame and the order of the invocations cannot matter.
 #include "maths/flow_field.h"
 #include "shaders/neon/chain_push.h"

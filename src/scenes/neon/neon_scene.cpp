@@ -234,8 +234,8 @@ void NeonScene::release(double time, glm::vec3 position, const char* by) {
 }
 
 // A drag draws one tube: its press releases a steered head (a pen) under the cursor, every step of the
-// drag moves the pen there, and its chain follows the path; the button's release lets the tube go to
-// swim and fade like the others.
+// drag moves the pen there, and its chain records the path; the button's release lets the tube go: it
+// keeps the stroke's shape where it was drawn and fades.
 void NeonScene::handleCursor(const FrameInput& input) {
   if (!input.cursor.dragging) {
     if (std::exchange(drawing_, false)) engine_->endSteer();

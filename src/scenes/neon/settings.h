@@ -49,7 +49,7 @@ const params::Schema& schema();
 
 // What a quality tier costs beside its render scale: the chains the engine releases into (high: as set;
 // medium 3/4; low 1/2, never under the parameter's 16), which the chains and tubes passes step and
-// draw. The default's autopilot keeps ~130 alive, under every tier's; a dense field thins out, each
+// draw. The default's autopilot keeps about six alive, under every tier's; a dense field thins out, each
 // tube the same, the bloom's exposure following the count (tube_light.h).
 int tierChains(int chains, Tier tier);
 // The render scale: quality.h's, but 0.4 rather than 0.5 at the low tier. There, on a CPU device, the
