@@ -27,17 +27,25 @@ void main() {
   uint k = index % pc.particlesPerChain;
   precise vec3 position = previous[index].xyz;
   uint state = head.state;
+  const bool steered = (head.flags & NEON_HEAD_STEERED) != 0u, drawn = (head.flags & NEON_HEAD_DRAWN) != 0u;
   if (state == NEON_CHAIN_INITIALISING) {
     position = head.origin;
-  } else if (state == NEON_CHAIN_ALIVE) {
-    if (k == 0u && (head.flags & NEON_HEAD_STEERED) != 0u) {
-      position = head.origin;  // a pen: where the cursor is
-    } else if (k == 0u) {
+  } else if (state == NEON_CHAIN_ALIVE && steered) {
+    // A pen records its path: a point every 0.6 m, the chain shifting one place down (chains.h).
+    precise vec3 gap = head.origin - previous[index - k + 1u].xyz;
+    precise float squared = gap.x * gap.x + gap.y * gap.y + gap.z * gap.z;
+    if (k == 0u || (k == 1u && squared >= NEON_PEN_SPACING_SQUARED)) {
+      position = head.origin;  // where the cursor is
+    } else if (squared >= NEON_PEN_SPACING_SQUARED) {
+      position = previous[index - 1u].xyz;
+    }
+  } else if (state == NEON_CHAIN_ALIVE && !drawn) {
+    if (k == 0u) {
       FieldSettings field = FieldSettings(FIELD_CURL, pc.noiseScale, pc.offsetY, pc.offsetZ, 0.0);
       position += (flowVelocity(position, field) * pc.fieldStrength + head.launch) * pc.dt;
     } else {
       position += (previous[index - 1u].xyz - position) * pc.lerp;
     }
-  }
+  }  // a drawn chain let go stays as drawn while it fades
   next[index] = vec4(position, head.life);
 }

@@ -1,9 +1,9 @@
 #version 460
 // The facade, ray cast in compute (full-screen work, which the H100 does far faster in compute than in
 // its two graphics TPCs): each pixel's ray meets the nearest of the boxes, whose light comes from the
-// lighting texture through UVs projected along the dominant normal axis. Writes the HDR colour and the
-// reverse-Z depth (near / distance along the view; 0 for the sky) that the tubes and the depth of field
-// read.
+// lighting texture through UVs projected along the dominant normal axis (the ground has its own).
+// Writes the HDR colour and the reverse-Z depth (near / distance along the view; 0 for the sky) that
+// the tubes and the depth of field read.
 #extension GL_GOOGLE_include_directive : require
 #include "neon/camera.glsl"
 #include "neon/facade_blocks.h"
@@ -41,7 +41,10 @@ void main() {
     return;
   }
   const vec3 hit = F.eye + dir * nearest;
-  const vec3 lit = textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb;
+  // The walls from the lighting texture; the ground (up-facing, at the foot) its own wet surface.
+  const float ground = step(0.5, normal.y) * step(hit.y, kGroundTop);
+  const vec3 wall = textureLod(lighting, facadeUv(hit, normal, vec2(0.0, 1.0)), 0.0).rgb;
+  const vec3 lit = mix(wall, groundLight(hit), ground);
   imageStore(colour, p, vec4(lit * pc.facadeBrightness, 1.0));
   imageStore(depth, p, vec4(F.near / (nearest * dot(dir, F.forward))));
 }

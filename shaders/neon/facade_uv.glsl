@@ -26,4 +26,15 @@ vec2 facadeUv(vec3 worldPos, vec3 normal, vec2 range) {
   return uv;
 }
 
+// The ground's own light: wet asphalt, the storefront's warm spill falling off away from the foot
+// (groundLight in facade.h). Faces facing up below kGroundTop are ground.
+const float kGroundTop = 0.2;
+vec3 groundLight(vec3 worldPos) {
+  const vec3 sky = vec3(0.010, 0.012, 0.022);
+  const vec3 spill = vec3(0.26, 0.13, 0.05);
+  const float across = worldPos.x / 8.0;
+  const float away = max(worldPos.z, 0.0) / 3.0;  // metres in front of the facade, in falloffs
+  return sky + spill * exp(-across * across - away);
+}
+
 #endif

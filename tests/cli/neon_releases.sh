@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # neon_releases.sh VITRINE OUTDIR: each scripted drag draws one tube, one `release` event where it
 # starts (on the release plane, or above the floor for a drag over the ground), and the autopilot
-# stays quiet while the cursor plays and for autopilot_idle seconds after.
+# stays quiet while the cursor plays and for autopilot_idle seconds after (at 20 heads a second, so that
+# it releases again within the run).
 set -eu
 vitrine=$1; out=$2; script=$(dirname "$0")/../input/neon_drag.txt
 mkdir -p "$out"; rm -f "$out/events.jsonl"
-"$vitrine" --headless --scene neon --size 96x54 --frames 130 --set chains=256 --set autopilot_idle=1 --validate \
+"$vitrine" --headless --scene neon --size 96x54 --frames 130 --set chains=256 --set autopilot_idle=1 \
+  --set autopilot_rate=20 --validate \
   --input "$script" --events "$out/events.jsonl" --out "$out/neon.exr"
 python3 - "$out/events.jsonl" <<'PY'
 import json, sys

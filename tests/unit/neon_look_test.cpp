@@ -271,6 +271,27 @@ glm::vec2 onScreen(glm::vec3 world, float aspect) {
 
 // A drag over the ground (the lower fifth of the frame) used to release tubes under the floor, where
 // the release plane runs below it; now it draws above the floor, under the cursor.
+// The ground is its own wet surface, not the facade's texture printed on it: dark, warm near the
+// storefront and falling off smoothly away from it (no window grid), and darker than the wall's foot.
+TEST(Ground, DarkAndSmoothWithTheStorefrontsSpill) {
+  const auto luminance = [](glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; };
+  float previous = std::numeric_limits<float>::max();
+  for (float z = 0.0f; z <= 40.0f; z += 0.25f) {  // out from the foot toward the camera
+    const float l = luminance(groundLight({0.0f, 0.0f, z}));
+    EXPECT_LE(l, previous) << z;
+    previous = l;
+  }
+  for (float x = 0.0f; x <= 40.0f; x += 0.25f)  // along the foot, out to the slab's edge
+    EXPECT_LE(luminance(groundLight({x + 0.25f, 0.0f, 1.0f})), luminance(groundLight({x, 0.0f, 1.0f}))) << x;
+  const glm::vec3 foot = groundLight({0.0f, 0.0f, 0.0f});
+  EXPECT_GT(foot.r, 2.0f * foot.b) << "the storefront's light is warm";
+  EXPECT_LT(luminance(groundLight({0.0f, 0.0f, 20.0f})), 0.02f) << "away from the building the ground is dark";
+  const auto texels = facadeLightingTexture(256);
+  const glm::vec3 front{0.0f, 0.0f, 1.0f};
+  const float wall = texelLuminance(texels, 256, facadeUv({0.0f, 0.3f, 0.0f}, front, {0.0f, 1.0f})) / 255.0f;
+  EXPECT_LT(luminance(foot), std::pow(wall, 2.2f)) << "the ground is darker than the wall's foot (about linear)";
+}
+
 TEST(NeonRelease, EveryRowOfTheFrameReleasesAboveTheGround) {
   const float aspect = 16.0f / 9.0f;
   for (float y = 0.0f; y <= 1.0f; y += 0.02f)

@@ -56,7 +56,7 @@ TEST(NeonHeadState, ZeroIsAFreeSlot) {
 TEST(NeonEngine, AReleaseCarriesItsLaunchVelocity) {
   ParticleEngine engine({4, 1.0f}, EngineMode::LockStep);
   engine.release({1.0f, 2.0f, 3.0f});
-  engine.release({0.0f, 0.0f, 0.0f}, true);  // a pen too: it swims off with its launch when let go
+  engine.release({0.0f, 0.0f, 0.0f}, true);  // a pen too, though its tube stays as drawn
   engine.step(0.25f);
   std::set<std::pair<float, float>> directions;
   for (const HeadState& h : engine.latest().heads) {
@@ -64,9 +64,15 @@ TEST(NeonEngine, AReleaseCarriesItsLaunchVelocity) {
       EXPECT_EQ(h.launch, glm::vec3(0.0f));
       continue;
     }
-    EXPECT_EQ(h.launch, launchVelocity(h.serial)) << "serial " << h.serial;
-    EXPECT_NEAR(glm::length(h.launch), kLaunchSpeed, 1e-6f);
+    EXPECT_EQ(h.launch, launchVelocity(h.serial, h.origin)) << "serial " << h.serial;
+    EXPECT_NEAR(glm::length(h.launch), kLaunchSpeed, 1e-5f);
     EXPECT_EQ(h.launch.z, 0.0f) << "in the facade's plane";
+    // Across the facade: toward a point of it, within the aims' box round its middle.
+    const glm::vec2 at = glm::vec2(h.origin), direction = glm::vec2(h.launch) / kLaunchSpeed;
+    const float along = glm::dot(glm::vec2(kLaunchTowardX, kLaunchTowardY) - at, direction);
+    const glm::vec2 closest = at + direction * along;  // the point of its line nearest the middle
+    EXPECT_LE(std::abs(closest.x - kLaunchTowardX), kLaunchHalfWidth + 1e-3f) << "serial " << h.serial;
+    EXPECT_LE(std::abs(closest.y - kLaunchTowardY), std::hypot(kLaunchHalfWidth, kLaunchHalfHeight)) << h.serial;
     directions.insert({h.launch.x, h.launch.y});
   }
   EXPECT_EQ(directions.size(), 2u) << "each tube its own direction";
@@ -581,23 +587,24 @@ HeadState headIn(ChainState state, glm::vec3 origin, float life, uint32_t flags 
           .serial = 1u,
           .steps = 0u,
           .flags = flags,
-          .launch = launchVelocity(1u)};
+          .launch = launchVelocity(1u, origin)};
 }
 
 TEST(NeonChains, AFollowerConvergesGeometricallyToAStillHead) {
   constexpr uint32_t P = 3;
   const glm::vec3 head{1.0f, 2.0f, 3.0f}, start{5.0f, -1.0f, 0.5f};
-  const std::vector<HeadState> heads{headIn(ChainState::Alive, head, 0.75f, kHeadSteered)};  // a pen, held still
+  std::vector<HeadState> heads{headIn(ChainState::Alive, head, 0.75f)};
+  heads[0].launch = glm::vec3(0.0f);  // no launch, in a still field: the head stays
   std::vector<glm::vec4> previous{glm::vec4(head, 0.0f), glm::vec4(start, 0.0f), glm::vec4(start, 0.0f)}, next(P);
   const float lerp = 0.2f;
   for (int n = 1; n <= 30; ++n) {
-    stepChains(heads, P, previous, next, stillField(lerp));  // a steered head stays where its pen is
+    stepChains(heads, P, previous, next, stillField(lerp));
     ASSERT_EQ(glm::vec3(next[0]), head);
     const float expected = std::pow(1.0f - lerp, float(n)) * glm::length(start - head);
     ASSERT_NEAR(glm::length(glm::vec3(next[1]) - head), expected, 1e-5f + 1e-5f * expected) << "frame " << n;
     // Straight in: the follower stays on the segment from its start to the head.
     ASSERT_NEAR(glm::length(glm::cross(glm::vec3(next[1]) - head, start - head)), 0.0f, 1e-4f);
-    ASSERT_EQ(next[1].w, 0.75f);  // life copied from the head, for tapering
+    ASSERT_EQ(next[1].w, 0.75f);  // life copied from the head, for the fade
     std::swap(previous, next);
   }
   // The second follower chases the first: it lags, but it gets there too.
@@ -671,8 +678,8 @@ TEST(NeonChains, AFreeHeadMovesInAStillFieldAndASteeredOneStaysOnItsPen) {
   EXPECT_NEAR(glm::length(glm::vec3(previous[0]) - origin), kLaunchSpeed, 1e-4f);
   EXPECT_GT(glm::length(glm::vec3(previous[0]) - glm::vec3(previous[P - 1])), 0.15f) << "a tube with length";
   EXPECT_EQ(glm::vec3(previous[P]), origin);
-  EXPECT_EQ(launchVelocity(7u), launchVelocity(7u));
-  EXPECT_NE(launchVelocity(7u), launchVelocity(8u)) << "each tube its own direction";
+  EXPECT_EQ(launchVelocity(7u, origin), launchVelocity(7u, origin));
+  EXPECT_NE(launchVelocity(7u, origin), launchVelocity(8u, origin)) << "each tube its own direction";
 }
 
 // The follower's share per step scales with the step, so a followers' lag, dt / share, is the same
@@ -685,17 +692,18 @@ TEST(NeonChains, FollowerLerpKeepsTheLagInSeconds) {
   EXPECT_EQ(followerLerp(0.3f, 0.0f), 0.0f);  // no time, no motion
 }
 
-// A tube drawn by a pen that moves at a steady speed, simulated for the same two seconds in 60 Hz
-// steps (the gallery) and in 240 Hz steps (`record --fps 30 --spp 8`): the same length within 10 %
-// (with a share of the gap per step instead of per second, the 240 Hz tube would be about 4x shorter).
-float penTubeLength(float dt) {
+// A free head launched at a steady 3 m/s in a still field, simulated for the same two seconds in 60 Hz
+// steps (the gallery) and in 240 Hz steps (`record --fps 30 --spp 8`): its tube has the same length
+// within 10 % (with a share of the gap per step instead of per second, the 240 Hz tube would be about
+// 4x shorter).
+float freeTubeLength(float dt) {
   constexpr uint32_t P = 32;
-  std::vector<HeadState> heads{headIn(ChainState::Alive, {}, 1.0f, kHeadSteered)};
+  std::vector<HeadState> heads{headIn(ChainState::Alive, {0.0f, 5.0f, 4.0f}, 1.0f)};
+  heads[0].launch = glm::vec3(3.0f, 0.0f, 0.0f);
   std::vector<glm::vec4> previous(P, glm::vec4(0.0f, 5.0f, 4.0f, 1.0f)), next(P);
   const int steps = int(std::lround(2.0f / dt));
   for (int n = 1; n <= steps; ++n) {
-    heads[0].origin = glm::vec3(3.0f * float(n) * dt, 5.0f, 4.0f);  // 3 m/s to the right
-    stepChains(heads, P, previous, next, {dt, followerLerp(0.3f, dt), 1.6f, 0.22f, 0.0});
+    stepChains(heads, P, previous, next, {dt, followerLerp(0.3f, dt), 0.0f, 0.22f, 0.0});
     std::swap(previous, next);
   }
   float length = 0.0f;
@@ -704,7 +712,7 @@ float penTubeLength(float dt) {
 }
 
 TEST(NeonChains, TubeLengthIsTheSameAtTheGallerysStepAndARecordingsStep) {
-  const float gallery = penTubeLength(1.0f / 60.0f), recording = penTubeLength(1.0f / 240.0f);
+  const float gallery = freeTubeLength(1.0f / 60.0f), recording = freeTubeLength(1.0f / 240.0f);
   EXPECT_GT(gallery, 1.0f) << "a tube metres long";
   EXPECT_NEAR(recording / gallery, 1.0f, 0.1f) << gallery << " m at 60 Hz steps, " << recording << " m at 240 Hz";
 }
@@ -730,7 +738,14 @@ TEST(NeonEngine, APenIsOneHeadThatFollowsSteerAndKeepsItsLifeUntilLetGo) {
   const Snapshot& free = engine.latest();
   EXPECT_FALSE(steered(free.heads[0]));
   EXPECT_EQ(free.heads[0].origin, glm::vec3(10.0f, 2.0f, 3.0f));
-  EXPECT_NEAR(free.heads[0].life, 0.95f, 1e-6f) << "let go, it fades";
+  EXPECT_NEAR(free.heads[0].life, kFadeLife * (1.0f - 0.1f / kDrawnFadeSeconds), 1e-6f)
+      << "let go, it fades from full brightness over kDrawnFadeSeconds";
+  EXPECT_NE(free.heads[0].flags & kHeadDrawn, 0u) << "and keeps its drawn shape";
+  for (int i = 0; i < 18; ++i) engine.step(0.1f);
+  EXPECT_EQ(chainState(engine.latest().heads[0]), ChainState::Alive) << "fading for kDrawnFadeSeconds";
+  engine.step(0.1f);
+  engine.step(0.1f);
+  EXPECT_EQ(chainState(engine.latest().heads[0]), ChainState::Inactive) << "gone after kDrawnFadeSeconds";
 }
 
 TEST(NeonEngine, AFullEngineNeverReplacesThePen) {
@@ -745,6 +760,41 @@ TEST(NeonEngine, AFullEngineNeverReplacesThePen) {
   EXPECT_TRUE(steered(s.heads[0]));
   EXPECT_EQ(s.heads[0].serial, 1u);
   EXPECT_EQ(s.releases, 6u);
+}
+
+// A pen's chain records its path: the cursor moving round a quarter circle in small steps leaves a
+// point every 0.6 m on the circle, the oldest at the start; let go, the drawn chain stays as it is.
+TEST(NeonChains, APenRecordsItsPathAndADrawnChainKeepsIt) {
+  constexpr uint32_t P = 16;
+  constexpr float kRadius = 5.0f;
+  const glm::vec3 centre{0.0f, 8.0f, 4.0f};
+  const auto onCircle = [&](float angle) {
+    return centre + kRadius * glm::vec3(std::cos(angle), std::sin(angle), 0.0f);
+  };
+  std::vector<HeadState> heads{headIn(ChainState::Alive, onCircle(0.0f), 1.0f, kHeadSteered | kHeadDrawn)};
+  std::vector<glm::vec4> previous(P, glm::vec4(onCircle(0.0f), 1.0f)), next(P);
+  const ChainParams p{1.0f / 60.0f, 0.3f, 1.6f, 0.22f, 0.0};
+  constexpr int kSteps = 200;  // 0.05 m a step: 10 m of path, more than the 15 followers hold
+  for (int n = 1; n <= kSteps; ++n) {
+    heads[0].origin = onCircle(0.01f * float(n));
+    stepChains(heads, P, previous, next, p);
+    std::swap(previous, next);
+  }
+  EXPECT_EQ(glm::vec3(previous[0]), onCircle(0.01f * kSteps)) << "the head is the pen";
+  for (uint32_t k = 1; k < P; ++k) {
+    EXPECT_NEAR(glm::length(glm::vec3(previous[k]) - centre), kRadius, 1e-3f) << "on the path " << k;
+    const float gap = glm::length(glm::vec3(previous[k]) - glm::vec3(previous[k - 1]));
+    // A point where the pen first was 0.6 m from the last (in 0.05 m steps, up to 0.65 m from it).
+    EXPECT_GE(gap, k == 1 ? 0.0f : 0.6f - 1e-4f) << k;
+    EXPECT_LE(gap, 0.65f + 1e-4f) << k;
+  }
+  heads[0].flags = kHeadDrawn;  // let go
+  const std::vector<glm::vec4> drawnChain = previous;
+  for (int n = 0; n < 30; ++n) {
+    stepChains(heads, P, previous, next, p);
+    std::swap(previous, next);
+  }
+  for (uint32_t k = 0; k < P; ++k) EXPECT_EQ(glm::vec3(previous[k]), glm::vec3(drawnChain[k])) << k;
 }
 
 TEST(NeonChains, WorkgroupsCoverEveryParticleWithinDeviceLimits) {

@@ -1,8 +1,8 @@
 #pragma once
 // One frame of the neon tubes' particle chains, in plain C++: the reference that
 // shaders/neon/chains.comp mirrors line for line. Particles are stored chain-major as vec4s
-// (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, which the
-// tube renderer tapers by. Each frame reads last frame's positions and writes this frame's, so every
+// (index = chain * particlesPerChain + k, k = 0 the head): xyz position, w the head's life, by which the
+// tube renderer fades the gas. Each frame reads last frame's positions and writes this frame's, so every
 // particle depends only on the previous frame and the order of the invocations cannot matter.
 #include "maths/flow_field.h"
 #include "shaders/neon/chain_push.h"
@@ -42,6 +42,10 @@ inline maths::FieldSettings chainField(const ChainParams& p) {
   return maths::fieldAtTime(maths::FieldKind::Curl, p.fieldScale, 0.0f, p.noiseTime);
 }
 
+// |v|^2 as three products and two sums in this order, unfused: chains.comp computes the same, so both
+// sides decide a pen's step alike.
+inline float squaredLength(glm::vec3 v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
+
 // Particle `index`'s position next frame. `field` is chainField(p), hoisted out of the loop.
 inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t particlesPerChain,
                                std::span<const glm::vec4> previous, uint32_t index, const maths::FieldSettings& field,
@@ -52,14 +56,24 @@ inline glm::vec4 chainParticle(std::span<const HeadState> heads, uint32_t partic
   const ChainState state = chainState(head);
   if (state == ChainState::Initialising) {
     position = head.origin;  // the whole chain collapses onto the release point
-  } else if (state == ChainState::Alive) {
-    if (k == 0 && steered(head))  // a pen: where the cursor is
+  } else if (state == ChainState::Alive && steered(head)) {
+    // A pen records its path: the head is where the cursor is, and once it is 0.6 m
+    // (kPenSpacingSquared) from the newest recorded point (particle 1) every point moves one place
+    // down the chain and particle 1 takes the pen's position. Every particle of the chain makes the
+    // same decision.
+    const glm::vec3 gap = head.origin - glm::vec3(previous[index - k + 1]);
+    const bool record = squaredLength(gap) >= kPenSpacingSquared;
+    if (k == 0 || (k == 1 && record))
       position = head.origin;
-    else if (k == 0)
+    else if (record)
+      position = glm::vec3(previous[index - 1]);
+  } else if (state == ChainState::Alive && !drawn(head)) {
+    if (k == 0)
       position += (maths::flowVelocity(position, field) * p.fieldStrength + head.launch) * p.dt;
     else  // chase where the particle ahead was last step
       position += (glm::vec3(previous[index - 1]) - position) * p.lerp;
   }
+  // A drawn chain let go stays as it was drawn while it fades.
   // Inactive: stays put, so a recycled tube does not jump before it fades (its life is 0).
   return {position, head.life};
 }

@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -62,6 +64,21 @@ inline glm::vec2 facadeUv(glm::vec3 worldPos, glm::vec3 normal, glm::vec2 range)
   glm::vec2 uv = glm::mix(glm::vec2(s.z, s.y), glm::vec2(s.x, s.z), glm::min(whenGt(a.y, a.x), whenGt(a.y, a.z)));
   uv = glm::mix(uv, glm::vec2(s.x, s.y), glm::min(whenGt(a.z, a.x), whenGt(a.z, a.y)));
   return uv;
+}
+
+// The ground's own light (linear RGB, before the facade's brightness scale), at a point of the ground
+// or the pavement (the up-facing faces under kGroundTop): wet asphalt under a night sky, dark and a
+// little blue, with the storefront's warm light spilling a few metres out from the building's foot.
+// Smooth everywhere: the ground is not projected through the facade's lighting texture, whose windows
+// it would print as a grid; what it shows besides this is the composite's mirror reflection.
+// Mirrored by groundLight in shaders/neon/facade_uv.glsl.
+inline constexpr float kGroundTop = 0.2f;  // up-facing faces below this are ground (the slab, the pavement)
+inline glm::vec3 groundLight(glm::vec3 worldPos) {
+  const glm::vec3 sky{0.010f, 0.012f, 0.022f};
+  const glm::vec3 spill{0.26f, 0.13f, 0.05f};
+  const float across = worldPos.x / 8.0f;
+  const float away = std::max(worldPos.z, 0.0f) / 3.0f;  // metres in front of the facade, in falloffs
+  return sky + spill * std::exp(-across * across - away);
 }
 
 }  // namespace vitrine::neon

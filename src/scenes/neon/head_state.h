@@ -28,23 +28,42 @@ enum class ChainState : uint32_t {
 inline constexpr uint32_t kInitialisingSteps = 2;
 
 // Bits of HeadState::flags. A steered head is a pen: the GPU puts it where the CPU says (origin, moved
-// by every steer) instead of letting it swim, so the chain behind it draws the pen's path as one tube.
+// by every steer) instead of letting it swim, and its chain records the pen's path, a point every
+// 0.6 m (kPenSpacingSquared). A drawn chain is a pen's, while it draws and after: let go, it keeps the shape
+// of the whole stroke where it was drawn and fades over kDrawnFadeSeconds.
 inline constexpr uint32_t kHeadSteered = shader::NEON_HEAD_STEERED;
+inline constexpr uint32_t kHeadDrawn = shader::NEON_HEAD_DRAWN;
+inline const float kPenSpacingSquared = shader::NEON_PEN_SPACING_SQUARED;  // (0.6 m)^2
+inline constexpr float kDrawnFadeSeconds = 2.0f;
+// Below this life a tube's gas dims, smoothly to nothing at 0 (the tube shader's fade); a drawn tube
+// let go starts here, so it fades from full brightness over kDrawnFadeSeconds.
+inline const float kFadeLife = shader::NEON_FADE_LIFE;
 
 // A free head leaves its release point at this speed, m/s, in a direction of its own on top of the
-// flow: tubes have length even in a still field (field_strength 0).
-inline constexpr float kLaunchSpeed = 0.6f;
+// flow: the tube sweeps, and it has length even in a still field (field_strength 0).
+inline constexpr float kLaunchSpeed = 3.5f;
+// Heads are launched across the facade: each toward a point of its own on the release plane, within
+// kLaunchHalfWidth and kLaunchHalfHeight of the facade's middle (x, y), so a tube released near an edge
+// sweeps over the building rather than off the frame, and the tubes cross all over it, not in one spot.
+inline constexpr float kLaunchTowardX = 0.0f, kLaunchTowardY = 9.0f;
+inline constexpr float kLaunchHalfWidth = 14.0f, kLaunchHalfHeight = 7.0f;
 
-// The launch direction: in the facade's plane (the tube reads side-on), from the release serial.
+// The launch velocity: in the facade's plane (the tube reads side-on), its aim from the release serial.
 // Computed once, here on the CPU, and handed to the GPU in HeadState::launch: a GPU's own sin and cos
 // differ from the C library's in the last bits, and the chain pass is to integrate exactly what
 // its C++ reference does, on every driver (see shaders/neon/chains.comp).
-inline glm::vec3 launchVelocity(uint32_t serial) {
-  const float angle = maths::hash01(glm::uvec3(serial, 0x6e656f6eu, 7u)) * 6.2831853f;
+inline glm::vec3 launchVelocity(uint32_t serial, glm::vec3 origin) {
+  const auto spread = [serial](uint32_t axis) {  // -1 .. 1
+    return maths::hash01(glm::uvec3(serial, 0x6e656f6eu, axis)) * 2.0f - 1.0f;
+  };
+  const float aimX = kLaunchTowardX + spread(7u) * kLaunchHalfWidth;
+  const float aimY = kLaunchTowardY + spread(8u) * kLaunchHalfHeight;
+  const float angle = std::atan2(aimY - origin.y, aimX - origin.x);
   return glm::vec3(std::cos(angle), std::sin(angle), 0.0f) * kLaunchSpeed;
 }
 
 inline ChainState chainState(const HeadState& head) { return ChainState(head.state); }
 inline bool steered(const HeadState& head) { return (head.flags & kHeadSteered) != 0u; }
+inline bool drawn(const HeadState& head) { return (head.flags & kHeadDrawn) != 0u; }
 
 }  // namespace vitrine::neon

@@ -55,12 +55,15 @@ template <typename T> std::vector<std::byte> bytesOf(const std::vector<T>& value
   return {bytes.begin(), bytes.end()};
 }
 
-// The heads, in device memory (every particle of a chain reads its head), refreshed through the frame's
-// upload ring whenever the chains move.
+// The heads, in device memory (every particle of a chain reads its head, every tube its release's
+// colour), refreshed through the frame's upload ring whenever the chains move; all inactive at first.
 gpu::BufferDecl headsDecl(int chains) {
+  const std::vector<HeadState> inactive(size_t(chains), HeadState{});
   return {.name = "neon heads",
-          .size = gpu::BufferSize::absolute(VkDeviceSize(chains) * sizeof(HeadState)),
-          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT};
+          .size = gpu::BufferSize::absolute(inactive.size() * sizeof(HeadState)),
+          .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+          .initial = bytesOf(inactive),
+          .initialUse = gpu::use::ComputeReadBuffer};
 }
 
 // Every particle's position and life, chain-major: a pair, as each chain step reads last step's and
@@ -231,8 +234,8 @@ void NeonScene::release(double time, glm::vec3 position, const char* by) {
 }
 
 // A drag draws one tube: its press releases a steered head (a pen) under the cursor, every step of the
-// drag moves the pen there, and its chain follows the path; the button's release lets the tube go to
-// swim and fade like the others.
+// drag moves the pen there, and its chain records the path; the button's release lets the tube go: it
+// keeps the stroke's shape where it was drawn and fades.
 void NeonScene::handleCursor(const FrameInput& input) {
   if (!input.cursor.dragging) {
     if (std::exchange(drawing_, false)) engine_->endSteer();
@@ -252,20 +255,18 @@ void NeonScene::handleCursor(const FrameInput& input) {
 }
 
 // When nobody plays, pens wander slow Lissajous paths over the release plane and release heads as
-// they go, each a little off the pen's path; the first drag takes over at once. Three pens for the
-// default rate, more for a faster one (one for every 10 heads a second, up to 48), so a dense
-// autopilot spreads its tubes over the facade instead of piling thousands onto three points.
+// they go, taking turns, each release a little off its pen's path; the first drag takes over at once.
+// Three pens for the default rate, more for a faster one (one for every 1.5 heads a second, up to 48),
+// so a dense autopilot spreads its tubes over the facade instead of piling them onto three points.
 void NeonScene::autopilot(const FrameInput& input) {
   if (input.time - lastInput_ < settings_.autopilotIdle) {
     autopilotNext_ = input.time;
     return;
   }
   const float rate = settings_.autopilotRate * (reducedMotion_ ? kReducedMotionAutopilot : 1.0f);
-  const uint32_t pens = std::clamp(uint32_t(std::lround(rate / 10.0f)), kAutopilotPens, 48u);
-  while (autopilotNext_ <= input.time) {
-    for (uint32_t pen = 0; pen < pens; ++pen) release(autopilotNext_, penPosition(autopilotNext_, pen), "autopilot");
-    autopilotNext_ += double(pens) / double(rate);
-  }
+  const uint32_t pens = std::clamp(uint32_t(std::lround(rate / 1.5f)), kAutopilotPens, 48u);
+  for (; autopilotNext_ <= input.time; autopilotNext_ += 1.0 / double(rate))  // the pens take turns
+    release(autopilotNext_, penPosition(autopilotNext_, uint32_t(releases_ % pens)), "autopilot");
 }
 
 // Where pen `pen` is at time t, a little off its Lissajous path (the jitter changes with every release).
@@ -401,7 +402,9 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
   {
     const auto pass = frame.pass("neon tubes");
     gpu::Buffer& positions = frame.buffer(particles_);
+    gpu::Buffer& heads = frame.buffer(heads_);
     frame.transition(positions, gpu::use::VertexReadBuffer);
+    frame.transition(heads, gpu::use::VertexReadBuffer);
     frame.transition(facadeDepth, gpu::use::FragmentSample);
     gpu::RenderingDesc desc;
     // Zeroed by the clear pass at the end of the last frame; a new target is cleared here once.
@@ -412,8 +415,9 @@ void NeonScene::recordFacadeAndTubes(const FrameContext& frame, const gpu::Strea
       tubes_.push(frame.cmd, gpu::Bindings()
                                  .uniformBuffer("Frame", block.buffer, block.offset, sizeof(shader::NeonFrame))
                                  .storageBuffer("Particles", positions.handle())
+                                 .storageBuffer("Heads", heads.handle())
                                  .sampledImage("facadeDepth", facadeDepth.view(), nearest, kReadOnly));
-      vkCmdDraw(frame.cmd, 2u * uint32_t(builtParticles_), drawnChains_, 0, 0);
+      vkCmdDraw(frame.cmd, 2u * (uint32_t(builtParticles_) + 2u), drawnChains_, 0, 0);  // and two caps
     }
   }
   const auto pass = frame.pass("neon merge");

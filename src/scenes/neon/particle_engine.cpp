@@ -144,7 +144,10 @@ void ParticleEngine::apply(const std::vector<Command>& commands) {
 }
 
 void ParticleEngine::letPenGo() {
-  if (HeadState* head = pen()) head->flags &= ~kHeadSteered;  // from now on it swims and fades
+  if (HeadState* head = pen()) {  // from now on it stays as drawn and fades, from full brightness
+    head->flags &= ~kHeadSteered;
+    head->life = std::min(head->life, kFadeLife);
+  }
   pen_ = {0, 0};
 }
 
@@ -162,11 +165,10 @@ void ParticleEngine::spawn(glm::vec3 position, bool steered) {
     free_.pop();
   } else {
     // Every slot below the limit is taken, so each has a live entry in occupants_, and the first live
-    // one below the limit is the oldest release there. It also has the lowest life: all alive heads
-    // lose the same amount each step, and float subtraction of the same amount keeps their order, so
-    // an older head's life is lower or equal (equal lives, e.g. all still initialising at 1, go to the
-    // older release). The one exception is the pen, whose life is held: it is passed over (a single
-    // slot aside).
+    // one below the limit is the oldest release there: the one replaced. Undrawn heads all lose the
+    // same life each step, so it is also the lowest life among them; a drawn tube fades at its own
+    // rate and may die before older ones, leaving a stale entry that the search skips. The pen, whose
+    // life is held, is passed over (a single slot aside).
     dropStaleOccupants();
     const bool spareThePen = slots_ > 1;
     const auto oldest = std::find_if(occupants_.begin(), occupants_.end(), [&](const Occupant& o) {
@@ -183,8 +185,8 @@ void ParticleEngine::spawn(glm::vec3 position, bool steered) {
                   .state = uint32_t(ChainState::Initialising),
                   .serial = uint32_t(serial_),
                   .steps = 0u,
-                  .flags = steered ? kHeadSteered : 0u,
-                  .launch = launchVelocity(uint32_t(serial_)),
+                  .flags = steered ? kHeadSteered | kHeadDrawn : 0u,
+                  .launch = launchVelocity(uint32_t(serial_), position),
                   .padding = 0u};
   occupants_.push_back({slot, uint32_t(serial_)});
   if (steered) pen_ = {slot, uint32_t(serial_)};
@@ -200,7 +202,8 @@ void ParticleEngine::advance(float dt, float decayPerSecond) {
     if (++head.steps <= kInitialisingSteps) continue;
     head.state = uint32_t(ChainState::Alive);
     if (steered(head)) continue;  // the pen keeps its full life while it draws
-    head.life -= decayPerSecond * dt;
+    // A drawn tube fades in its own time once let go: the autopilot's tubes live long to sweep far.
+    head.life -= (drawn(head) ? kFadeLife / kDrawnFadeSeconds : decayPerSecond) * dt;
     if (head.life <= 0.0f) {
       head = HeadState{};  // inactive, life 0: the GPU leaves the tube where it is, and it draws nothing
       free_.push(slot);

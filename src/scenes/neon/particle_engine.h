@@ -88,12 +88,12 @@ class ParticleEngine {
 
   // Any thread. Spawns a head at `position` at the start of the next step, in the order the
   // releases were queued. Its slot is the first (lowest) free one; when every slot is taken, the
-  // head with the lowest life - the oldest, since all heads lose life at the same rate - is replaced.
+  // oldest release (among undrawn heads, the lowest life: they all lose life at the same rate) is replaced.
   // With one thread releasing and stepping, both modes compute the same snapshots; releases from
   // several threads are applied in the order they took the inbox lock, which is up to the scheduler.
   // `steered`: the head is a pen (a drag): it stays where steer() last put it, with its life held at
-  // 1, until endSteer() or the next steered release lets it go to swim and fade like any other. The
-  // pen's slot is never the one a full engine replaces.
+  // 1, until endSteer() or the next steered release lets it go: its chain keeps the path it drew and
+  // fades over kDrawnFadeSeconds. The pen's slot is never the one a full engine replaces.
   void release(glm::vec3 position, bool steered = false);
   // Any thread: moves the pen (the last steered release) to `position` at the start of the next step.
   void steer(glm::vec3 position);

@@ -27,7 +27,7 @@ const params::Schema& schema() {
     s.add(params::floatParam<S>({"field_scale", "field scale", "Noise cells per metre: larger makes tighter "
                                  "swirls.", "tubes", kLogarithmic},
                                 &S::fieldScale, 0.01, 2.0));
-    s.add(params::floatParam<S>({"radius", "tube radius", "Radius at full life, m; it tapers as life falls.",
+    s.add(params::floatParam<S>({"radius", "tube radius", "Radius of the glass tube, m.",
                                  "tubes"},
                                 &S::radius, 0.005, 0.5));
     s.add(params::colourParam<S>({"colour_a", "colour A", "One of the three neon colours a tube is lit in.", "tubes"}, &S::colourA));
@@ -41,7 +41,7 @@ const params::Schema& schema() {
                                 &S::autopilotIdle, 0.0, 60.0));
     s.add(params::floatParam<S>({"autopilot_rate", "autopilot rate", "Heads the autopilot releases per second.",
                                  "input", kLogarithmic},
-                                &S::autopilotRate, 1.0, 5000.0));
+                                &S::autopilotRate, 0.2, 5000.0));
     s.add(params::floatParam<S>({"bloom_strength", "bloom strength", "How much of the blurred tubes is added "
                                  "back.", "look"},
                                 &S::bloomStrength, 0.0, 4.0));
@@ -73,8 +73,8 @@ const params::Schema& schema() {
                                  &S::stage, {"base", "tubes", "bloom", "dof", "tint", "final"}));
     s.audioMapping("audio.beat=burst");
     s.audioMapping("audio.level=glow:2:4.5 curve=log attack=0.02 release=0.4");
-    s.preset({"dense", "4096 chains of 32, the autopilot releasing fast enough to keep most of them alive.",
-              {{"chains", "4096"}, {"autopilot_rate", "1400"}}});
+    s.preset({"dense", "Many tubes at once, each distinct: the autopilot releasing four a second into 256 chains.",
+              {{"chains", "256"}, {"autopilot_rate", "4"}}});
     s.preset({"clean", "No post effects: the tubes and their bloom.",
               {{"aperture", "0"}, {"tint_strength", "0"}, {"vignette", "0"}, {"grain", "0"}, {"aberration", "0"}}});
     addQualityParams<S>(s, "Render scale of the facade, tubes and post passes; medium takes 3/4 of the chains, low half "

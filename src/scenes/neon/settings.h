@@ -13,19 +13,19 @@ namespace vitrine::neon {
 enum class Stage { Base, Tubes, Bloom, Dof, Tint, Final };
 
 struct Settings {
-  int chains = 1024;               // tubes alive at once at most
-  int particles = 32;              // particles per chain: the tube's length in steps
-  float decay = 0.35f;             // life lost per second once alive
-  float lerp = 0.3f;               // how far a follower moves toward the particle ahead in 1/60 s
+  int chains = 64;                 // tubes alive at once at most
+  int particles = 64;              // particles per chain: the tube's length in steps
+  float decay = 0.11f;             // life lost per second once alive
+  float lerp = 0.26f;              // how far a follower moves toward the particle ahead in 1/60 s
   float fieldStrength = 1.6f;      // the curl-noise flow's speed, m/s
   float fieldScale = 0.22f;        // noise cells per metre
-  float radius = 0.12f;            // tube radius at full life, m
+  float radius = 0.1f;             // tube radius, m
   glm::vec3 colourA = params::hexColour(0xff2a6d);  // neon pink
   glm::vec3 colourB = params::hexColour(0x05d9e8);  // neon cyan
   glm::vec3 colourC = params::hexColour(0xffa41b);  // neon amber
   float glow = 3.0f;               // emissive intensity
   float autopilotIdle = 3.0f;      // seconds without input before the autopilot plays
-  float autopilotRate = 45.0f;     // heads the autopilot releases per second
+  float autopilotRate = 0.7f;      // heads the autopilot releases per second
   float bloomStrength = 2.0f;
   float bloomRadius = 1.0f;
   float focalDistance = 26.0f;     // m from the camera: the release plane, where the tubes are
@@ -49,7 +49,7 @@ const params::Schema& schema();
 
 // What a quality tier costs beside its render scale: the chains the engine releases into (high: as set;
 // medium 3/4; low 1/2, never under the parameter's 16), which the chains and tubes passes step and
-// draw. The default's autopilot keeps ~130 alive, under every tier's; a dense field thins out, each
+// draw. The default's autopilot keeps about six alive, under every tier's; a dense field thins out, each
 // tube the same, the bloom's exposure following the count (tube_light.h).
 int tierChains(int chains, Tier tier);
 // The render scale: quality.h's, but 0.4 rather than 0.5 at the low tier. There, on a CPU device, the

@@ -14,7 +14,7 @@ namespace vitrine::neon {
 // energy budget scales every tube's emission by tubeExposure(alive): 1 up to kBudgetTubes tubes, then
 // falling as alive^-kBudgetFalloff, so the frame's total tube light still grows with the count (more
 // tubes read as more) but only as alive^(1 - kBudgetFalloff), and overlaps stay coloured.
-inline constexpr float kBudgetTubes = 160.0f;
+inline constexpr float kBudgetTubes = 24.0f;
 inline constexpr float kBudgetFalloff = 0.9f;
 
 inline float tubeExposure(uint32_t alive) {
@@ -38,6 +38,11 @@ inline float drawnTubeRadius(float radius, float depth, float frameHeight, float
   const float pixels = tubeRadiusPixels(radius, depth, frameHeight, fovY);
   return pixels >= kMinTubeRadiusPixels ? radius : radius * kMinTubeRadiusPixels / std::max(pixels, 1e-6f);
 }
+
+// Which of the three neon colours the release with this serial glows in: one step round the three
+// from each release to the next, two steps every third, so consecutive releases never share a colour
+// and an autopilot whose pens take turns gives each pen every colour in turn. Mirrored by tube.vert.
+inline uint32_t tubeColour(uint32_t serial) { return (serial + serial / 3u) % 3u; }
 
 // Where tubes cross, their light adds; but pink + cyan + amber is white. The merge pass gives the
 // pixel the nearest tube's colour at the luminance of the sum: a single tube is unchanged, crossing
