@@ -1,6 +1,7 @@
 // Every rule of the command line: what is accepted, and the sentence for what is not.
 #include "app/options.h"
 #include "core/error.h"
+#include "scenes/scene.h"
 #include "support/temp_folder.h"
 
 #include <fmt/format.h>
