@@ -44,7 +44,8 @@ def status_of(url):
 
 
 run = subprocess.Popen([vitrine, "--headless", "--scene", "neon", "--size", "64x36", "--frames", "3600",
-                        "--set", "chains=256", "--set", "autopilot_idle=60", "--validate", "--remote",
+                        "--set", "chains=256", "--set", "particles=32", "--set", "autopilot_idle=60",
+                        "--validate", "--remote",
                         "--map", "osc.fader=bloom_strength:0:2",
                         "--remote-bind", "127.0.0.1:0", "--events", events, "--out", os.path.join(out, "remote.exr")],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
