@@ -8,8 +8,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace vitrine::host {
 namespace {

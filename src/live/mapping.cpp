@@ -11,8 +11,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace vitrine::live {
 namespace {
