@@ -1,12 +1,16 @@
 #include "core/assets.h"
 
+#include "core/bounded_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 
 namespace vitrine {
+
+// A panorama or a photo the gallery shows, as large as image_io's kMaxPictureFileBytes.
+constexpr uintmax_t kMaxAssetFileBytes = uintmax_t(1) << 30;
 
 Assets Assets::locate() {
   if (const char* env = std::getenv("VITRINE_ASSETS"); env && *env) return Assets(env);
@@ -45,12 +49,13 @@ std::vector<std::filesystem::path> Assets::panoramas() const {
 std::vector<std::filesystem::path> Assets::photos() const { return filesIn(root_ / "photos", kPictureExtensions); }
 
 std::optional<std::filesystem::path> Assets::file(const std::filesystem::path& path, std::string_view fallback) const {
-  std::error_code ec;
-  const char* why = nullptr;
-  if (!std::filesystem::exists(path, ec)) why = "not found";
-  else if (!std::filesystem::is_regular_file(path, ec)) why = "not a regular file";
-  else if (std::ifstream probe(path, std::ios::binary); !probe) why = "cannot be read";
-  if (!why) return path;
+  std::string why;
+  try {
+    checkBoundedFile(path, kMaxAssetFileBytes);
+  } catch (const FileRefused& refused) {
+    why = refused.why == "it does not exist" ? "not found" : refused.why;
+  }
+  if (why.empty()) return path;
   reportMissing(path.string() + ": " + why + "; using " + std::string(fallback));
   return std::nullopt;
 }

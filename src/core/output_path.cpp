@@ -1,5 +1,6 @@
 #include "core/output_path.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -7,17 +8,6 @@
 #include <unistd.h>
 
 namespace vitrine {
-namespace {
-
-const char* kindOf(mode_t mode) {
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a fifo";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "something other than a file";
-}
-
-}  // namespace
 
 void checkWritable(const std::filesystem::path& path) {
   const auto parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -31,7 +21,7 @@ void checkWritable(const std::filesystem::path& path) {
   if (S_ISDIR(info.st_mode)) throw Error(fmt::format("Cannot write {}: it is a folder.", path.string()));
   // Outputs are replaced by a rename, which would put a file where a device or fifo was.
   if (!S_ISREG(info.st_mode))
-    throw Error(fmt::format("Cannot write {}: it is {}, not a regular file.", path.string(), kindOf(info.st_mode)));
+    throw Error(fmt::format("Cannot write {}: it is {}, not a regular file.", path.string(), fileKind(info.st_mode)));
   // The mode bits, not access(W_OK): that always says yes to root, as in CI.
   if ((info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
     throw Error(fmt::format("Cannot write {}: it is read-only (mode {:o}).", path.string(), info.st_mode & 07777));

@@ -1,6 +1,7 @@
 #include "host/checkpoint.h"
 
 #include "core/atomic_file.h"
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "frame/state_archive.h"
 #include "host/record_manifest.h"
@@ -10,11 +11,13 @@
 #include <charconv>
 #include <cinttypes>
 #include <cstdio>
-#include <fstream>
 #include <regex>
 
 namespace vitrine::host {
 namespace {
+
+// Far above any scene's simulation (a few MB); what a link to a device or a huge file is refused at.
+constexpr uintmax_t kMaxCheckpointBytes = uintmax_t(1) << 30;
 
 // Every field in order, saved or restored: one list for both.
 void walk(StateArchive& state, Checkpoint& checkpoint) {
@@ -48,10 +51,15 @@ Checkpoint readCheckpoint(const std::filesystem::path& path, std::string_view fi
     return Error(fmt::format("Checkpoint {} {}: delete it to start from an earlier one, or from frame 0.",
                              path.string(), why));
   };
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw refuse("cannot be opened");
-  std::string header;
-  if (!std::getline(in, header) || !header.starts_with("vitrine checkpoint ")) throw refuse("is not a checkpoint");
+  std::string file;
+  try {
+    file = readBoundedFile(path, kMaxCheckpointBytes);
+  } catch (const FileRefused& refused) {
+    throw refuse(fmt::format("cannot be read: {}", refused.why));
+  }
+  const size_t eol = file.find('\n');
+  const std::string header = file.substr(0, eol);
+  if (eol == std::string::npos || !header.starts_with("vitrine checkpoint ")) throw refuse("is not a checkpoint");
   uint32_t version = 0;
   uint64_t size = 0;
   char sum[17] = {};
@@ -59,12 +67,11 @@ Checkpoint readCheckpoint(const std::filesystem::path& path, std::string_view fi
     throw refuse("has a damaged header");
   if (version != kCheckpointVersion)
     throw refuse(fmt::format("was written in format {}; this build reads {}", version, kCheckpointVersion));
-  std::error_code ec;
-  const uint64_t onDisk = std::filesystem::file_size(path, ec) - (header.size() + 1);
-  if (ec || onDisk != size)
+  const uint64_t onDisk = file.size() - (eol + 1);
+  if (onDisk != size)
     throw refuse(fmt::format("is cut short or padded: {} bytes where its header says {}", onDisk, size));
-  std::vector<std::byte> payload(size);
-  if (!in.read(reinterpret_cast<char*>(payload.data()), std::streamsize(size))) throw refuse("cannot be read whole");
+  const auto* start = reinterpret_cast<const std::byte*>(file.data() + eol + 1);
+  const std::vector<std::byte> payload(start, start + size);
   if (fingerprint(textOf(payload)) != sum) throw refuse("is corrupt: its checksum does not match");
   Checkpoint checkpoint;
   try {

@@ -6,7 +6,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -16,6 +15,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -232,19 +232,12 @@ std::string whereInScript(const InputScript& script, const InputEvent& event, st
 }
 
 InputScript loadInputScript(const std::filesystem::path& path, std::string* text) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status))
-    throw Error(fmt::format("Cannot read input script {}: it does not exist.", printable(path.string())));
-  if (!std::filesystem::is_regular_file(status))
-    throw Error(fmt::format("Cannot read input script {}: it is not a regular file.", printable(path.string())));
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxScriptBytes)
-    throw Error(fmt::format("Cannot read input script {}: it is over 1 MiB; scripts are meant to be written by hand.",
-                            printable(path.string())));
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error(fmt::format("Cannot read input script {}: it cannot be opened.", printable(path.string())));
-  std::string bytes(std::istreambuf_iterator<char>(file), {});
+  std::string bytes;
+  try {
+    bytes = readBoundedFile(path, kMaxScriptBytes);  // scripts are meant to be written by hand
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read input script {}: {}.", printable(path.string()), refused.why));
+  }
   InputScript script = parseInputScript(bytes, path.string());
   if (text) *text = std::move(bytes);
   return script;

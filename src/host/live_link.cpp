@@ -1,9 +1,11 @@
 #include "host/live_link.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "host/modes.h"
 #include "host/scene_renderer.h"
 #include "live/audio_capture.h"
+#include "live/audio_clip.h"
 #include "live/audio_file_input.h"
 #include "live/midi_input.h"
 #include "live/smf.h"
@@ -14,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iterator>
 #include <utility>
 
@@ -195,10 +196,15 @@ const live::AudioClip* LiveLink::audioClip() const { return audioFile_ ? &audioF
 std::string LiveLink::fingerprintText() const {
   std::string text;
   for (const live::Mapping& mapping : commandLine_) text += live::formatMapping(mapping) + "\n";
-  for (const std::string* path : {&config_.audioFile, &config_.midiFile}) {
+  const std::pair<const std::string*, uintmax_t> files[] = {{&config_.audioFile, live::kMaxClipFileBytes},
+                                                             {&config_.midiFile, live::kSmfMaxBytes}};
+  for (const auto& [path, maxBytes] : files) {
     if (path->empty()) continue;
-    std::ifstream in(*path, std::ios::binary);
-    text += *path + "\n" + std::string(std::istreambuf_iterator<char>(in), {});
+    try {
+      text += *path + "\n" + readBoundedFile(*path, maxBytes);
+    } catch (const FileRefused& refused) {
+      throw Error(fmt::format("Cannot read {}: {}", *path, refused.why));
+    }
   }
   return text;
 }

@@ -1,15 +1,17 @@
 #include "host/output_warp_file.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "params/schema.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 
 namespace vitrine::host {
 namespace {
+
+constexpr uintmax_t kMaxWarpFileBytes = 1 << 20;  // a warp is a few hundred bytes
 
 using nlohmann::json;
 
@@ -87,9 +89,13 @@ json outputWarpToJson(const maths::OutputWarp& warp) {
 }
 
 maths::OutputWarp readOutputWarp(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw Error(fmt::format("Cannot read the output warp {}", file.string()));
-  const json parsed = json::parse(in, nullptr, false);
+  std::string text;
+  try {
+    text = readBoundedFile(file, kMaxWarpFileBytes);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read the output warp {}: {}", file.string(), refused.why));
+  }
+  const json parsed = json::parse(text, nullptr, false);
   if (parsed.is_discarded()) throw Error(fmt::format("{} is not JSON", file.string()));
   return outputWarpFromJson(parsed, file.string());
 }

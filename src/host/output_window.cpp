@@ -1,5 +1,6 @@
 #include "host/output_window.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
@@ -10,14 +11,19 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 
 namespace vitrine::host {
 
+constexpr uintmax_t kMaxOutputsFileBytes = 1 << 20;  // an output is a line of JSON
+
 std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw Error(fmt::format("Cannot read the outputs {}", file.string()));
-  const nlohmann::json list = nlohmann::json::parse(in, nullptr, false);
+  std::string text;
+  try {
+    text = readBoundedFile(file, kMaxOutputsFileBytes);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read the outputs {}: {}", file.string(), refused.why));
+  }
+  const nlohmann::json list = nlohmann::json::parse(text, nullptr, false);
   if (!list.is_array()) throw Error(fmt::format("{}: the outputs are a JSON array of objects", file.string()));
   std::vector<OutputPlacement> outputs;
   for (size_t i = 0; i < list.size(); ++i) {

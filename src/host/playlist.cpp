@@ -1,5 +1,6 @@
 #include "host/playlist.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -7,8 +8,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace vitrine::host {
 namespace {
@@ -72,16 +71,11 @@ std::vector<PlaylistEntry> parsePlaylist(std::string_view text, std::string_view
 }
 
 std::vector<PlaylistEntry> loadPlaylist(const std::filesystem::path& path, const PlaylistChecks& checks) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw Error(fmt::format("--playlist {}: {}.", path.string(), ec ? ec.message() : "not a readable file"));
-  if (std::filesystem::file_size(path, ec) > kMaxPlaylistBytes)
-    throw Error(fmt::format("--playlist {}: larger than {} bytes.", path.string(), kMaxPlaylistBytes));
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw Error(fmt::format("--playlist {}: cannot read it.", path.string()));
-  return parsePlaylist(text.str(), path.string(), checks);
+  try {
+    return parsePlaylist(readBoundedFile(path, kMaxPlaylistBytes), path.string(), checks);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("--playlist {}: {}.", path.string(), refused.why));
+  }
 }
 
 }  // namespace vitrine::host

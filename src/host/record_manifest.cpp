@@ -4,10 +4,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <iterator>
 
 #include "core/atomic_file.h"
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -20,13 +20,11 @@ constexpr int kManifestVersion = 1;
 constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
 
 std::string readText(const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxManifestBytes)
-    throw Error(fmt::format("Cannot read {}: {}", path.string(), ec ? ec.message() : "it is over 1 MiB"));
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error(fmt::format("Cannot read {}: it cannot be opened.", path.string()));
-  return {std::istreambuf_iterator<char>(file), {}};
+  try {
+    return readBoundedFile(path, kMaxManifestBytes);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read {}: {}.", path.string(), refused.why));
+  }
 }
 
 }  // namespace

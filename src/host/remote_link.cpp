@@ -112,6 +112,8 @@ std::string RemoteLink::preset(SceneRenderer& renderer, const remote::RemoteComm
                                double frameMs) {
   const std::string_view showing = renderer.info().name;
   if (!presets_) return "this run keeps no presets";
+  if ((command.key == "delete" || command.key == "save") && !presetWrites_.take())
+    return fmt::format("too many presets saved or deleted; at most {} a second", kPresetWrites.rate);
   if (command.key == "delete") return presets_->remove(command.scene, command.value);
   if (command.key == "save") {
     if (command.scene != showing)

@@ -7,6 +7,7 @@
 #include "host/pointer.h"
 #include "host/scene_renderer.h"
 #include "params/preset_store.h"
+#include "remote/rate_limiter.h"
 #include "remote/remote_control.h"
 #include "remote/waiting_values.h"
 
@@ -25,6 +26,8 @@ struct RemoteApplied {
   bool touched = false;                  // anything at all arrived (kiosk mode: a person is playing)
   std::vector<std::pair<std::string, float>> sources;  // live input: osc.NAME values (/vitrine/mod/NAME)
 };
+
+inline constexpr remote::RateLimit kPresetWrites{.rate = 2.0, .burst = 10.0};
 
 class RemoteLink {
  public:
@@ -64,6 +67,8 @@ class RemoteLink {
   std::chrono::steady_clock::time_point lastTouch_{}, lastPublish_{};
   size_t refused_ = 0;
   std::vector<std::string> mappings_;
+  // Saves and deletes write files: a few a second in all, whatever address each comes from.
+  remote::TokenBucket presetWrites_{kPresetWrites};
 };
 
 }  // namespace vitrine::host

@@ -15,6 +15,7 @@
 #include <string>
 #include <system_error>
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 #include "image/image_io.h"
@@ -26,15 +27,6 @@ bool startsWith(std::span<const unsigned char> head, std::string_view magic, siz
   return head.size() >= at + magic.size() &&
          std::equal(magic.begin(), magic.end(), head.begin() + at,
                     [](char m, unsigned char h) { return static_cast<unsigned char>(m) == h; });
-}
-
-std::string_view fileKind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a fifo";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
 }
 
 // OpenEXR's first complaint about a header, kept for the error message (its messages quote attribute

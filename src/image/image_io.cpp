@@ -32,6 +32,7 @@
 
 #include "core/error.h"
 #include "core/atomic_file.h"
+#include "core/bounded_file.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
 #include "image/picture_oiio.h"
@@ -147,9 +148,11 @@ Picture fitWithin(Picture source, uint32_t maxSide) {
 }  // namespace
 
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw Error(fmt::format("Cannot read {}: it is not a regular file.", path.string()));
+  try {
+    checkBoundedFile(path, kMaxPictureFileBytes);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read {}: {}.", path.string(), refused.why));
+  }
   std::array<unsigned char, 16> head{};
   {
     std::ifstream in(path, std::ios::binary);

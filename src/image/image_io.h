@@ -47,5 +47,7 @@ struct Picture {
 // aspect, so that neither side exceeds maxSide; grey and RGB gain opaque alpha. Throws vitrine::Error
 // naming the path and the reason (the build without OpenImageIO's module reads PNG, JPEG and EXR only).
 Picture readPicture(const std::filesystem::path& path, uint32_t maxSide);
+// The largest picture file read (a photo, a panorama): a 16384x8192 EXR of half RGBA, uncompressed.
+inline constexpr uintmax_t kMaxPictureFileBytes = uintmax_t(1) << 30;
 
 }  // namespace vitrine

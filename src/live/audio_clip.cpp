@@ -11,6 +11,7 @@
 #include <numeric>
 #include <string>
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 
 namespace vitrine::live {
@@ -38,8 +39,15 @@ struct SndfileCloser {
 }  // namespace
 
 AudioClip readAudioFile(const std::filesystem::path& path) {
+  // Opened through the bounded-file gate: libsndfile handed a fifo waits for a writer forever.
+  int fd = -1;
+  try {
+    fd = BoundedFile(path, kMaxClipFileBytes).release();
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read the sound file {}: {}", path.string(), refused.why));
+  }
   SF_INFO info{};
-  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(path.c_str(), SFM_READ, &info));
+  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open_fd(fd, SFM_READ, &info, /*close_desc (on failure too)=*/SF_TRUE));
   if (!file) throw Error(fmt::format("Cannot read the sound file {}: {}", path.string(), reasonOf(nullptr)));
   if (info.channels < 1 || info.channels > kMaxClipChannels)
     throw Error(fmt::format("Cannot use the sound file {}: it has {} channels, and 1 to {} are supported",

@@ -2,6 +2,7 @@
 // A sound file in memory: read once by libsndfile, then analysed as live input or played as a
 // film's sound track.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct AudioClip {
 inline constexpr double kMaxClipSeconds = 30.0 * 60.0;
 inline constexpr size_t kMaxClipSamples = size_t(1) << 28;  // 1 GiB of floats
 inline constexpr int kMaxClipChannels = 8;
+// The largest sound file read: the longest clip as 32-bit samples, with room for a header.
+inline constexpr uintmax_t kMaxClipFileBytes = uintmax_t(kMaxClipSamples) * 4 + (1u << 20);
 inline constexpr double kMinClipRate = 1000.0, kMaxClipRate = 768000.0;
 
 // Reads whatever Debian 12's libsndfile reads (WAV, FLAC, Ogg Vorbis and Opus, MP3, AIFF, ...) as

@@ -1,5 +1,6 @@
 #include "live/mapping.h"
 
+#include "core/bounded_file.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "scenes/scene.h"
@@ -10,8 +11,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace vitrine::live {
 namespace {
@@ -239,15 +238,11 @@ std::vector<Mapping> parseMappingText(std::string_view text, const std::string& 
 }
 
 std::vector<Mapping> loadMappingFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw Error(fmt::format("Cannot read the mapping file {}: {}", path.string(), ec.message()));
-  if (size > kMaxLines * kMaxLineLength) throw Error(fmt::format("{} is too large for a mapping file", path.string()));
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw Error(fmt::format("Cannot read the mapping file {}", path.string()));
-  return parseMappingText(text.str(), path.string());
+  try {
+    return parseMappingText(readBoundedFile(path, kMaxLines * kMaxLineLength), path.string());
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read the mapping file {}: {}", path.string(), refused.why));
+  }
 }
 
 void saveMappingFile(const std::filesystem::path& path, const std::vector<Mapping>& mappings) {

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <string_view>
 #include <system_error>
 #include <utility>
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -309,21 +309,13 @@ MidiSequence parseSmf(std::span<const uint8_t> bytes, const std::string& name) {
 
 MidiSequence readSmf(const std::filesystem::path& path) {
   const std::string name = printable(path.string());
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) throw Error(fmt::format("Cannot read MIDI file {}: it does not exist.", name));
-  if (!std::filesystem::is_regular_file(status))
-    throw Error(fmt::format("Cannot read MIDI file {}: it is not a regular file.", name));
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > kSmfMaxBytes)
-    throw Error(
-        fmt::format("Cannot read MIDI file {}: it is over 16 MiB, more than Vitrine reads from a MIDI file.", name));
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error(fmt::format("Cannot read MIDI file {}: it cannot be opened.", name));
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  file.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
-  if (size_t(file.gcount()) != bytes.size())
-    throw Error(fmt::format("Cannot read MIDI file {}: it was shorter than its size said (did it change?).", name));
+  std::string text;
+  try {
+    text = readBoundedFile(path, kSmfMaxBytes);
+  } catch (const FileRefused& refused) {
+    throw Error(fmt::format("Cannot read MIDI file {}: {}.", name, refused.why));
+  }
+  const std::vector<uint8_t> bytes(text.begin(), text.end());
   return parseSmf(bytes, path.string());
 }
 

@@ -26,14 +26,38 @@ float lfoValue(std::string_view name, double seconds) {
 
 void SourceBank::set(std::string_view name, float value) {
   value = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-  if (auto found = values_.find(name); found != values_.end()) found->second = value;
-  else values_.emplace(std::string(name), value);
+  if (auto found = values_.find(name); found != values_.end()) {
+    found->second = value;
+    Use& use = uses_.find(name)->second;
+    auto& order = use.read ? read_ : unread_;
+    auto entry = order.extract(use.written);
+    entry.key() = use.written = ++writes_;
+    order.insert(std::move(entry));
+    return;
+  }
+  if (values_.size() >= kMaxSourceNames) forgetOne();
+  values_.emplace(std::string(name), value);
+  uses_.emplace(std::string(name), Use{++writes_, false});
+  unread_.emplace(writes_, std::string(name));
+}
+
+void SourceBank::forgetOne() {
+  auto& order = unread_.empty() ? read_ : unread_;
+  const auto oldest = order.begin();
+  values_.erase(oldest->second);
+  uses_.erase(oldest->second);
+  order.erase(oldest);
 }
 
 float SourceBank::value(std::string_view name) const {
   if (name.starts_with("lfo.")) return lfoValue(name, time_);
   const auto found = values_.find(name);
-  return found == values_.end() ? 0.0f : found->second;
+  if (found == values_.end()) return 0.0f;
+  if (Use& use = uses_.find(name)->second; !use.read) {
+    use.read = true;
+    read_.insert(unread_.extract(use.written));
+  }
+  return found->second;
 }
 
 }  // namespace vitrine::live

@@ -147,6 +147,9 @@ std::string PresetStore::check(const UserPreset& preset) const {
 std::string PresetStore::save(const UserPreset& preset) {
   if (folder_.empty()) return "no settings folder to keep presets in (neither XDG_CONFIG_HOME nor HOME is set)";
   if (std::string why = check(preset); !why.empty()) return why;
+  if (!find(preset.scene, preset.name) && presetsOf(preset.scene).size() >= kMaxPresetsPerScene)
+    return fmt::format("{} already has {} presets of yours, as many as are kept; delete one first",
+                       printable(preset.scene), kMaxPresetsPerScene);
   try {
     writePresetFile(fileOf(preset.scene, preset.name), preset, schemaFor_);
   } catch (const std::exception& e) {

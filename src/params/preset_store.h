@@ -26,6 +26,7 @@ namespace vitrine::params {
 inline constexpr int kPresetVersion = 1;
 inline constexpr uintmax_t kMaxPresetBytes = 64u << 10;  // a preset is a few hundred bytes
 inline constexpr size_t kMaxPresetName = 40;              // what the panel's list can show
+inline constexpr size_t kMaxPresetsPerScene = 100;        // a list one can still read; every state message lists them
 
 struct UserPreset {
   std::string scene;

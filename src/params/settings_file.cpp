@@ -1,6 +1,7 @@
 #include "params/settings_file.h"
 
 #include "core/atomic_file.h"
+#include "core/bounded_file.h"
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -161,17 +162,7 @@ fs::path defaultSettingsPath() {
 }
 
 Json readJsonFile(const fs::path& path, uintmax_t maxBytes) {
-  std::error_code ec;
-  if (fs::file_size(path, ec) > maxBytes && !ec) throw FileRefused{fmt::format("larger than {} bytes", maxBytes)};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileRefused{fmt::format("cannot open it: {}", std::strerror(errno))};
-  // Read one byte past the limit, in case the file grew since file_size.
-  std::string text(size_t(maxBytes) + 1, '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  if (in.bad()) throw FileRefused{"cannot read it"};
-  text.resize(size_t(in.gcount()));
-  if (text.size() > maxBytes) throw FileRefused{fmt::format("larger than {} bytes", maxBytes)};
-  return parseLimited(text);
+  return parseLimited(readBoundedFile(path, maxBytes));
 }
 
 namespace {

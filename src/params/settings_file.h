@@ -15,6 +15,7 @@
 // one is validated by the parameter's own parse, as --set values are. A file is the user's: nothing in
 // it is deleted. Values this version does not understand are kept and written back; a file that cannot
 // be read as settings is renamed aside, and the gallery starts from the defaults.
+#include "core/bounded_file.h"
 #include "params/schema.h"
 
 #include <nlohmann/json.hpp>
@@ -106,11 +107,9 @@ Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChange
 // What every reader of the user's own JSON files (settings, user presets) shares, so that each file is
 // judged by one set of rules.
 //
-// Why a file is not one of ours (not JSON, too large, nested too deep, the wrong shape): thrown by
-// readJsonFile and by the callers' own shape checks, caught where the file is judged.
-struct FileRefused {
-  std::string why;
-};
+// Why a file is not one of ours (not a regular file, too large, not JSON, nested too deep, the wrong
+// shape): thrown by readJsonFile and by the callers' own shape checks, caught where the file is judged.
+using vitrine::FileRefused;
 // The JSON in `path`, at most `maxBytes` long and nested no deeper than any of our files; throws
 // FileRefused with the reason (never quoting the file's bytes, which may be binary).
 nlohmann::ordered_json readJsonFile(const std::filesystem::path& path, uintmax_t maxBytes);

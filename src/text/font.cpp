@@ -1,5 +1,6 @@
 #include "text/font.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
 
 #include <ft2build.h>
@@ -23,6 +24,8 @@
 
 namespace vitrine::text {
 namespace {
+
+constexpr uintmax_t kMaxFontFileBytes = uintmax_t(64) << 20;  // the largest CJK fonts are ~20 MB
 
 std::string describe(FT_Error error) { return freetypeError(int(error)); }
 
@@ -64,9 +67,11 @@ struct Font::Impl {
   // Empty when the file opens, has outlines and its first letter loads; otherwise why not.
   std::string open(const std::filesystem::path& file) {
     close();
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) return "not found";
-    if (!std::filesystem::is_regular_file(file, ec)) return "not a regular file";
+    try {
+      checkBoundedFile(file, kMaxFontFileBytes);
+    } catch (const FileRefused& refused) {
+      return refused.why == "it does not exist" ? "not found" : refused.why;
+    }
     if (const FT_Error error = FT_Init_FreeType(&library)) return "FreeType did not start: " + describe(error);
     std::string why = openFace(file);
     if (!why.empty()) close();

@@ -41,6 +41,20 @@ TEST_F(PresetStoreTest, ASavedPresetIsReadBackCanonicalByANewStore) {
   EXPECT_EQ(store.fileOf("kifs", "evening glow").filename(), "kifs-evening%20glow.json");
 }
 
+// A client saving under new names without end (every state message lists the presets) stops at the
+// cap; saving again under a kept name, and other scenes, still work.
+TEST_F(PresetStoreTest, NewNamesStopAtTheCapPerScene) {
+  PresetStore store = open();
+  std::string refused;
+  for (int i = 0; i < 150 && refused.empty(); ++i)
+    refused = store.save({"kifs", "look " + std::to_string(i), {{"step", "6"}}});
+  EXPECT_NE(refused.find("as many as are kept"), std::string::npos) << refused;
+  EXPECT_EQ(store.presetsOf("kifs").size(), 100u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(presets()), fs::directory_iterator()), 100);
+  EXPECT_EQ(store.save({"kifs", "look 7", {{"step", "5"}}}), "");
+  EXPECT_EQ(store.save({"bloom", "look 0", {}}), "");
+}
+
 TEST_F(PresetStoreTest, NamesThatClashOrCannotBeTypedAreRefusedWithAReason) {
   PresetStore store = open();
   EXPECT_NE(store.save({"kifs", "sphere", {{"step", "2"}}}).find("one of the scene's own presets"), std::string::npos);

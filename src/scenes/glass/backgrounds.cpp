@@ -1,6 +1,8 @@
 #include "scenes/glass/backgrounds.h"
 
+#include "core/bounded_file.h"
 #include "core/error.h"
+#include "image/image_io.h"
 #include "scenes/glass/studio.h"
 
 #include <Imath/half.h>
@@ -65,7 +67,11 @@ std::string panoramaProblem(std::string_view value, const Assets& assets) {
   const auto names = fmt::format("{}", fmt::join(panoramaNames(assets), ", "));
   if (!std::filesystem::exists(path, ec))
     return fmt::format("panorama {}: not one of {} nor an EXR file", value, names);
-  if (!std::filesystem::is_regular_file(path, ec)) return fmt::format("panorama {}: not a regular file", value);
+  try {
+    checkBoundedFile(path, kMaxPictureFileBytes);
+  } catch (const FileRefused& refused) {
+    return fmt::format("panorama {}: {}", value, refused.why);
+  }
   std::ifstream file(path, std::ios::binary);
   unsigned char magic[4] = {};
   file.read(reinterpret_cast<char*>(magic), 4);

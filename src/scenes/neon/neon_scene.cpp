@@ -265,8 +265,20 @@ void NeonScene::autopilot(const FrameInput& input) {
   }
   const float rate = settings_.autopilotRate * (reducedMotion_ ? kReducedMotionAutopilot : 1.0f);
   const uint32_t pens = std::clamp(uint32_t(std::lround(rate / 1.5f)), kAutopilotPens, 48u);
-  for (; autopilotNext_ <= input.time; autopilotNext_ += 1.0 / double(rate))  // the pens take turns
+  // A step that starts far into the piece (--time 1e9, a checkpoint's time) would owe a release for every
+  // period since 0; the engine keeps at most slots_ heads, so only the latest slots_ of them are made.
+  // The skipped ones still count, so the pens and their jitter go on as if they had been made.
+  const double period = 1.0 / double(rate), owed = std::floor((input.time - autopilotNext_) / period) + 1.0;
+  const uint32_t kept = std::max(slots_, 1u);
+  if (const double skipped = owed - double(kept); skipped > 0.0) {
+    autopilotNext_ += skipped * period;
+    releases_ += uint64_t(std::fmod(skipped, 0x1p62));
+  }
+  uint32_t made = 0;
+  for (; autopilotNext_ <= input.time && made <= kept; autopilotNext_ += period, ++made)  // the pens take turns
     release(autopilotNext_, penPosition(autopilotNext_, uint32_t(releases_ % pens)), "autopilot");
+  // Past about 1e15 s a period is below the time's resolution and adding it changes nothing.
+  if (autopilotNext_ <= input.time) autopilotNext_ = std::nextafter(input.time, HUGE_VAL);
 }
 
 // Where pen `pen` is at time t, a little off its Lissajous path (the jitter changes with every release).
