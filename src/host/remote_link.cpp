@@ -165,7 +165,10 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
   std::vector<std::string> userPresets;
   if (presets_)
     for (const params::UserPreset* preset : presets_->presetsOf(renderer.info().name)) userPresets.push_back(preset->name);
-  control_.publish({std::string(renderer.info().name), params::snapshot(renderer.parameters()), mappings_, std::move(userPresets)});
+  params::KeyValues values = params::snapshot(renderer.parameters());
+  const params::Schema& schema = *renderer.parameters().schema;
+  for (auto& [key, value] : values) value = params::remoteView(*schema.find(key), std::move(value));
+  control_.publish({std::string(renderer.info().name), std::move(values), mappings_, std::move(userPresets)});
 }
 
 }  // namespace vitrine::host
