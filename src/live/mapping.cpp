@@ -211,6 +211,8 @@ std::string checkMapping(const Mapping& mapping, const SceneInfo& scene) {
 
 std::vector<Mapping> parseMappingText(std::string_view text, const std::string& name) {
   std::vector<Mapping> mappings;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark, as editors write
+  if (text.ends_with('\n')) text.remove_suffix(1);                 // a final newline ends the last line
   size_t lineNumber = 0;
   for (std::string_view line : split(text, '\n')) {
     ++lineNumber;
@@ -242,7 +244,7 @@ std::vector<Mapping> loadMappingFile(const std::filesystem::path& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   if (ec) throw Error(fmt::format("Cannot read the mapping file {}: {}", path.string(), ec.message()));
-  if (size > kMaxLines * kMaxLineLength) throw Error(fmt::format("{} is too large for a mapping file", path.string()));
+  if (size > kMaxLines * (kMaxLineLength + 2)) throw Error(fmt::format("{} is too large for a mapping file", path.string()));
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
