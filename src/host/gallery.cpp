@@ -12,6 +12,7 @@
 #include "gpu/check.h"
 #include "host/gallery_app.h"
 #include "host/output_warp_file.h"
+#include "scenes/adaptive_quality.h"
 
 namespace vitrine::host {
 namespace {
@@ -79,6 +80,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       playlist_(std::move(playlist)) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
+  tiers_.setStartingTier(AdaptiveQuality::name(AdaptiveQuality::startingTier(device_)));
   renderer_->setEventSink(&tiers_);
   renderer_->setAudioSink(&audio_);
   renderer_->setRealtime(true);
