@@ -260,7 +260,10 @@ void Gallery::collect(uint32_t slot) {
   for (const auto& pass : passes_) gpuMs_ += pass.ms;
   input_.lastGpuMs = gpuMs_;
   capture_.collect(slot);
-  if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
+  if (auto finished = capture_.takeFinished()) {
+    std::printf("vitrine: %s\n", finished->c_str());
+    std::fflush(stdout);  // said now, also when the console is a log file
+  }
   if (auto note = screenshots_.collect(slot)) {
     std::printf("vitrine: %s\n", note->c_str());
     std::fflush(stdout);  // said now, also when the console is a log file
