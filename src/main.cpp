@@ -8,6 +8,7 @@
 #include "host/window.h"
 #include "scenes/scene.h"
 
+#include <algorithm>
 #include <cstdio>
 
 int main(int argc, char** argv) {
@@ -17,11 +18,14 @@ int main(int argc, char** argv) {
     switch (options.mode) {
       case Mode::Help: std::fputs(usage(), stdout); return 0;
       case Mode::Version: std::printf("vitrine 0.1.0\n"); return 0;
-      case Mode::ListScenes:
+      case Mode::ListScenes: {
+        int width = 0;  // the longest name: the titles line up after it
+        for (const auto& info : sceneRegistry()) width = std::max(width, int(info.name.size()));
         for (const auto& info : sceneRegistry())
-          std::printf("%d  %-8.*s %.*s\n", info.key, int(info.name.size()), info.name.data(), int(info.title.size()),
-                      info.title.data());
+          std::printf("%d  %-*.*s  %.*s\n", info.key, width, int(info.name.size()), info.name.data(),
+                      int(info.title.size()), info.title.data());
         return 0;
+      }
       case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced
         return host::runListParams(options);
       case Mode::ListMonitors: std::fputs(host::Window::listMonitors().c_str(), stdout); return 0;

@@ -72,8 +72,8 @@ void main() {
   // The strobe: a quarter of the frame (half its width by half its height) around the middle.
   if (pc.strobeOn != 0u && box(p, s * 0.25, s * 0.75) > 0.0) colour = pc.strobeLit != 0u ? pc.strobeColour.rgb : vec3(0.0);
 
-  // The centre cross, over everything but the border.
-  float arm = unit * 0.75;
+  // The centre cross, over everything but the border; short enough to end above the caption.
+  float arm = unit * 0.5;
   float cross = max(line(p.x - centre.x, 1.0) * step(abs(p.y - centre.y), arm),
                     line(p.y - centre.y, 1.0) * step(abs(p.x - centre.x), arm));
   float under = dot(colour, vec3(0.2126, 0.7152, 0.0722));

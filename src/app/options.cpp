@@ -375,7 +375,10 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--set") options.parameters.push_back(parseSet(value(arg)));
     else if (arg == "--preset") options.presets.push_back(parsePreset(value(arg)));
     else if (arg == "--preset-file") options.presetFiles.push_back(value(arg));
-    else if (arg == "--save-preset") options.savePreset = value(arg);
+    else if (arg == "--save-preset") {
+      options.savePreset = value(arg);
+      if (options.savePreset.empty()) throw Error("--save-preset expects a name for the preset, not ''.");
+    }
     else if (arg == "--playlist") options.playlist = value(arg);
     else if (arg == "--export-preset") {
       options.mode = Mode::ExportPreset;

@@ -9,12 +9,12 @@ namespace vitrine {
 
 std::string printable(std::string_view text) {
   std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
+  for (const char c : text.substr(0, kPrintableBytes)) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte >= 0x20 && byte < 0x7f) out += c;
     else out += fmt::format("\\x{:02x}", byte);
   }
+  if (text.size() > kPrintableBytes) out += fmt::format("... ({} bytes)", text.size());
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
+#include "core/printable.h"
 #include "frame/state_archive.h"
 #include "host/record_manifest.h"
 
@@ -79,7 +80,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& path, std::string_view fi
     walk(state, checkpoint);
     if (!state.finished()) throw Error("bytes are left over");
   } catch (const Error& e) {
-    throw refuse(fmt::format("cannot be read ({})", e.what()));
+    throw refuse(fmt::format("cannot be read ({})", printable(e.what())));
   }
   if (checkpoint.film != film) throw refuse("belongs to another film (its record.json differs)");
   return checkpoint;

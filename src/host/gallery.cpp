@@ -12,6 +12,7 @@
 #include "gpu/check.h"
 #include "host/gallery_app.h"
 #include "host/output_warp_file.h"
+#include "scenes/adaptive_quality.h"
 
 namespace vitrine::host {
 namespace {
@@ -79,6 +80,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       playlist_(std::move(playlist)) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
+  tiers_.setStartingTier(AdaptiveQuality::name(AdaptiveQuality::startingTier(device_)));
   renderer_->setEventSink(&tiers_);
   renderer_->setAudioSink(&audio_);
   renderer_->setRealtime(true);
@@ -258,7 +260,10 @@ void Gallery::collect(uint32_t slot) {
   for (const auto& pass : passes_) gpuMs_ += pass.ms;
   input_.lastGpuMs = gpuMs_;
   capture_.collect(slot);
-  if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
+  if (auto finished = capture_.takeFinished()) {
+    std::printf("vitrine: %s\n", finished->c_str());
+    std::fflush(stdout);  // said now, also when the console is a log file
+  }
   if (auto note = screenshots_.collect(slot)) {
     std::printf("vitrine: %s\n", note->c_str());
     std::fflush(stdout);  // said now, also when the console is a log file

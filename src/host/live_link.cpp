@@ -96,6 +96,7 @@ void LiveLink::setScene(const SceneInfo& scene, const std::vector<std::string>& 
 }
 
 void LiveLink::remap() {
+  vetted_ = false;
   std::vector<live::Mapping> mappings = saved_;
   for (const live::Mapping& mapping : commandLine_)
     if (mapping.scene == scene_->name) mappings.push_back(mapping);
@@ -145,13 +146,18 @@ void LiveLink::readInputs(double time) {
 void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* events) {
   readInputs(input.time);
   if (!scene_ || &renderer.info() != scene_) return;  // the scene showing has not been given yet
+  if (!vetted_) vet(renderer);
   live::Modulated out = modulator_.step(sources_, renderer.parameters(), input.dt);
   if (!out.values.empty()) {
     const std::string why = renderer.applyParameters(out.values);
     if (!why.empty()) {
-      if (why != lastRefusal_) std::fprintf(stderr, "vitrine: live input: %s refuses %s\n", std::string(scene_->name).c_str(), why.c_str());
+      if (lastRefusal_.empty())  // one line when refusals begin, not one a step while they last
+        std::fprintf(stderr, "vitrine: live input: %s refuses %s\n", std::string(scene_->name).c_str(), why.c_str());
       lastRefusal_ = why;
-    } else if (events) {
+    } else {
+      lastRefusal_.clear();
+    }
+    if (why.empty() && events) {
       for (const auto& [key, value] : out.values) {
         // An init-capture: clang 14 (the sanitizer build) cannot capture a structured binding itself.
         const auto by = std::find_if(modulator_.mappings().rbegin(), modulator_.mappings().rend(),
@@ -161,6 +167,52 @@ void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* event
     }
   }
   input.actions.insert(input.actions.end(), out.actions.begin(), out.actions.end());
+}
+
+namespace {
+
+// The values a mapping drives its parameter between: its range, else the parameter's whole one.
+std::optional<std::pair<std::string, std::string>> mappedEnds(const live::Mapping& mapping, const params::Param& param) {
+  if (mapping.lo && mapping.hi) return std::pair(*mapping.lo, *mapping.hi);
+  switch (param.kind) {
+    case params::Kind::Float: return std::pair(params::formatFloat(float(param.min)), params::formatFloat(float(param.max)));
+    case params::Kind::Int: return std::pair(fmt::to_string(int(param.min)), fmt::to_string(int(param.max)));
+    case params::Kind::Bool: return std::pair(std::string("off"), std::string("on"));
+    case params::Kind::Choice: return std::pair(param.choices.front(), param.choices.back());
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace
+
+void LiveLink::vet(SceneRenderer& renderer) {
+  vetted_ = true;
+  const params::Bound bound = renderer.parameters();
+  std::vector<live::Mapping> kept;
+  bool setAside = false;
+  for (const live::Mapping& mapping : modulator_.mappings()) {
+    const params::Param* param = bound.schema->find(mapping.target);
+    const auto ends = param ? mappedEnds(mapping, *param) : std::nullopt;
+    std::string why;
+    // Judged with the other values as they are; a scene that refuses its present values (a picture that
+    // will not load) says nothing about the mapping.
+    if (ends) {
+      const std::string now = param->format(bound.settings);
+      if (renderer.applyParameters({{mapping.target, now}}).empty()) {
+        why = renderer.applyParameters({{mapping.target, ends->first}});
+        if (why.empty()) why = renderer.applyParameters({{mapping.target, ends->second}});
+        renderer.applyParameters({{mapping.target, now}});
+      }
+    }
+    if (why.empty()) {
+      kept.push_back(mapping);
+      continue;
+    }
+    setAside = true;
+    std::fprintf(stderr, "vitrine: live input: the mapping %s is set aside: %s refuses %s\n",
+                 live::formatMapping(mapping).c_str(), std::string(scene_->name).c_str(), why.c_str());
+  }
+  if (setAside) modulator_.setMappings(*scene_, std::move(kept));
 }
 
 std::vector<std::string> LiveLink::mappingLines() const {

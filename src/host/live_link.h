@@ -88,6 +88,9 @@ class LiveLink {
 
  private:
   void remap();
+  // Sets aside, with one line each, the mappings whose range the scene showing refuses (bloom's
+  // thresholds must rise: amber mapped up to 1 is inside amber's own range, but not below rose).
+  void vet(SceneRenderer& renderer);
   LiveConfig config_;
   std::vector<live::Mapping> commandLine_;
   std::vector<live::Mapping> saved_;
@@ -101,7 +104,8 @@ class LiveLink {
   std::map<std::string, float, std::less<>> controlsSeen_;  // MIDI learn: the controls' last values
   std::optional<std::string> moved_;
   float movedBy_ = 0.0f;
-  std::string lastRefusal_;
+  bool vetted_ = false;       // the mappings playing now have been judged against the live scene
+  std::string lastRefusal_;   // while the scene refuses the mapped values: said once, when it begins
 };
 
 }  // namespace vitrine::host

@@ -3,9 +3,11 @@
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
+#include "params/preset_store.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -43,6 +45,11 @@ std::string parseLine(std::string_view line, const PlaylistChecks& checks, Playl
                        kMaxPlaylistDwell);
   if (!checks.sceneExists || !checks.sceneExists(entry.scene))
     return fmt::format("no scene '{}'; vitrine --list-scenes shows them", printable(entry.scene));
+  // A name no preset can have is refused here, quoted safely: the checks below quote it as it is.
+  if (entry.preset.size() > params::kMaxPresetName ||
+      std::any_of(entry.preset.begin(), entry.preset.end(), [](char c) { return c < 0x20 || c >= 0x7f; }))
+    return fmt::format("'{}' is no preset's name (printable ASCII, at most {} characters)", printable(entry.preset),
+                       params::kMaxPresetName);
   if (!entry.preset.empty() && checks.presetProblem)
     if (std::string why = checks.presetProblem(entry.scene, entry.preset); !why.empty()) return why;
   return {};
@@ -53,6 +60,7 @@ std::string parseLine(std::string_view line, const PlaylistChecks& checks, Playl
 std::vector<PlaylistEntry> parsePlaylist(std::string_view text, std::string_view where, const PlaylistChecks& checks) {
   std::vector<PlaylistEntry> entries;
   size_t number = 0;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark, as editors write
   while (!text.empty()) {
     const size_t eol = text.find('\n');
     const std::string_view line = trim(text.substr(0, eol));

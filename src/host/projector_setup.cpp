@@ -32,10 +32,19 @@ void ProjectorSetup::pointer(const Pointer& pointer, maths::OutputWarp& warp) {
         nearest = d, held_ = i, selected_ = i;
   }
   if (held_ && !pointer.leftHeld) {  // let go: where it was let go, this frame's last moves included
-    if (pointer.releasedAt) move(warp, *held_, *pointer.releasedAt / size);
+    if (pointer.releasedAt) move(warp, *held_, snapped(*pointer.releasedAt, size));
     held_.reset();
   }
-  if (held_) move(warp, *held_, pointer.pixels / size);
+  if (held_) move(warp, *held_, snapped(pointer.pixels, size));
+}
+
+glm::vec2 ProjectorSetup::snapped(glm::vec2 pixels, glm::vec2 size) {
+  glm::vec2 at = pixels / size;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (pixels[axis] <= kSnapPixels) at[axis] = 0.0f;
+    if (pixels[axis] >= size[axis] - 1.0f - kSnapPixels) at[axis] = 1.0f;
+  }
+  return at;
 }
 
 ProjectorSetup::Key ProjectorSetup::key(int key, bool shift, VkExtent2D output, maths::OutputWarp& warp) {
@@ -51,6 +60,7 @@ ProjectorSetup::Key ProjectorSetup::key(int key, bool shift, VkExtent2D output, 
       return Key::Undone;
     case GLFW_KEY_F7: active_ = false; return Key::Next;
     case GLFW_KEY_TAB: selected_ = (selected_ + 1) % 4; return Key::Used;
+    case GLFW_KEY_BACKSPACE: warp.corners = maths::OutputWarp{}.corners; return Key::Used;
     case GLFW_KEY_LEFT: step.x = -pixel.x; break;
     case GLFW_KEY_RIGHT: step.x = pixel.x; break;
     case GLFW_KEY_UP: step.y = -pixel.y; break;
@@ -76,7 +86,7 @@ void ProjectorSetup::draw(const maths::OutputWarp& warp, VkExtent2D output, std:
   }
   const std::string text = fmt::format(
       "PROJECTOR SETUP: {}\ndrag each corner onto the screen's corner\narrows nudge it (Shift: 10 px), "
-      "Tab: the next\nEnter keeps the pin, Esc undoes it{}",
+      "Tab: the next\nBackspace: the unwarped corners\nEnter keeps the pin, Esc undoes it{}",
       name, outputs > 1 ? "\nF7 keeps it and sets up the next output" : "");
   const char* help = text.c_str();
   const ImVec2 size = ImGui::CalcTextSize(help);

@@ -9,6 +9,7 @@
 #include "audio/wav.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/printable.h"
 #include "film/film_format.h"
 #include "host/checkpoint.h"
 #include "host/event_log.h"
@@ -62,11 +63,11 @@ std::optional<uint32_t> resumeFromCheckpoint(Offscreen& offscreen, audio::Offlin
   const Checkpoint checkpoint = readCheckpoint(path, film);
   if (checkpoint.frame != *at || checkpoint.scene != offscreen.scene().name)
     throw Error(fmt::format("Checkpoint {} holds frame {} of {}, not what its name says: delete it.", path.string(),
-                            checkpoint.frame, checkpoint.scene));
+                            checkpoint.frame, printable(checkpoint.scene)));
   const std::string device = offscreen.deviceName();
   if (checkpoint.device != device)
     std::fprintf(stderr, "vitrine: %s was simulated on %s, this run is on %s: its frames match a whole run only "
-                 "where both devices compute alike\n", path.filename().c_str(), checkpoint.device.c_str(), device.c_str());
+                 "where both devices compute alike\n", path.filename().c_str(), printable(checkpoint.device).c_str(), device.c_str());
   for (const audio::Command& command : checkpoint.sound) sound.post(command);
   try {
     offscreen.restoreSimulation(uint64_t(*at) * spp, checkpoint.simulation);

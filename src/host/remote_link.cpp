@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/printable.h"
 #include "host/cost_guard.h"
 #include "host/user_presets.h"
 
@@ -96,11 +97,13 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
         lastTouch_ = Clock::now();
         break;
     }
-    if (!refused.empty()) control_.tell(command.client, refused);
-    if (!refused.empty() && (++refused_ <= kRefusalsLogged || refused_ % 100 == 0))
-      std::fprintf(stderr, "vitrine: remote %s refused: %s (%zu refused so far)\n", command.client.c_str(),
-                   refused.c_str(), refused_);
+    if (refused.empty()) continue;
+    control_.tell(command.client, refused);
+    ++refused_;
+    logRefusal(command.client, refused);
   }
+  // What the OSC server refused before it reached here: its sender has no reply channel but the console.
+  for (const remote::RemoteInbox::Refusal& refusal : control_.drainRefusals()) logRefusal(refusal.client, refusal.reason);
   if (!applied.values.empty() || applied.scene) publish(renderer, true);
   return applied;
 }
@@ -135,6 +138,13 @@ std::string RemoteLink::preset(SceneRenderer& renderer, const remote::RemoteComm
   return refused;
 }
 
+void RemoteLink::logRefusal(const std::string& client, const std::string& why) {
+  if (++logged_ > kRefusalsLogged && logged_ % 100 != 0) return;
+  // printable: a refusal may quote what a client sent (an OSC address holding an escape sequence).
+  std::fprintf(stderr, "vitrine: remote %s refused: %s (%zu refused so far)\n", client.c_str(), printable(why).c_str(),
+               size_t(control_.stats().refused) + refused_);
+}
+
 params::KeyValues RemoteLink::applyWaiting(SceneRenderer& renderer, double frameMs) {
   params::KeyValues applied;
   for (auto& value : waiting_.take(renderer.info().name)) {
@@ -167,7 +177,10 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
   std::vector<std::string> userPresets;
   if (presets_)
     for (const params::UserPreset* preset : presets_->presetsOf(renderer.info().name)) userPresets.push_back(preset->name);
-  control_.publish({std::string(renderer.info().name), params::snapshot(renderer.parameters()), mappings_, std::move(userPresets)});
+  params::KeyValues values = params::snapshot(renderer.parameters());
+  const params::Schema& schema = *renderer.parameters().schema;
+  for (auto& [key, value] : values) value = params::remoteView(*schema.find(key), std::move(value));
+  control_.publish({std::string(renderer.info().name), std::move(values), mappings_, std::move(userPresets)});
 }
 
 }  // namespace vitrine::host

@@ -59,13 +59,16 @@ class RemoteLink {
  private:
   std::string preset(SceneRenderer& renderer, const remote::RemoteCommand& command, RemoteApplied& applied,
                      double frameMs);
+  // One console line per refusal, the first kRefusalsLogged then every hundredth: no flood reaches it.
+  void logRefusal(const std::string& client, const std::string& why);
   remote::RemoteControl control_;
   params::PresetStore* presets_ = nullptr;
   remote::WaitingValues waiting_;  // bounded: last value per key, capped per client and in all
   std::optional<glm::vec2> touch_;  // the latest pointer position from a phone
   bool down_ = false, pressed_ = false;
   std::chrono::steady_clock::time_point lastTouch_{}, lastPublish_{};
-  size_t refused_ = 0;
+  size_t refused_ = 0;  // refused here (the servers count theirs in RemoteStats)
+  size_t logged_ = 0;   // refusals of either kind that reached logRefusal
   std::vector<std::string> mappings_;
   // Saves and deletes write files: a few a second in all, whatever address each comes from.
   remote::TokenBucket presetWrites_{kPresetWrites};

@@ -1,17 +1,21 @@
 #pragma once
 // Which quality tier "auto" picked, for the menu: the scenes' AdaptiveQuality reports each change as a
-// "tier" event (from, to); a scene made afresh starts at the high tier.
+// "tier" event (from, to); a scene made afresh starts at the device's starting tier
+// (AdaptiveQuality::startingTier: low on a CPU device, else high), which no event reports.
 #include "params/schema.h"
 #include "scenes/scene_events.h"
 
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace vitrine::host {
 
 class TierWatch final : public EventSink {
  public:
+  explicit TierWatch(std::string startingTier = "high") : start_(std::move(startingTier)) {}
+  void setStartingTier(std::string tier) { start_ = std::move(tier); }
   void emit(double /*time*/, std::string_view scene, const SceneEvent& event) override {
     if (event.name != "tier") return;
     if (const EventValue* to = event.find("to"))
@@ -24,12 +28,13 @@ class TierWatch final : public EventSink {
       if (key == "tier") {
         if (value != "auto") return {};
         const auto it = tiers_.find(scene);
-        return "auto: " + (it == tiers_.end() ? std::string("high") : it->second);
+        return "auto: " + (it == tiers_.end() ? start_ : it->second);
       }
     return {};
   }
 
  private:
+  std::string start_;
   std::map<std::string, std::string, std::less<>> tiers_;
 };
 

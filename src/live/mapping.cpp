@@ -210,6 +210,8 @@ std::string checkMapping(const Mapping& mapping, const SceneInfo& scene) {
 
 std::vector<Mapping> parseMappingText(std::string_view text, const std::string& name) {
   std::vector<Mapping> mappings;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark, as editors write
+  if (text.ends_with('\n')) text.remove_suffix(1);                 // a final newline ends the last line
   size_t lineNumber = 0;
   for (std::string_view line : split(text, '\n')) {
     ++lineNumber;
@@ -238,8 +240,8 @@ std::vector<Mapping> parseMappingText(std::string_view text, const std::string& 
 }
 
 std::vector<Mapping> loadMappingFile(const std::filesystem::path& path) {
-  try {
-    return parseMappingText(readBoundedFile(path, kMaxLines * kMaxLineLength), path.string());
+  try {  // each line may end in CR LF
+    return parseMappingText(readBoundedFile(path, kMaxLines * (kMaxLineLength + 2)), path.string());
   } catch (const FileRefused& refused) {
     throw Error(fmt::format("Cannot read the mapping file {}: {}", path.string(), refused.why));
   }

@@ -98,9 +98,22 @@ std::string Param::typeName() const {
     case Kind::Bool: return "bool";
     case Kind::Choice: return "choice " + joined(choices, "|");
     case Kind::Colour: return "colour #rrggbb";
-    case Kind::Custom: return "custom";
+    case Kind::Custom: return has(kNamesFile) ? "file or " + joined(builtIns, "|") : "custom";
   }
   return "?";
+}
+
+std::string remoteProblem(const Param& param, std::string_view value) {
+  if (!param.has(kNamesFile) || std::find(param.builtIns.begin(), param.builtIns.end(), value) != param.builtIns.end())
+    return {};
+  // Judged before anything looks at the value: no path is ever opened, resolved or told apart.
+  return fmt::format("{}: a remote client may choose only {}; files are chosen at the gallery", param.key,
+                     joined(param.builtIns, ", "));
+}
+
+std::string remoteView(const Param& param, std::string value) {
+  if (!remoteProblem(param, value).empty()) return "a file";
+  return value;
 }
 
 const Param* Schema::find(std::string_view key) const {

@@ -38,6 +38,7 @@ enum Flag : uint32_t {
   kApplyOnRelease = 1u << 1,  // the panel applies the value when the widget is released, not per step
   kRebuilds = 1u << 2,        // changing it rebuilds GPU resources (implies apply-on-release in the panel)
   kTransient = 1u << 3,       // not saved in the settings file (camera pins, drags, debug state)
+  kNamesFile = 1u << 4,       // the value may name a file on this computer: see fileParam
 };
 
 // One parameter: metadata plus type-erased access to its field inside a settings struct. Made by the
@@ -50,6 +51,7 @@ struct Param {
   Kind kind = Kind::Float;
   double min = 0.0, max = 0.0;       // Float and Int: inclusive range, the same for every front end
   std::vector<std::string> choices;  // Choice: the names, in the enum's order
+  std::vector<std::string> builtIns;  // kNamesFile: the values that name no file ("gradient", "photo_studio")
   uint32_t flags = 0;
   std::string defaultText;  // canonical text of the default
 
@@ -129,6 +131,10 @@ template <typename S> Param intParam(Meta meta, int S::*field, int min, int max)
 template <typename S> Param boolParam(Meta meta, bool S::*field);
 // An enum (or integer, or bool) field whose values are 0..names.size()-1.
 template <typename S, typename E> Param choiceParam(Meta meta, E S::*field, std::vector<std::string> names);
+// A text field that is one of `builtIns` or the path of a file or folder on this computer (glass'
+// background image, its panorama). Only the person at the computer may name a file: remote clients
+// may set only the built-in names (remoteProblem), and are told nothing about any path.
+template <typename S> Param fileParam(Meta meta, std::string S::*field, std::vector<std::string> builtIns);
 // A colour as the panel's colour picker edits it and text spells it: "#rrggbb", sRGB-encoded values
 // 0..1 in the field (a shader decodes them). Defaults are best written with hexColour(0xrrggbb).
 template <typename S> Param colourParam(Meta meta, glm::vec3 S::*field);
@@ -161,6 +167,13 @@ void resetToDefaults(const Bound& bound);  // every parameter; defaults pass any
 std::string resetToDefault(const Bound& bound, std::string_view key, const Check& check = nullptr);
 // Applies a preset's values as one batch through applyValues; an unknown name returns the list of presets.
 std::string applyPreset(const Bound& bound, std::string_view name, const Check& check = nullptr);
+
+// Whether a remote client (OSC, the page's socket) may set `param` to `value`: empty when it may, else
+// one refusal that is the same for every path a client could try, so it learns nothing of this
+// computer's files. Every parameter but a kNamesFile one accepts what its parser accepts.
+std::string remoteProblem(const Param& param, std::string_view value);
+// The value as remote clients are shown it: a file's path is this computer's business ("a file").
+std::string remoteView(const Param& param, std::string value);
 
 // Canonical number formatting shared by every float parameter: the shortest text that reads back to
 // the same float ("0.05", not "0.050000001").

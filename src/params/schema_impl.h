@@ -143,4 +143,21 @@ Param customParam(Meta meta, T S::*field, std::function<bool(std::string_view, T
   return detail::bindField<S, T>(std::move(meta), Kind::Custom, field, std::move(parse), std::move(format));
 }
 
+template <typename S> Param fileParam(Meta meta, std::string S::*field, std::vector<std::string> builtIns) {
+  meta.flags |= kNamesFile;
+  Param param = detail::bindField<S, std::string>(
+      std::move(meta), Kind::Custom, field,
+      [](std::string_view text, std::string& value, std::string* error) {
+        if (text.empty()) {
+          if (error) *error = "expected a name or a path";
+          return false;
+        }
+        value = std::string(text);
+        return true;
+      },
+      [](const std::string& value) { return value; });
+  param.builtIns = std::move(builtIns);
+  return param;
+}
+
 }  // namespace vitrine::params

@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
+#include "core/printable.h"
 
 #include <fmt/format.h>
 
@@ -142,12 +143,13 @@ namespace {
 void loadScene(const std::string& where, const std::string& name, const Json& values, const Schema& schema,
                LoadResult& result) {
   if (!values.is_object()) {
-    result.warnings.push_back(fmt::format("{}: scenes.{} is {}, not an object; using its defaults", where, name, values.type_name()));
+    result.warnings.push_back(fmt::format("{}: scenes.{} is {}, not an object; using its defaults", where, printable(name), values.type_name()));
     return;
   }
   Json unknown = Json::object();
   for (const ValueProblem& problem : checkSceneValues(values, schema, result.settings.scenes[name], unknown))
-    result.warnings.push_back(fmt::format("{}: {}.{}={}: {}; using the default", where, name, problem.key, problem.value, problem.why));
+    result.warnings.push_back(fmt::format("{}: {}.{}={}: {}; using the default", where, printable(name),
+                                              printable(problem.key), printable(problem.value), printable(problem.why)));
   for (const auto& [key, value] : unknown.items()) result.settings.unknown["scenes"][name][key] = value;
 }
 
@@ -203,7 +205,7 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
       if (!value.is_string())
         result.warnings.push_back(fmt::format("{}: scene: expected a string, found {}; using the default", where, value.type_name()));
       else if (!schemaFor || !schemaFor(value.get<std::string>()))
-        result.warnings.push_back(fmt::format("{}: scene: no scene '{}'; using the default", where, value.get<std::string>()));
+        result.warnings.push_back(fmt::format("{}: scene: no scene '{}'; using the default", where, printable(value.get<std::string>())));
       else
         settings.scene = value.get<std::string>();
     } else if (key == "scenes") {
@@ -225,7 +227,7 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
         }
         for (const auto& line : lines) {
           if (line.is_string()) settings.mappings[name].push_back(line.get<std::string>());
-          else result.warnings.push_back(fmt::format("{}: mappings.{}: expected lines of text, found {}; dropped", where, name, line.type_name()));
+          else result.warnings.push_back(fmt::format("{}: mappings.{}: expected lines of text, found {}; dropped", where, printable(name), line.type_name()));
         }
       }
     } else if (key == "live" && value.is_object()) {
@@ -237,7 +239,7 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
     } else if (key == "outputs" && value.is_object()) {
       for (const auto& [name, warp] : value.items()) {
         if (warp.is_object()) settings.outputs[name] = warp;
-        else result.warnings.push_back(fmt::format("{}: outputs.{}: expected an object, found {}; dropped", where, name, warp.type_name()));
+        else result.warnings.push_back(fmt::format("{}: outputs.{}: expected an object, found {}; dropped", where, printable(name), warp.type_name()));
       }
     } else {
       settings.unknown[key] = value;

@@ -42,6 +42,11 @@ nlohmann::json paramJson(const params::Param& param) {
     out["max"] = param.max;
   }
   if (param.kind == params::Kind::Choice) out["choices"] = param.choices;
+  if (param.has(params::kNamesFile)) {  // a client picks among the built-in names; files are the gallery's
+    out["kind"] = "choice";
+    out["choices"] = param.builtIns;
+    out["default"] = params::remoteView(param, param.defaultText);
+  }
   return out;
 }
 
@@ -111,10 +116,13 @@ std::string Catalogue::check(const RemoteCommand& command) const {
   switch (command.kind) {
     case Kind::Scene: return {};
     case Kind::Set: {
-      if (!schema.find(command.key))
+      const params::Param* param = schema.find(command.key);
+      if (!param)
         return fmt::format("{}: unknown parameter '{}'", scene->name, command.key.substr(0, kMaxNameLength));
       if (command.value.size() > kMaxValueLength)
         return fmt::format("{}.{}: the value is longer than {} characters", scene->name, command.key, kMaxValueLength);
+      if (std::string why = params::remoteProblem(*param, command.value); !why.empty())
+        return fmt::format("{}.{}", scene->name, why);
       const auto scratch = schema.makeDefaults();
       try {
         if (std::string why = params::applyValues({&schema, scratch.get()}, {{command.key, command.value}});

@@ -18,4 +18,16 @@ std::vector<RemoteCommand> RemoteInbox::drain() {
   return taken;
 }
 
+void RemoteInbox::refused(Refusal refusal) {
+  std::lock_guard lock(mutex_);
+  if (refusals_.size() < kRefusalNotes) refusals_.push_back(std::move(refusal));
+}
+
+std::vector<RemoteInbox::Refusal> RemoteInbox::drainRefusals() {
+  std::vector<Refusal> taken;
+  std::lock_guard lock(mutex_);
+  taken.swap(refusals_);
+  return taken;
+}
+
 }  // namespace vitrine::remote

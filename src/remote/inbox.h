@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <mutex>
+#include <string>
 #include <vector>
 
 namespace vitrine::remote {
@@ -19,10 +20,20 @@ class RemoteInbox {
   // The main thread: everything queued, oldest first. Never blocks for longer than a swap.
   std::vector<RemoteCommand> drain();
 
+  // Why a server refused a command of a client with no reply channel (OSC), for the main thread to log:
+  // the first kRefusalNotes since the last drain are kept, later ones only counted (RemoteStats).
+  struct Refusal {
+    std::string client, reason;
+  };
+  static constexpr size_t kRefusalNotes = 16;
+  void refused(Refusal refusal);
+  std::vector<Refusal> drainRefusals();
+
  private:
   const size_t capacity_;
   std::mutex mutex_;
   std::vector<RemoteCommand> queue_;
+  std::vector<Refusal> refusals_;
 };
 
 }  // namespace vitrine::remote

@@ -113,8 +113,9 @@ void OscServer::handleMessage(std::span<const std::byte> bytes, const std::strin
     count(stats_.malformed);
     return;
   }
-  if (!catalogue_.check(*parsed.command).empty()) {
+  if (std::string why = catalogue_.check(*parsed.command); !why.empty()) {
     count(stats_.refused);
+    inbox_.refused({"osc " + sender, std::move(why)});  // OSC has no reply: the gallery's console says it
     return;
   }
   parsed.command->client = "osc " + sender;

@@ -49,6 +49,7 @@ class RemoteControl {
   const Catalogue& catalogue() const { return *catalogue_; }
 
   std::vector<RemoteCommand> drain() { return inbox_.drain(); }
+  std::vector<RemoteInbox::Refusal> drainRefusals() { return inbox_.drainRefusals(); }
   void publish(PageState state) { web_->publish(std::move(state)); }
   // Why the gallery refused a client's command, told to that client where it can be (a page; an OSC
   // controller has no reply channel: the host logs it).

@@ -3,7 +3,7 @@
 # XTEST (xtest.py). F12 saves what the window shows at the window's size, whatever the scene renders
 # at (bloom's low tier renders 160x90 in a 320x180 window), names the render size in the PNG's
 # metadata and prints the absolute path on the console, with the UI shown and hidden alike. F9 twice
-# captures a sequence; the console's last word on it counts the frames that are on disk.
+# captures a sequence; the console's last word on it, said as soon as it is true, counts the frames on disk.
 set -u
 vitrine=$1; out=$2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -23,7 +23,10 @@ keys() { python3 "$here/xtest.py" "$display" "$@" || fail "xtest $*"; }
 wait_for_showing "$log"
 keys key:F12 sleep:3 shot:0,0,160,40,"$out/ui-shown.ppm" key:Tab sleep:1 shot:0,0,160,40,"$out/ui-hidden.ppm" \
   key:F12 sleep:3 key:Tab
-keys key:F9 sleep:3 key:F9 sleep:4 key:Escape
+keys key:F9 sleep:3 key:F9 sleep:4
+# Said on the console once the last frame is on disk, while the gallery runs (not only at quit).
+grep -q "^vitrine: captured $out/work/captures/.*written" "$log" || fail "the capture's summary waited for quit"
+keys key:Escape
 for _ in $(seq 100); do kill -0 $app 2>/dev/null || break; sleep 0.1; done
 wait $app; code=$?
 

@@ -15,6 +15,7 @@
 #include "host/menu.h"
 #include "host/param_panel.h"
 #include "host/plural.h"
+#include "host/tier_watch.h"
 #include "scenes/scene.h"
 
 namespace vitrine::host {
@@ -229,6 +230,20 @@ TEST(Wording, CountsAreSingularForOne) {
   EXPECT_EQ(counted(1, "message"), "1 message");
   EXPECT_EQ(counted(0, "message"), "0 messages");
   EXPECT_EQ(counted(8, "frame"), "8 frames");
+}
+
+// The quality choice reads the tier auto runs at: on a CPU device a scene starts low without any
+// "tier" event, and the menu must say so, as the scene's own line under it does.
+TEST(TierWatch, AutoStartsAtTheDevicesStartingTier) {
+  TierWatch watch;
+  watch.setStartingTier("low");
+  watch.started("kifs");
+  EXPECT_EQ(watch.describe("kifs", {{"tier", "auto"}}), "auto: low");
+  watch.emit(1.0, "kifs", {"tier", {{"from", std::string("low")}, {"to", std::string("medium")}}});
+  EXPECT_EQ(watch.describe("kifs", {{"tier", "auto"}}), "auto: medium");
+  EXPECT_EQ(watch.describe("kifs", {{"tier", "high"}}), "");
+  watch.started("kifs");  // made afresh: back to where a new scene starts
+  EXPECT_EQ(watch.describe("kifs", {{"tier", "auto"}}), "auto: low");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // diamond), and each turns on the original's smooth curvature.
 #include "params/schema.h"
 #include "params/schema_impl.h"
+#include "scenes/glass/input.h"
 #include "scenes/glass/settings.h"
 #include "scenes/glass/studio.h"
 
@@ -83,6 +84,19 @@ TEST(GlassPresets, AllTurnOnSmoothCurvatureAsTheOriginalsDo) {
     EXPECT_TRUE(withPreset(round, name).smoothCurvature) << name;
   }
   EXPECT_TRUE(Settings{}.smoothCurvature) << "the original's default";
+}
+
+// T, S, B and F always do what they say: with pills showing, T shows the diamond from the top.
+TEST(GlassKeys, AViewKeyShowsTheDiamond) {
+  Settings settings;
+  settings.shape = glass::ShapeKind::Pill;
+  glass::KeyRequests keys;
+  glass::applyDiamondView(keys, settings);
+  EXPECT_EQ(settings.shape, glass::ShapeKind::Pill);  // no key, no change
+  keys.diamondView = glass::DiamondView::Top;
+  glass::applyDiamondView(keys, settings);
+  EXPECT_EQ(settings.shape, glass::ShapeKind::Diamond);
+  EXPECT_EQ(settings.diamondView, glass::DiamondView::Top);
 }
 
 }  // namespace

@@ -111,6 +111,26 @@ TEST(LiveMapping, EverySceneAudioMappingFits) {
   EXPECT_GE(count, sceneRegistry().size());  // each scene plays with the music
 }
 
+// A file of exactly the most lines allowed, ending as text files do (a final newline, an editor's
+// UTF-8 byte-order mark), is accepted; one line more is refused on the line past the limit.
+TEST(LiveMapping, FileOfTheMostLinesWithAFinalNewlineAndAByteOrderMark) {
+  const auto dir = std::filesystem::temp_directory_path() / "vitrine-live-mapping-lines";
+  std::filesystem::create_directories(dir);
+  std::string text = "\xEF\xBB\xBF" "audio.bass=kifs.fold:1:1.1\n";
+  for (int line = 2; line <= 4096; ++line) text += "# a comment\n";
+  std::ofstream(dir / "full.map", std::ios::binary) << text;
+  EXPECT_NO_THROW({ EXPECT_EQ(loadMappingFile(dir / "full.map").size(), 1u); });
+  std::ofstream(dir / "over.map", std::ios::binary) << text << "# one more\n";
+  try {
+    loadMappingFile(dir / "over.map");
+    ADD_FAILURE() << "4,097 lines accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("over.map:4097: a mapping file has at most 4096 lines"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(LiveMapping, FileRoundTripsAndNamesTheBadLine) {
   const auto dir = std::filesystem::temp_directory_path() / "vitrine-live-mapping-test";
   std::filesystem::create_directories(dir);

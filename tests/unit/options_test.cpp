@@ -337,6 +337,16 @@ TEST(Options, BadInputIsAnError) {
   EXPECT_THROW(parse({"--seed"}), Error);
 }
 
+// An empty name would save nothing and say nothing: it is refused with the flag's name.
+TEST(Options, AnEmptyPresetNameIsRefused) {
+  try {
+    parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--save-preset", ""});
+    ADD_FAILURE() << "--save-preset \"\" accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--save-preset expects a name"), std::string::npos) << e.what();
+  }
+}
+
 TEST(OptionsGallery, ResetSettings) {
   EXPECT_FALSE(parse({}).resetSettings);
   EXPECT_TRUE(parse({"--reset-settings"}).resetSettings);

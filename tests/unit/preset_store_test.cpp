@@ -183,6 +183,30 @@ TEST(Playlist, LinesGiveScenePresetAndDwell) {
   EXPECT_EQ(entries, expected);
 }
 
+TEST(Playlist, AByteOrderMarkIsNotPartOfTheFirstScene) {
+  const auto entries = parsePlaylist("\xEF\xBB\xBFkifs sphere 20\nnoodles 5\n", "p.txt", kChecks);
+  const std::vector<PlaylistEntry> expected{{"kifs", "sphere", 20.0}, {"noodles", "", 5.0}};
+  EXPECT_EQ(entries, expected);
+}
+
+// What a playlist quotes back (a preset's name with an escape sequence, a name of a megabyte) reaches
+// the terminal as short, plain text.
+TEST(Playlist, RefusalsQuoteShortPrintableText) {
+  for (const std::string& preset : {std::string("\x1b]0;owned\x07"), std::string("caf\xc3\xa9 \xff"),
+                                   std::string(1 << 20, 'n')}) {
+    try {
+      parsePlaylist("kifs " + preset + " 10\n", "p.txt", kChecks);
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_LT(message.size(), 400u);
+      for (const char c : message)
+        EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f)
+            << "byte " << int(static_cast<unsigned char>(c)) << " in " << message.substr(0, 200);
+    }
+  }
+}
+
 TEST(Playlist, TheFirstBadLineIsRefusedByNumber) {
   const auto refusal = [](std::string_view text) {
     try {

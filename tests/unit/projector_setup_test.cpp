@@ -94,5 +94,29 @@ TEST(ProjectorSetup, F7KeepsThisPinForTheNextOutput) {
   EXPECT_EQ(main, kept);
 }
 
+// A corner dragged onto the output's own corner lands exactly on it (the last pixel is 999 of 1000,
+// not the edge), and Backspace puts every corner back where an unwarped picture has them.
+TEST(ProjectorSetup, CornersSnapToTheEdgesAndBackspaceUnwarps) {
+  ProjectorSetup setup;
+  maths::OutputWarp warp;
+  setup.start(warp);
+  setup.pointer(at({990.0f, 490.0f}, true, true), warp);
+  ASSERT_EQ(setup.held(), 2);
+  setup.pointer(at({800.0f, 400.0f}, true), warp);
+  setup.pointer(at({999.0f, 499.0f}, true), warp);
+  setup.pointer(at({999.0f, 499.0f}, false), warp);
+  EXPECT_EQ(warp.corners[2], glm::vec2(1.0f, 1.0f));
+  setup.pointer(at({1.0f, 1.0f}, true, true), warp);
+  setup.pointer(at({100.0f, 60.0f}, false), warp);
+  setup.pointer(at({990.0f, 10.0f}, true, true), warp);
+  setup.pointer(at({900.0f, 50.0f}, false), warp);
+  ASSERT_NE(warp, maths::OutputWarp{});
+  warp.quarterTurns = 1;  // only the corners go back
+  EXPECT_EQ(setup.key(GLFW_KEY_BACKSPACE, false, kProjectorOutput, warp), ProjectorSetup::Key::Used);
+  EXPECT_EQ(warp.corners, maths::OutputWarp{}.corners);
+  EXPECT_EQ(warp.quarterTurns, 1);
+  EXPECT_TRUE(setup.active());
+}
+
 }  // namespace
 }  // namespace vitrine::host

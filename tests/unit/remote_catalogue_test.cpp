@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -98,6 +100,42 @@ TEST(RemoteCatalogue, RefusesValuesTheSchemaRefuses) {
   EXPECT_NE(catalogue.check(set("bloom", "mute", "maybe")), "");
   EXPECT_NE(catalogue.check(set("noodles", "grid", "0x0x0")), "");
   EXPECT_NE(catalogue.check(set("kifs", "step", std::string(kMaxValueLength + 1, '1'))), "");
+}
+
+// A value that names a file (glass' background image, its panorama) is the person at the gallery's to
+// choose: a client may pick only the built-in names, and every path gets the same refusal, so nothing
+// tells a file that exists from one that does not, a folder from a file, or a picture from a secret.
+TEST(RemoteCatalogue, FilesAreNotARemoteClientsToName) {
+  const Catalogue catalogue;
+  EXPECT_EQ(catalogue.check(set("glass", "background", "checker")), "");
+  EXPECT_EQ(catalogue.check(set("glass", "background", "page")), "");
+  EXPECT_EQ(catalogue.check(set("glass", "panorama", "photo_studio")), "");
+  EXPECT_EQ(catalogue.check(set("glass", "panorama", "city")), "");
+  const auto photo = std::filesystem::temp_directory_path() / "vitrine_remote_photo.png";
+  std::ofstream(photo) << "not really a picture";
+  for (const std::string key : {"background", "panorama"}) {
+    std::set<std::string> refusals;
+    for (const std::string& path : {photo.string(), std::string("/etc/passwd"), std::string("/no/such/file.png"),
+                                   std::string("/tmp"), std::string("~/.bashrc"), std::string("/dev/zero"),
+                                   std::string("studio.exr"), std::string("")}) {
+      const std::string why = catalogue.check(set("glass", key, path));
+      EXPECT_NE(why, "") << key << "=" << path;
+      if (!path.empty()) {
+        EXPECT_EQ(why.find(path), std::string::npos) << why;
+      }
+      refusals.insert(why);
+    }
+    EXPECT_EQ(refusals.size(), 1u) << "the refusals tell paths apart: " << *refusals.begin();
+  }
+  std::filesystem::remove(photo);
+  // The page offers the built-in names as a list, never a text field for a path.
+  const auto json = nlohmann::json::parse(catalogue.json());
+  for (const auto& scene : json["scenes"])
+    for (const auto& param : scene["params"])
+      if (scene["name"] == "glass" && param["key"] == "background") {
+        EXPECT_EQ(param["kind"], "choice");
+        EXPECT_EQ(param["choices"], (std::vector<std::string>{"page", "photo", "gradient", "checker"}));
+      }
 }
 
 TEST(RemoteCatalogue, RefusesWrongArityAndBadPointers) {

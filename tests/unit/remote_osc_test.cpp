@@ -163,6 +163,19 @@ TEST_F(RemoteOsc, BadDatagramsAreCountedAndIgnored) {
   EXPECT_EQ(inbox.drain().at(0).value, "4");
 }
 
+// OSC has no reply channel: a refused value is kept (a few at a time) for the gallery's console to say why.
+TEST_F(RemoteOsc, RefusalsAreKeptForTheConsole) {
+  OscServer server({"127.0.0.1", 0}, catalogue, inbox, stats);
+  UdpSender sender(server.port());
+  for (int i = 0; i < 40; ++i) sender.send(osc("/vitrine/kifs/step", [](lo_message m) { lo_message_add_int32(m, 12); }));
+  ASSERT_TRUE(eventually([&] { return stats.snapshot().refused == 40; }));
+  const auto refusals = inbox.drainRefusals();
+  ASSERT_EQ(refusals.size(), RemoteInbox::kRefusalNotes);
+  EXPECT_EQ(refusals[0].client, "osc 127.0.0.1");
+  EXPECT_NE(refusals[0].reason.find("kifs.step=12: expected a whole number from 1 to 9"), std::string::npos);
+  EXPECT_TRUE(inbox.drainRefusals().empty());
+}
+
 TEST_F(RemoteOsc, FloodsAreRateLimited) {
   OscServer server({"127.0.0.1", 0}, catalogue, inbox, stats, {.perSender = {.rate = 1, .burst = 5}});
   UdpSender sender(server.port());

@@ -219,6 +219,23 @@ TEST_F(SettingsFile, BadValuesAreDroppedWithOneWarningEach) {
   }
 }
 
+// Whatever the file holds reaches the terminal as short, printable text: no escape sequences, no raw
+// bytes above ASCII, no line of a megabyte.
+TEST_F(SettingsFile, WarningsQuoteShortPrintableText) {
+  const std::string big(100000, 'x');
+  writeAll(path_, "{\"version\": 1, \"scene\": \"\\u001b]0;owned\\u0007\xc3\xa9" + big + "\", "
+                  "\"scenes\": {\"kifs\": {\"tier\": \"\\u001b[2J\xc3\xa9" + big + "\"}}, "
+                  "\"outputs\": {\"\\u001b[31m\xc3\xa9" + big + "\": 3}}");
+  const LoadResult result = load();
+  ASSERT_EQ(result.warnings.size(), 3u);
+  for (const std::string& warning : result.warnings) {
+    EXPECT_LT(warning.size(), 600u);
+    for (const char c : warning)
+      EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f)
+          << "byte " << int(static_cast<unsigned char>(c)) << " in " << warning.substr(0, 200);
+  }
+}
+
 TEST_F(SettingsFile, NumbersAreCanonicalised) {
   writeAll(path_, R"({"scenes": {"kifs": {"step": 3, "target_ms": 0.1000000001, "label": "x"}}})");
   const LoadResult result = load();

@@ -96,7 +96,7 @@ try:
             time.sleep(0.1)
     capabilities = {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": {
         "binary": "/usr/bin/chromium",
-        "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=420,860",
+        "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=412,860",
                  f"--user-data-dir={profile}"]}}}}
     session = http("POST", wd + "/session", capabilities)["value"]["sessionId"]
     s = f"{wd}/session/{session}"
@@ -112,6 +112,14 @@ try:
 
     http("POST", s + "/url", {"url": url})
     find('body[data-connection="live"][data-scene="neon"]')
+    # A phone's width (412 px) shows every scene's button, the one showing among them.
+    hidden = http("POST", s + "/execute/sync", {"script": """
+        const width = document.documentElement.clientWidth;
+        return [...document.querySelectorAll("#scenes button")]
+            .filter(b => { const r = b.getBoundingClientRect(); return r.left < 0 || r.right > width; })
+            .map(b => b.textContent);""", "args": []})["value"]
+    if hidden:
+        fail(f"scene buttons outside a 412 px page: {hidden}")
     # The live mappings playing the scene are listed (docs/LIVE.md); an OSC fader drives one.
     item = find("#mappings li")
     if http("GET", f"{s}/element/{item}/text")["value"] != "osc.fader=neon.bloom_strength:0:2":

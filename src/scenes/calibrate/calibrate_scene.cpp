@@ -54,7 +54,7 @@ class CalibrateScene final : public Scene {
     const float height = float(frame.target.extent2d().height);
     text::TextDraw caption;
     caption.layout = &caption_;
-    caption.position = {0.5f, 0.556f};
+    caption.position = {0.5f, 0.566f};  // in the dark band, below the centre cross's arm
     caption.normalized = true;
     caption.sizePx = height * 0.032f;
     caption.color = glm::vec4(0.85f, 0.85f, 0.85f, 1.0f);

@@ -105,7 +105,7 @@ void GlassScene::applyKeys(const KeyRequests& keys) {
     resetHistory_ = true;
   }
   if (keys.nextPhoto) pictures_.nextPhoto();
-  if (keys.diamondView && settings_.shape == ShapeKind::Diamond) settings_.diamondView = *keys.diamondView;
+  applyDiamondView(keys, settings_);
   if (keys.zHeld != moment_.zHeld) resetHistory_ = true;
   moment_.zHeld = keys.zHeld;
 }
@@ -191,7 +191,7 @@ void GlassScene::drawPanel() {
   if (!pictures_.backgroundProblem().empty()) warning(pictures_.backgroundProblem());
   if (settings_.environment && !pictures_.panoramaProblem().empty()) warning(pictures_.panoramaProblem());
   if (settings_.stopWorld) ImGui::Text("accumulated %u frames", pausedFrames_);
-  ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F diamond views");
+  ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F the diamond from the top, side, below or tumbling");
 }
 
 constexpr SceneAction kActions[] = {
@@ -200,7 +200,7 @@ constexpr SceneAction kActions[] = {
 };
 
 constinit const SceneInfo kSceneInfo = sceneInfo<GlassScene>("glass", "Spectral Glass", 2, &schema,
-    "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F turn "
-    "the diamond, R shows the next photo; drop an image (or an EXR panorama) on the window.", kActions);
+    "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F show "
+    "the diamond from the top, side, below or tumbling, R shows the next photo; drop an image (or an EXR panorama) on the window.", kActions);
 
 }  // namespace vitrine::glass

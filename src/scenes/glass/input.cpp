@@ -24,6 +24,12 @@ KeyRequests readKeys(const FrameInput& input) {
   return requests;
 }
 
+void applyDiamondView(const KeyRequests& keys, Settings& settings) {
+  if (!keys.diamondView) return;
+  settings.shape = ShapeKind::Diamond;
+  settings.diamondView = *keys.diamondView;
+}
+
 void takeDroppedFiles(const FrameInput& input, Settings& settings) {
   for (const std::string& path : input.droppedFiles) {
     const bool exr = std::filesystem::path(path).extension() == ".exr";

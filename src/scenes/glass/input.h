@@ -11,11 +11,14 @@ namespace vitrine::glass {
 struct KeyRequests {
   bool shuffle = false;                    // Space, or the "shuffle" action
   bool nextPhoto = false;                  // R, or the "next_photo" action
-  std::optional<DiamondView> diamondView;  // T, S, B, F: for the diamond only
+  std::optional<DiamondView> diamondView;  // T, S, B, F: the diamond, seen from there
   bool zHeld = false;                      // three wavelengths without jitter while held
 };
 
 KeyRequests readKeys(const FrameInput& input);
+// A view key shows the diamond from that view, whatever the shape was: a key that silently did nothing
+// while pills or plates were showing read as a broken key.
+void applyDiamondView(const KeyRequests& keys, Settings& settings);
 
 // A dropped panorama (EXR) lights the scene when the environment is on; anything else is a backdrop.
 void takeDroppedFiles(const FrameInput& input, Settings& settings);

@@ -7,16 +7,11 @@
 namespace vitrine::glass {
 namespace {
 
-bool parseText(std::string_view text, std::string& out, std::string* error) {
-  if (text.empty()) {
-    if (error) *error = "expected a name or a path";
-    return false;
-  }
-  out = std::string(text);
-  return true;
+// The panoramas scripts/setup fetches (Blender's studio lights): names a remote client may choose.
+std::vector<std::string> panoramaBuiltIns() {
+  return {std::string(kStudioPanorama), "city", "courtyard", "forest", "interior", "night", "studio", "sunrise",
+          "sunset"};
 }
-
-std::string formatText(const std::string& value) { return value; }
 
 std::vector<std::string> materialNames() {
   std::vector<std::string> names{"custom"};
@@ -118,18 +113,18 @@ const params::Schema& schema() {
                                "diamond"},
                               &S::bounces, 1, 32));
     // background
-    s.add(params::customParam<S, std::string>(
+    s.add(params::fileParam<S>(
         {"background", "background", "page (text over a photo), photo (R cycles), gradient, checker, or an image "
          "file or folder (also: drop one on the window).", "background"},
-        &S::background, parseText, formatText));
+        &S::background, {"page", "photo", "gradient", "checker"}));
     s.add(params::boolParam<S>({"environment", "HDR environment", "An HDR panorama for background, refraction and "
                                 "reflection.", "background"},
                                &S::environment));
-    s.add(params::customParam<S, std::string>(
+    s.add(params::fileParam<S>(
         {"panorama", "panorama", "photo_studio (built in: a light cyclorama, softboxes and strip lights), a "
          "fetched panorama's name (studio, city, ...) or an equirectangular EXR.",
          "background"},
-        &S::panorama, parseText, formatText));
+        &S::panorama, panoramaBuiltIns()));
     s.add(params::floatParam<S>({"exposure", "exposure", "Multiplies the panorama.", "background", kLogarithmic},
                                 &S::exposure, 0.05, 8.0));
     s.add(params::floatParam<S>({"env_rotation", "rotation", "Turns the panorama about the vertical, radians.",
