@@ -464,6 +464,10 @@ Options parseOptions(int argc, const char* const* argv) {
       (void)film::resolveFilm(options.out, options.film, size.width, size.height);
       checkWritable(options.out);
     } else {
+      if (const std::string other = film::otherMediaExtension(options.out); !other.empty())
+        throw Error(fmt::format("record writes a film as .mp4, .mov or .mkv, or frames into a folder; '{}' names a {} "
+                                "file, which this build does not write: name the folder without {}.",
+                                options.out, other, std::filesystem::path(options.out).extension().string()));
       for (const std::string_view flag : kFilmFlags)
         if (isGiven(flag))
           throw Error(fmt::format("{} is for a film: --out NAME.mp4, .mov or .mkv, not the folder {}.", flag, options.out));
