@@ -163,6 +163,8 @@ int Gallery::run() {
     }
     frame();
   }
+  // What the scene holds now is what the settings file keeps, whatever changed it last.
+  if (hasScene_ && playlist_.empty()) rememberValues();
   device_.waitIdle();
   // What the viewer saw: frames a second from the first one shown to the last.
   if (frameCount_ > 1) {
@@ -253,7 +255,10 @@ void Gallery::frame() {
 // What the GPU has finished for this slot: its pass timings, and a screenshot taken in it.
 void Gallery::collect(uint32_t slot) {
   // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
-  if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_->timer().collect(slot);
+  if (slotSerial_[slot] == sceneSerial_) {
+    passes_ = renderer_->timer().collect(slot);
+    if (!passes_.empty()) ++timedFrames_;
+  }
   gpuMs_ = 0.0;
   for (const auto& pass : passes_) gpuMs_ += pass.ms;
   input_.lastGpuMs = gpuMs_;
@@ -276,10 +281,18 @@ void Gallery::simulate() {
   Pointer pointer = window_.takePointer();
   bool touched = touchedThisFrame(pointer);
   if (remote_) {
-    const RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
+    RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
     touched = touched || applied.touched;
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
+    // Values sent while this scene was hidden wait until its own frames are timed: the guard judges
+    // them by what a frame of this scene costs, not by the time of the scene shown before.
+    if (timedFrames_ >= kTimedFramesBeforeWaiting)
+      for (auto& value : remote_->applyWaiting(*renderer_, gpuMs_)) {
+        remoteKeys_[std::string(renderer_->info().name)].insert(value.first);
+        applied.values.push_back(std::move(value));
+      }
+    if (!applied.values.empty() && playlist_.empty()) rememberValues();  // saved like the panel's (--remote-saves)
     actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
     if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor

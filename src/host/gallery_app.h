@@ -153,6 +153,10 @@ class Gallery {
   double cpuMs_ = 0.0;
   double gpuMs_ = 0.0;  // the last finished frame's, all passes
   std::vector<gpu::PassTime> passes_;
+  uint32_t timedFrames_ = 0;  // frames of the scene showing whose GPU time has come back
+  // A scene's first frames build things (strands, lattices): the values sent while it was hidden are
+  // judged after these many of its frames are timed.
+  static constexpr uint32_t kTimedFramesBeforeWaiting = 4;
   std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
   Clock::time_point reloadNoted_{};
   std::string note_;  // where the last screenshot went, a key with no scene: shown for kNoteSeconds
