@@ -92,12 +92,22 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   if (!options.outputs.empty()) {
     std::vector<OutputPlacement> placements = readOutputs(options.outputs);
     for (size_t i = 0; i < placements.size(); ++i) {
-      if (!placements[i].warp) placements[i].warp = savedWarp(placements[i].name);
+      const std::string where = fmt::format("{}, output {}", options.outputs, i + 1);
+      if (const auto& window = placements[i].window) {
+        const uint32_t limit = device_.limits().maxImageDimension2D;
+        if (uint32_t((*window)[2]) > limit || uint32_t((*window)[3]) > limit)
+          throw Error(fmt::format("{}: a window of {}x{} is outside what {} supports (1 to {} per side).", where,
+                                  (*window)[2], (*window)[3], device_.properties().deviceName, limit));
+      }
       outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
       window_.takeKeysOf(outputs_.back()->handle());
+      OutputWindow& output = *outputs_.back();
+      if (placements[i].warp) checkWarpedFrame(device_, output.extent(), output.warp(), where);
+      else output.warp() = savedWarp(output.name(), output.extent()).value_or(maths::OutputWarp{});
     }
   }
-  if (!warp_) warp_ = savedWarp(kMainOutput);  // a file named on the command line wins
+  if (warp_) checkWarpedFrame(device_, window_.framebufferSize(), *warp_, options.outputWarp);
+  else warp_ = savedWarp(kMainOutput, window_.framebufferSize());  // a file named on the command line wins
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());

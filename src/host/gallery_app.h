@@ -70,7 +70,7 @@ class Gallery {
   VkExtent2D outputExtent(size_t output) const { return output == 0 ? swapchain_.extent() : outputs_[output - 1]->extent(); }
   // How the main window shows the frame: its own warp, or the one of the output being set up.
   const maths::OutputWarp* shownWarp() { return setup_.active() && setupOutput_ > 0 ? &warpOf(setupOutput_) : warp(); }
-  std::optional<maths::OutputWarp> savedWarp(std::string_view output);
+  std::optional<maths::OutputWarp> savedWarp(std::string_view output, VkExtent2D extent);
   void keepWarp(size_t output);
   void switchScene(const SceneInfo& info);
   void simulate();
