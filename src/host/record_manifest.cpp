@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/atomic_file.h"
+#include "app/options.h"
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -20,8 +21,6 @@ using nlohmann::json;
 constexpr int kManifestVersion = 1;
 constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
 constexpr uint32_t kMaxSide = 65536;  // past every device's largest image
-constexpr double kMaxFps = 1000.0;    // record's --fps bound
-constexpr uint32_t kMaxSpp = 256;     // record's --spp bound
 
 std::string readText(const std::filesystem::path& path) {
   std::error_code ec;
@@ -86,9 +85,9 @@ RecordManifest parseManifest(std::string_view text, std::string_view name) {
     manifest.width = whole("width", 1, kMaxSide);
     manifest.height = whole("height", 1, kMaxSide);
     manifest.fps = document.at("fps").get<double>();
-    if (!(manifest.fps > 0.0 && manifest.fps <= kMaxFps))
-      refuse(fmt::format("fps {}: frames a second are above 0 and at most {}", document.at("fps").dump(), kMaxFps));
-    manifest.spp = whole("spp", 1, kMaxSpp);
+    if (!(manifest.fps > 0.0 && manifest.fps <= kMaxRecordFps))
+      refuse(fmt::format("fps {}: frames a second are above 0 and at most {}", document.at("fps").dump(), kMaxRecordFps));
+    manifest.spp = whole("spp", 1, kMaxRecordSpp);
     manifest.seed = whole("seed", 0, std::numeric_limits<uint32_t>::max());
     manifest.time = document.at("time").get<double>();
     manifest.reducedMotion = document.at("reduced_motion").get<bool>();
