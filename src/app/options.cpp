@@ -398,7 +398,7 @@ Options parseOptions(int argc, const char* const* argv) {
     else if (arg == "--remote-bind") options.remoteBind = value(arg), options.remote = true;
     else if (arg == "--remote-saves") options.remoteSaves = true;
     else if (arg == "--remote-allow") options.remoteAllow.push_back(value(arg));
-    else if (arg == "--fps") options.fps = parsePositive(arg, value(arg), 1000.0);
+    else if (arg == "--fps") options.fps = parsePositive(arg, value(arg), kMaxRecordFps);
     else if (arg == "--seconds") options.seconds = parsePositive(arg, value(arg), 86400.0);
     else if (arg == "--spp") options.spp = parseWhole(arg, value(arg), 1);
     else if (arg == "--range") options.range = parseRange(value(arg));
@@ -449,7 +449,7 @@ Options parseOptions(int argc, const char* const* argv) {
     if (options.scene.empty()) throw Error("record needs --scene NAME.");
     if (options.out.empty()) throw Error("record needs --out FOLDER for the numbered frames.");
     if (!(options.seconds > 0.0)) throw Error("record needs --seconds S, the film's length.");
-    if (options.spp > 256) throw Error("--spp takes 1 to 256 samples a frame.");
+    if (options.spp > kMaxRecordSpp) throw Error(fmt::format("--spp takes 1 to {} samples a frame.", kMaxRecordSpp));
     if (options.checkpointsOnly && options.checkpointEvery == 0)
       throw Error("--checkpoints-only writes checkpoints: say how often with --checkpoint-every N.");
     if (film::isFilmName(options.out)) {
@@ -467,6 +467,10 @@ Options parseOptions(int argc, const char* const* argv) {
       (void)film::resolveFilm(options.out, options.film, size.width, size.height);
       checkWritable(options.out);
     } else {
+      if (const std::string other = film::otherMediaExtension(options.out); !other.empty())
+        throw Error(fmt::format("record writes a film as .mp4, .mov or .mkv, or frames into a folder; '{}' names a {} "
+                                "file, which this build does not write: name the folder without {}.",
+                                options.out, other, std::filesystem::path(options.out).extension().string()));
       for (const std::string_view flag : kFilmFlags)
         if (isGiven(flag))
           throw Error(fmt::format("{} is for a film: --out NAME.mp4, .mov or .mkv, not the folder {}.", flag, options.out));

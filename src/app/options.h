@@ -92,6 +92,8 @@ inline bool flashGuardOn(const Options& options) {
 
 // A record run's frame size when --size is not given.
 inline constexpr VkExtent2D kRecordSize{1280, 720};
+inline constexpr double kMaxRecordFps = 1000.0;  // record's --fps, and a record.json's fps
+inline constexpr uint32_t kMaxRecordSpp = 256;   // record's --spp, and a record.json's spp
 
 Options parseOptions(int argc, const char* const* argv);
 // The --set pairs that apply to `scene`, in command-line order: those naming it, and the unqualified

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cctype>
+#include <charconv>
 #include <regex>
 #include <cerrno>
 #include <random>
@@ -152,7 +153,12 @@ std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem:
     const std::string name = entry.path().filename().string();
     std::smatch match;
     if (!std::regex_match(name, match, temporaryPattern()) || match[1].str() != hostWord()) continue;
-    const unsigned long pid = std::stoul(match[2].str(), nullptr, 16);
+    // A process number too long for any system (a look-alike name someone else made) is not a writer's.
+    const std::string digits = match[2].str();
+    unsigned long pid = 0;
+    if (const auto [end, failed] = std::from_chars(digits.data(), digits.data() + digits.size(), pid, 16);
+        failed != std::errc() || end != digits.data() + digits.size())
+      continue;
     // Signal 0 only asks whether the process exists; EPERM means it does, under another user.
     if (pid == 0 || pid > 0x7fffffffUL || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;
     std::error_code gone;

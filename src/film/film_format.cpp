@@ -95,6 +95,17 @@ std::optional<Container> containerFromName(const std::filesystem::path& path) {
 
 bool isFilmName(const std::filesystem::path& path) { return containerFromName(path).has_value(); }
 
+std::string otherMediaExtension(const std::filesystem::path& path) {
+  static constexpr std::string_view kOthers[] = {
+      ".mp3", ".wav", ".flac", ".ogg", ".oga", ".opus", ".aac", ".m4a", ".wma", ".aif", ".aiff",        // sound
+      ".avi", ".webm", ".wmv", ".flv", ".mpg", ".mpeg", ".m4v", ".ogv", ".ts", ".mts", ".m2ts", ".3gp",  // film
+      ".gif", ".exr", ".png", ".jpg", ".jpeg", ".tif", ".tiff", ".webp"};                               // picture
+  const std::string extension = lowercase(path.extension().string());
+  for (const std::string_view other : kOthers)
+    if (extension == other) return extension;
+  return {};
+}
+
 std::string_view codecName(Codec codec) {
   for (const auto& [c, name] : kCodecs)
     if (c == codec) return name;

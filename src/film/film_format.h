@@ -43,6 +43,9 @@ struct FilmFormat {
 // The container a film's name asks for, from its extension in any case; nothing for any other name.
 std::optional<Container> containerFromName(const std::filesystem::path& path);
 bool isFilmName(const std::filesystem::path& path);
+// The extension, lower case, of a name that is a sound's, a picture's or a film's this build does not
+// write (".mp3", ".webm", ".png"): not a folder of frames either. Empty for any other name.
+std::string otherMediaExtension(const std::filesystem::path& path);
 
 std::string_view codecName(Codec codec);
 // --codec's value; throws vitrine::Error listing the codecs for anything else.

@@ -94,12 +94,22 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   if (!options.outputs.empty()) {
     std::vector<OutputPlacement> placements = readOutputs(options.outputs);
     for (size_t i = 0; i < placements.size(); ++i) {
-      if (!placements[i].warp) placements[i].warp = savedWarp(placements[i].name);
+      const std::string where = fmt::format("{}, output {}", options.outputs, i + 1);
+      if (const auto& window = placements[i].window) {
+        const uint32_t limit = device_.limits().maxImageDimension2D;
+        if (uint32_t((*window)[2]) > limit || uint32_t((*window)[3]) > limit)
+          throw Error(fmt::format("{}: a window of {}x{} is outside what {} supports (1 to {} per side).", where,
+                                  (*window)[2], (*window)[3], device_.properties().deviceName, limit));
+      }
       outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
       window_.takeKeysOf(outputs_.back()->handle());
+      OutputWindow& output = *outputs_.back();
+      if (placements[i].warp) checkWarpedFrame(device_, output.extent(), output.warp(), where);
+      else output.warp() = savedWarp(output.name(), output.extent()).value_or(maths::OutputWarp{});
     }
   }
-  if (!warp_) warp_ = savedWarp(kMainOutput);  // a file named on the command line wins
+  if (warp_) checkWarpedFrame(device_, window_.framebufferSize(), *warp_, options.outputWarp);
+  else warp_ = savedWarp(kMainOutput, window_.framebufferSize());  // a file named on the command line wins
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
@@ -165,6 +175,8 @@ int Gallery::run() {
     }
     frame();
   }
+  // What the scene holds now is what the settings file keeps, whatever changed it last.
+  if (hasScene_ && playlist_.empty()) rememberValues();
   device_.waitIdle();
   // What the viewer saw: frames a second from the first one shown to the last.
   if (frameCount_ > 1) {
@@ -255,7 +267,10 @@ void Gallery::frame() {
 // What the GPU has finished for this slot: its pass timings, and a screenshot taken in it.
 void Gallery::collect(uint32_t slot) {
   // A slot last drawn by the scene before a switch or restart has that scene's timings: skipped.
-  if (slotSerial_[slot] == sceneSerial_) passes_ = renderer_->timer().collect(slot);
+  if (slotSerial_[slot] == sceneSerial_) {
+    passes_ = renderer_->timer().collect(slot);
+    if (!passes_.empty()) ++timedFrames_;
+  }
   gpuMs_ = 0.0;
   for (const auto& pass : passes_) gpuMs_ += pass.ms;
   input_.lastGpuMs = gpuMs_;
@@ -281,10 +296,18 @@ void Gallery::simulate() {
   Pointer pointer = window_.takePointer();
   bool touched = touchedThisFrame(pointer);
   if (remote_) {
-    const RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
+    RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
     touched = touched || applied.touched;
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
+    // Values sent while this scene was hidden wait until its own frames are timed: the guard judges
+    // them by what a frame of this scene costs, not by the time of the scene shown before.
+    if (timedFrames_ >= kTimedFramesBeforeWaiting)
+      for (auto& value : remote_->applyWaiting(*renderer_, gpuMs_)) {
+        remoteKeys_[std::string(renderer_->info().name)].insert(value.first);
+        applied.values.push_back(std::move(value));
+      }
+    if (!applied.values.empty() && playlist_.empty()) rememberValues();  // saved like the panel's (--remote-saves)
     actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
     if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor

@@ -70,7 +70,7 @@ class Gallery {
   VkExtent2D outputExtent(size_t output) const { return output == 0 ? swapchain_.extent() : outputs_[output - 1]->extent(); }
   // How the main window shows the frame: its own warp, or the one of the output being set up.
   const maths::OutputWarp* shownWarp() { return setup_.active() && setupOutput_ > 0 ? &warpOf(setupOutput_) : warp(); }
-  std::optional<maths::OutputWarp> savedWarp(std::string_view output);
+  std::optional<maths::OutputWarp> savedWarp(std::string_view output, VkExtent2D extent);
   void keepWarp(size_t output);
   void switchScene(const SceneInfo& info);
   void simulate();
@@ -153,6 +153,10 @@ class Gallery {
   double cpuMs_ = 0.0;
   double gpuMs_ = 0.0;  // the last finished frame's, all passes
   std::vector<gpu::PassTime> passes_;
+  uint32_t timedFrames_ = 0;  // frames of the scene showing whose GPU time has come back
+  // A scene's first frames build things (strands, lattices): the values sent while it was hidden are
+  // judged after these many of its frames are timed.
+  static constexpr uint32_t kTimedFramesBeforeWaiting = 4;
   std::string reloadNote_;  // which shaders were reloaded, shown for kReloadNoteSeconds
   Clock::time_point reloadNoted_{};
   std::string note_;  // where the last screenshot went, a key with no scene: shown for kNoteSeconds

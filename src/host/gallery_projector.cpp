@@ -39,13 +39,16 @@ maths::OutputWarp& Gallery::warpOf(size_t output) {
 }
 
 // An output's warp as the settings file keeps it (projector setup's last kept pin); one the file holds
-// but this build refuses is a warning, and the output shows the whole frame.
-std::optional<maths::OutputWarp> Gallery::savedWarp(std::string_view output) {
+// but this build refuses, or whose frame at the output's `extent` is past the device, is a warning,
+// and the output shows the whole frame.
+std::optional<maths::OutputWarp> Gallery::savedWarp(std::string_view output, VkExtent2D extent) {
   const nlohmann::ordered_json* saved = settings_.warpFor(output);
   if (!saved) return std::nullopt;
   try {
-    return outputWarpFromJson(nlohmann::json::parse(saved->dump()),
-                              fmt::format("{}: outputs.{}", settings_.path().string(), output));
+    const std::string where = fmt::format("{}: outputs.{}", settings_.path().string(), output);
+    maths::OutputWarp warp = outputWarpFromJson(nlohmann::json::parse(saved->dump()), where);
+    checkWarpedFrame(device_, extent, warp, where);
+    return warp;
   } catch (const Error& e) {
     std::fprintf(stderr, "vitrine: settings: %s; showing the whole frame there\n", e.what());
     return std::nullopt;

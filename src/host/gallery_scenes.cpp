@@ -34,9 +34,6 @@ std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) 
     std::fprintf(stderr, "vitrine: settings for %.*s: dropped %s (%s); the other saved values are kept\n",
                  int(info.name.size()), info.name.data(), fmt::format("{}", fmt::join(fitted.dropped, ", ")).c_str(),
                  fitted.why.c_str());
-  if (remote_)  // values a client sent while it was away, through the same guard as the live ones
-    for (const auto& [key, value] : remote_->applyWaiting(renderer, frameMs()))
-      remoteKeys_[std::string(info.name)].insert(key);
   return {};
 }
 
@@ -66,6 +63,7 @@ void Gallery::switchScene(const SceneInfo& info) {
   hasScene_ = true;
   ++sceneSerial_;
   passes_.clear();  // the old scene's timings are not this one's
+  timedFrames_ = 0;
   costlyEdit_.reset();
   panel_.forget();
   panelError_.clear();
@@ -149,6 +147,7 @@ void Gallery::finishFade() {
   shown_ = incomingShown_;
   ++sceneSerial_;
   passes_.clear();
+  timedFrames_ = 0;
   panel_.forget();
   panelError_.clear();
   missingAssets_ = assets_.missing();

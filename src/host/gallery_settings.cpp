@@ -131,13 +131,21 @@ void GallerySettings::save() {
   if (path_.empty()) return;
   try {
     // Another gallery may have saved since: what it changed stays, unless this one changed it too.
-    // A file gone or unreadable now is written from this gallery's values alone.
+    // A file gone is written from this gallery's values alone; one edited meanwhile into something that
+    // is not settings (broken JSON) is moved aside first, as at start, so the edit is kept for a look.
     std::error_code ec;
     params::Settings merged = settings_;
-    if (!changes_.all && std::filesystem::exists(path_, ec))
-      if (params::LoadResult disk = params::loadSettings(path_, schemaOfScene, params::LoadMode::LeaveAlone);
-          disk.readable)
+    if (!changes_.all && std::filesystem::exists(path_, ec)) {
+      params::LoadResult disk = params::loadSettings(path_, schemaOfScene, params::LoadMode::ReplaceBad);
+      if (disk.readable) {
         merged = params::mergeSettings(std::move(disk.settings), settings_, changes_);
+      } else {
+        for (auto& warning : disk.warnings) {
+          std::fprintf(stderr, "vitrine: settings: %s\n", warning.c_str());
+          warnings_.push_back(std::move(warning));
+        }
+      }
+    }
     params::saveSettings(path_, merged, schemaOfScene);
     changes_ = {};
   } catch (const std::exception& e) {  // a full disk or a read-only home must not end the session

@@ -11,6 +11,7 @@
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "host/output_warp_file.h"
+#include "host/scene_renderer.h"
 #include "core/output_path.h"
 
 #include <algorithm>
@@ -39,7 +40,10 @@ int runHeadless(const Options& options) {
   config.flashGuard = flashGuardOn(options);
   config.presetFiles = presetFilesFor(options, options.scene);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
-  if (!options.outputWarp.empty()) config.warp = readOutputWarp(options.outputWarp);
+  if (!options.outputWarp.empty()) {
+    config.warp = readOutputWarp(options.outputWarp);
+    checkWarpedFrame(device, config.size, *config.warp, options.outputWarp);
+  }
   std::optional<JsonLinesEventLog> events;
   if (!options.events.empty()) config.events = &events.emplace(options.events);
   const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/printable.h"
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
@@ -112,7 +113,7 @@ std::vector<std::byte> Offscreen::saveSimulation() {
   return state.bytes();
 }
 
-void Offscreen::restoreSimulation(uint64_t frames, std::span<const std::byte> bytes) {
+void Offscreen::restoreSimulation(uint64_t frames, std::span<const std::byte> bytes, const params::KeyValues& film) {
   if (input_.frame != 0 || !renderer_.scene().checkpoints())
     throw Error("a checkpoint is restored before the first frame, into a scene that can be checkpointed");
   // The script's and live input's own state (a held key, a smoothed band) is theirs: replayed, unseen by
@@ -121,6 +122,18 @@ void Offscreen::restoreSimulation(uint64_t frames, std::span<const std::byte> by
   StateArchive state = StateArchive::restoring(bytes);
   params::KeyValues values;
   state(values);
+  // Its values are the film's, but for those a mapping moves as it plays: a checkpoint edited to other
+  // values (its checksum made again) would draw another film into this one's frames.
+  const std::vector<std::string> driven = live_ ? live_->drivenKeys() : std::vector<std::string>{};
+  for (const auto& [key, text] : film) {
+    if (std::find(driven.begin(), driven.end(), key) != driven.end()) continue;
+    const auto held = std::find_if(values.begin(), values.end(), [&name = key](const auto& kv) { return kv.first == name; });
+    if (held == values.end())
+      throw Error(fmt::format("it holds no {} where the film's record.json has {}={}", key, key, printable(text)));
+    if (held->second != text)
+      throw Error(fmt::format("it holds {}={} where the film's record.json has {}={}", key, printable(held->second),
+                              key, printable(text)));
+  }
   if (auto why = renderer_.applyParameters(values); !why.empty())
     throw Error(fmt::format("its parameters are refused: {}", why));
   renderer_.scene().simulationState(state);

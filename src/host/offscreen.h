@@ -74,10 +74,11 @@ class Offscreen {
   // Checkpoints (host/checkpoint.h). saveSimulation: between frames, every parameter's exact value and
   // the scene's own state (Scene::simulationState). restoreSimulation: before the first frame, puts the
   // run where it was `frames` frames in: the script and live input, which are cheap and keep their own
-  // state, are replayed up to there without the scene, then the state is restored. Throws
-  // vitrine::Error saying why the state does not fit (another build, another scene).
+  // state, are replayed up to there without the scene, then the state is restored. Its values must be
+  // `film`'s (the film's record.json), but for those a live mapping moves. Throws vitrine::Error saying
+  // why the state does not fit (another build, another scene, other values).
   std::vector<std::byte> saveSimulation();
-  void restoreSimulation(uint64_t frames, std::span<const std::byte> state);
+  void restoreSimulation(uint64_t frames, std::span<const std::byte> state, const params::KeyValues& film);
   const gpu::ProgramLibrary& programs() const { return programs_; }  // every pipeline the run made
   // Hot reload between frames, as the gallery does each frame: rebuilds the programs whose shaders
   // changed under OffscreenConfig::shaderSources; returns how many.

@@ -55,8 +55,9 @@ Found existingFrame(const std::filesystem::path& path, VkExtent2D size) {
 // 0: its sound so far and its simulation. Returns its frame. A checkpoint that cannot be trusted stops
 // the run before anything is written, naming the file.
 std::optional<uint32_t> resumeFromCheckpoint(Offscreen& offscreen, audio::OfflineAudio& sound,
-                                             const std::filesystem::path& folder, const std::string& film,
+                                             const std::filesystem::path& folder, const RecordManifest& manifest,
                                              uint32_t firstToWrite, uint32_t spp) {
+  const std::string film = fingerprint(manifestText(manifest));
   const std::optional<uint32_t> at = latestCheckpointFrame(folder, firstToWrite);
   if (!at || *at == 0) return std::nullopt;
   const std::filesystem::path path = checkpointPath(folder, *at);
@@ -70,7 +71,7 @@ std::optional<uint32_t> resumeFromCheckpoint(Offscreen& offscreen, audio::Offlin
                  "where both devices compute alike\n", path.filename().c_str(), printable(checkpoint.device).c_str(), device.c_str());
   for (const audio::Command& command : checkpoint.sound) sound.post(command);
   try {
-    offscreen.restoreSimulation(uint64_t(*at) * spp, checkpoint.simulation);
+    offscreen.restoreSimulation(uint64_t(*at) * spp, checkpoint.simulation, manifest.values);
   } catch (const Error& e) {
     throw Error(fmt::format("Checkpoint {} does not fit this run: {}; delete it to start from an earlier one, or "
                             "from frame 0.", path.string(), e.what()));
@@ -128,7 +129,7 @@ int runRecord(const Options& options) {
       std::fprintf(stderr, "vitrine: %s cannot be checkpointed (its picture carries history); no checkpoints written\n",
                    options.scene.c_str());
     const std::string film = fingerprint(manifestText(manifest));
-    if (checkpointing) resumedAt = resumeFromCheckpoint(offscreen, inputs.sound, folder, film, firstToWrite, options.spp);
+    if (checkpointing) resumedAt = resumeFromCheckpoint(offscreen, inputs.sound, folder, manifest, firstToWrite, options.spp);
     const uint32_t start = resumedAt.value_or(0);
 
     RecordProgress progress(end - first);

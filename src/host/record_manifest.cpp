@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 
 #include "core/atomic_file.h"
+#include "app/options.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
@@ -18,6 +20,7 @@ using nlohmann::json;
 
 constexpr int kManifestVersion = 1;
 constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
+constexpr uint32_t kMaxSide = 65536;  // past every device's largest image
 
 std::string readText(const std::filesystem::path& path) {
   try {
@@ -67,13 +70,23 @@ RecordManifest parseManifest(std::string_view text, std::string_view name) {
   try {
     if (!document.contains("vitrine_record") || document.at("vitrine_record") != kManifestVersion)
       return refuse("no \"vitrine_record\": 1");
+    // Numbers as record's own options bound them: a hand-edited -54 or 0 must not become a height of
+    // 4294967242 or "inf s of sound" downstream.
+    const auto whole = [&](const char* key, uint64_t min, uint64_t max) -> uint32_t {
+      const json& value = document.at(key);
+      // The parser keeps every whole number from 0 up as unsigned; a negative or fractional one is not.
+      if (!value.is_number_unsigned() || value.get<uint64_t>() < min || value.get<uint64_t>() > max) refuse(fmt::format("{} {}: a whole number from {} to {}", key, value.dump(), min, max));
+      return value.get<uint32_t>();
+    };
     RecordManifest manifest;
     manifest.scene = document.at("scene").get<std::string>();
-    manifest.width = document.at("width").get<uint32_t>();
-    manifest.height = document.at("height").get<uint32_t>();
+    manifest.width = whole("width", 1, kMaxSide);
+    manifest.height = whole("height", 1, kMaxSide);
     manifest.fps = document.at("fps").get<double>();
-    manifest.spp = document.at("spp").get<uint32_t>();
-    manifest.seed = document.at("seed").get<uint32_t>();
+    if (!(manifest.fps > 0.0 && manifest.fps <= kMaxRecordFps))
+      refuse(fmt::format("fps {}: frames a second are above 0 and at most {}", document.at("fps").dump(), kMaxRecordFps));
+    manifest.spp = whole("spp", 1, kMaxRecordSpp);
+    manifest.seed = whole("seed", 0, std::numeric_limits<uint32_t>::max());
     manifest.time = document.at("time").get<double>();
     manifest.reducedMotion = document.at("reduced_motion").get<bool>();
     manifest.flashGuard = document.value("flash_guard", false);

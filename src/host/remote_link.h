@@ -39,8 +39,9 @@ class RemoteLink {
   // time now, to refuse a change that would freeze the window (host/cost_guard.h).
   RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs = 0.0);
   // Applies the values clients sent for `renderer`'s scene while it was not showing (then forgets
-  // them), each through the same checks as a live one: the freeze guard with `frameMs`, then the
-  // scene's validation. Returns those applied.
+  // them), each through the same checks as a live one: the freeze guard with `frameMs` (that scene's
+  // own frame time, so called once its frames are timed), then the scene's validation. Returns those
+  // applied.
   params::KeyValues applyWaiting(SceneRenderer& renderer, double frameMs);
   size_t waiting() const { return waiting_.size(); }  // values waiting for their scene, for tests
   uint16_t port() const { return control_.port(); }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "gpu/check.h"
 #include "gpu/fault_injection.h"
 #include <glm/matrix.hpp>
@@ -91,6 +92,20 @@ VkExtent2D frameExtent(VkExtent2D output, const maths::OutputWarp* warp) {
   const float width = float(turned ? output.height : output.width), height = float(turned ? output.width : output.height);
   const glm::vec4& r = warp->region;
   return {std::max(1u, uint32_t(std::lround(width / (r.z - r.x)))), std::max(1u, uint32_t(std::lround(height / (r.w - r.y))))};
+}
+
+void checkWarpedFrame(const gpu::Device& device, VkExtent2D output, const maths::OutputWarp& warp, std::string_view where) {
+  // In doubles: a region of 1e-30 makes a side no integer holds.
+  const bool turned = warp.quarterTurns % 2 != 0;
+  const double width = turned ? output.height : output.width, height = turned ? output.width : output.height;
+  const double across = double(warp.region.z) - warp.region.x, down = double(warp.region.w) - warp.region.y;
+  const double frameWidth = std::round(width / across), frameHeight = std::round(height / down);
+  const uint32_t limit = device.limits().maxImageDimension2D;
+  if (frameWidth <= limit && frameHeight <= limit) return;
+  throw Error(fmt::format("{}: a region of {:.3g} x {:.3g} of a {}x{} output needs a {:.0f}x{:.0f} frame, outside what {} "
+                          "supports (1 to {} per side): widen the region.",
+                          where, across, down, output.width, output.height, frameWidth, frameHeight,
+                          device.properties().deviceName, limit));
 }
 
 void SceneRenderer::ensureTarget(VkExtent2D output) {

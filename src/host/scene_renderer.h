@@ -15,6 +15,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace vitrine::host {
 
@@ -33,6 +34,9 @@ struct BlitDestination {
 // The frame a scene renders for an output of `output` pixels showing it through `warp`: a quarter turn
 // swaps its sides, and an output that shows a region of the frame shows it at its own size.
 VkExtent2D frameExtent(VkExtent2D output, const maths::OutputWarp* warp);
+// Throws vitrine::Error, starting with `where` (the warp's file), when the frame `warp` asks of an output
+// of `output` pixels is larger than the device draws: a region of a few thousandths of the frame.
+void checkWarpedFrame(const gpu::Device& device, VkExtent2D output, const maths::OutputWarp& warp, std::string_view where);
 
 // Another renderer's target mixed into the output (kiosk mode's cross-fade): `weight` of it over the
 // output, 0..1. The compute path only; a blit cuts instead.

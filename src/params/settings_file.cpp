@@ -169,6 +169,16 @@ Json readJsonFile(const fs::path& path, uintmax_t maxBytes) {
 
 namespace {
 
+// What happens to a file that is not settings, as the end of the warning that says so.
+std::string whatBecomesOf(const fs::path& path, LoadMode mode) {
+  switch (mode) {
+    case LoadMode::MoveBadAside: return moveAside(path) + "; starting from the defaults";
+    case LoadMode::ReplaceBad: return moveAside(path) + "; writing this gallery's values in its place";
+    case LoadMode::LeaveAlone: break;
+  }
+  return "left as it is";
+}
+
 LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, LoadMode mode) {
   LoadResult result;
   const std::string where = path.string();
@@ -193,7 +203,7 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
       throw FileRefused{fmt::format("version {}, this build reads version {}", root["version"].dump(), kSettingsVersion)};
   } catch (const FileRefused& bad) {
     result.readable = false;
-    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) + "; starting from the defaults" : "left as it is";
+    const std::string fallback = whatBecomesOf(path, mode);
     result.warnings.push_back(fmt::format("{} is not a settings file ({}); {}", where, bad.why, fallback));
     return result;
   }
@@ -258,7 +268,7 @@ LoadResult loadSettings(const fs::path& path, const SchemaLookup& schemaFor, Loa
     // not parse: the gallery, and above all the kiosk, must never be stopped by its own saved state.
     LoadResult result;
     result.readable = false;
-    const std::string fallback = mode == LoadMode::MoveBadAside ? moveAside(path) + "; starting from the defaults" : "left as it is";
+    const std::string fallback = whatBecomesOf(path, mode);
     result.warnings.push_back(fmt::format("{} could not be read ({}); {}", path.string(), e.what(), fallback));
     return result;
   }

@@ -58,9 +58,11 @@ struct LoadResult {
   bool readable = true;               // false: the file was there but is not settings (see loadSettings)
 };
 
-// What a reader does with a file that is not settings: the gallery at start moves it aside; a save
-// that merges with the file on disk only looks and leaves it.
-enum class LoadMode { MoveBadAside, LeaveAlone };
+// What a reader does with a file that is not settings: the gallery at start moves it aside and starts
+// from the defaults; a save that merges with the file on disk moves it aside and writes the gallery's
+// values in its place (the file was edited into something else while the gallery ran); a reader that
+// only looks leaves it.
+enum class LoadMode { MoveBadAside, ReplaceBad, LeaveAlone };
 
 // Returns a scene's schema, or null for a scene this build does not have. A scene without parameters
 // should return an empty schema, not null.

@@ -3,8 +3,8 @@
 # a later run starts from the latest checkpoint at or before its first missing frame: its frames are a
 # whole run's bit for bit for bloom (through its phase flips), neon (mid-stroke, with beat bursts from
 # --audio-in, two samples a frame) and noodles (mid-drag); a resumed whole run writes the same sound;
-# --checkpoints-only simulates without drawing; a corrupt or foreign checkpoint is refused, naming the
-# file, before anything is written.
+# --checkpoints-only simulates without drawing; a corrupt or foreign checkpoint, or one whose values are
+# not the film's, is refused, naming the file, before anything is written.
 set -euo pipefail
 vitrine=$1; out=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -99,6 +99,29 @@ truncate -s 2000 "$out/bad/checkpoint_000040.state"
 refused "$out/bad" "is cut short"
 cp "$out/noodles/checkpoint_000010.state" "$out/bad/checkpoint_000040.state"  # another film's
 refused "$out/bad" "belongs to another film"
+# A value edited inside a checkpoint, its checksum recomputed: the restored values are not the ones the
+# film's record.json names, so it is refused, naming the value, before anything is written.
+part "$out/neon" "$out/edited" 40
+cp "$out/neon/frame_000042.exr" "$out/edited/"
+python3 - "$out/edited/checkpoint_000040.state" vignette <<'PY'
+import struct, sys
+path, key = sys.argv[1], sys.argv[2].encode()
+header, payload = open(path, "rb").read().split(b"\n", 1)
+name = struct.pack("<Q", len(key)) + key  # the archive's strings: a 64-bit length, then the bytes
+at = payload.index(name) + len(name)
+length = struct.unpack("<Q", payload[at:at + 8])[0]
+value = bytearray(payload[at + 8:at + 8 + length])
+last = max(i for i, c in enumerate(value) if chr(c).isdigit())
+value[last] = ord("1") if value[last] != ord("1") else ord("2")  # another valid value, the same length
+payload = payload[:at + 8] + bytes(value) + payload[at + 8 + length:]
+digest = 0xcbf29ce484222325
+for byte in payload:
+    digest = ((digest ^ byte) * 0x100000001b3) & (2**64 - 1)
+fields = header.split(b" ")
+fields[-1] = b"%016x" % digest
+open(path, "wb").write(b" ".join(fields) + b"\n" + payload)
+PY
+refused "$out/edited" "does not fit this run: it holds vignette="
 
 # What cannot be checkpointed says so.
 "$vitrine" record --scene glass --size 32x18 --seconds 0.1 --checkpoint-every 1 --out "$out/glass" 2>"$out/err.txt" >/dev/null

@@ -4,7 +4,8 @@
 # turns the plain one; the two agree to within a half-float step, the warp's sampling positions moving by
 # rounding only); a region shows its part of the frame; a corner pin leaves black where the picture does
 # not reach; a soft edge darkens its edge and leaves the middle as it was; an empty warp is the plain
-# path, bit for bit; a bad file is refused, naming it.
+# path, bit for bit; a bad file, or a region so small that its frame is larger than the device draws, is
+# refused, naming it.
 set -eu
 vitrine=$1; out=$2
 rm -rf "$out"; mkdir -p "$out"; cd "$out"
@@ -63,7 +64,9 @@ close right-expected.exr blend-right.exr
 echo '{"turn": 45}' > bad-turn.json
 echo '{"corners": [[0, 0], [1, 1], [1, 0], [0, 1]]}' > crossed.json
 echo '{"rotate": 90}' > unknown.json
-for bad in bad-turn:"turn is 0, 90, 180 or 270" crossed:"convex" unknown:'unknown key "rotate"'; do
+echo '{"region": [0.5, 0.5, 0.502, 0.502]}' > tiny.json  # a 64x36 output's frame would be 32000x18000
+for bad in bad-turn:"turn is 0, 90, 180 or 270" crossed:"convex" unknown:'unknown key "rotate"' \
+           tiny:"a region of 0.002 x 0.002 .*needs a 32000x18000 frame, outside what .* supports"; do
   file=${bad%%:*}.json
   if render 64x36 x.exr "$file" 2>err.txt; then echo "$file was accepted"; exit 1; fi
   grep -q "$file: .*${bad#*:}" err.txt || { cat err.txt; exit 1; }

@@ -9,8 +9,8 @@
 # still, at the low tier the headless run is given too (the cheapest frame that still shows the whole
 # fractal; a gallery without vsync draws flat out while the script waits). Then --span: one window over
 # the whole desktop shows the same frame, and so does a window grown past the shared memory the system
-# grants. --list-monitors lists the display's monitor, and a monitor that is not there, or a bad outputs
-# file, is refused. On lavapipe the windows are drawn through X shared memory
+# grants. --list-monitors lists the display's monitor, and a monitor that is not there, a bad outputs file
+# or a window larger than the device draws, is refused. On lavapipe the windows are drawn through X shared memory
 # (src/host/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
 # swapchain), so both paths are held to the headless frame.
 set -u
@@ -141,5 +141,9 @@ grep -q "No monitor 'projector'; there are:" "$out/err.txt" || fail "$(cat "$out
 echo '[{"window": [0, 0, 640, 360], "monitor": "0"}]' >"$out/both.json"
 if DISPLAY=$display "$vitrine" --outputs "$out/both.json" 2>"$out/err.txt"; then fail "both a window and a monitor"; fi
 grep -q "both.json, output 1: an output is fullscreen on a monitor or a window at a place, not both" "$out/err.txt" ||
+  fail "$(cat "$out/err.txt")"
+echo '[{"window": [0, 0, 100000, 100000]}]' >"$out/huge.json"
+if DISPLAY=$display "$vitrine" --outputs "$out/huge.json" 2>"$out/err.txt"; then fail "a window past the device's limit"; fi
+grep -q "huge.json, output 1: a window of 100000x100000 is outside what .* supports" "$out/err.txt" ||
   fail "$(cat "$out/err.txt")"
 echo "outputs ok"

@@ -3,6 +3,7 @@
 #include "support/temp_folder.h"
 #include "support/files.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -176,6 +177,24 @@ TEST_F(AtomicFile, StaleTemporariesOfDeadWritersAreRemovedAndLiveOnesKept) {
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{".notes.txt", "frame_000002.exr"}));
   EXPECT_TRUE(removeStaleTemporaries(folder_).empty());
+}
+
+// A hidden file shaped like this machine's temporaries but with a process number longer than any
+// system's is someone else's file: it is kept, and the folder stays usable.
+TEST_F(AtomicFile, ALookAlikeWithAnImpossibleProcessNumberIsKept) {
+  std::string name;  // ".probe.exr.HOST-PID-COUNTER-RANDOM.tmp.exr": this machine's host word
+  replaceAtomically(folder_ / "probe.exr", [&](const std::filesystem::path& temporary) {
+    name = temporary.filename().string();
+    writeText(temporary, "x");
+  });
+  std::string host = name.substr(std::string(".probe.exr.").size());
+  for (int dashes = 0; dashes < 3; ++dashes) host.erase(host.rfind('-'));
+  const auto lookAlike = folder_ / fmt::format(".x.{}-{}-3-deadbeef.tmp.exr", host, std::string(40, 'f'));
+  writeText(lookAlike, "not a temporary");
+  std::vector<std::filesystem::path> removed;
+  EXPECT_NO_THROW(removed = removeStaleTemporaries(folder_));
+  EXPECT_TRUE(removed.empty());
+  EXPECT_TRUE(std::filesystem::exists(lookAlike));
 }
 
 TEST_F(AtomicFile, AFolderThatCannotBeWrittenIsFoundBeforeAnyWork) {

@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace vitrine::host {
 namespace {
@@ -66,6 +67,26 @@ TEST_F(GallerySettingsFile, AnOutOfRangeNumberIsAWarningNotAnError) {
   ASSERT_EQ(settings.warnings().size(), 1u);
   EXPECT_NE(settings.warnings()[0].find("moved it to"), std::string::npos) << settings.warnings()[0];
   EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// The file edited into broken JSON while the gallery runs: the next save moves it aside, as a start
+// does, before writing the gallery's values; nothing the user typed is lost.
+TEST_F(GallerySettingsFile, AFileBrokenWhileRunningIsMovedAsideBeforeTheNextSave) {
+  const auto path = folder_ / "settings.json";
+  std::ofstream(path) << R"({"version": 1, "scene": "kifs", "scenes": {"kifs": {"step": 4}}})";
+  GallerySettings settings(path, false);
+  const std::string edited = R"({"version": 1, "scenes": {"kifs": {"step": 5,}})";  // a stray comma
+  std::ofstream(path, std::ios::trunc) << edited;
+  settings.remember("kifs", {{"step", "6"}}, GallerySettings::Clock::now());
+  settings.flush();
+  std::vector<std::filesystem::path> aside;
+  for (const auto& entry : std::filesystem::directory_iterator(folder_))
+    if (entry.path().filename().string().starts_with("settings.json.bad-")) aside.push_back(entry.path());
+  ASSERT_EQ(aside.size(), 1u) << "the broken file was written over";
+  EXPECT_EQ(test::readFile(aside[0]), edited);
+  EXPECT_EQ(nlohmann::json::parse(test::readFile(path))["scenes"]["kifs"]["step"], 6);
+  ASSERT_FALSE(settings.warnings().empty());
+  EXPECT_NE(settings.warnings().back().find("moved it to"), std::string::npos) << settings.warnings().back();
 }
 
 // Two galleries on one file: each writes only what it changed, so neither undoes the other.

@@ -286,6 +286,14 @@ TEST(Options, RecordTakesAFilmsShape) {
             "--format writes exr or png, not 'tiff'.");
   EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "f", "--spp", "300"}),
             "--spp takes 1 to 256 samples a frame.");
+  // A name that is a sound's or another film's is not a folder of frames: refused, not recorded into.
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "x.mp3"}),
+            "record writes a film as .mp4, .mov or .mkv, or frames into a folder; 'x.mp3' names a .mp3 file, "
+            "which this build does not write: name the folder without .mp3.");
+  EXPECT_EQ(refusal({"record", "--scene", "neon", "--seconds", "1", "--out", "take.WEBM"}),
+            "record writes a film as .mp4, .mov or .mkv, or frames into a folder; 'take.WEBM' names a .webm file, "
+            "which this build does not write: name the folder without .WEBM.");
+  EXPECT_EQ(parse({"record", "--scene", "neon", "--seconds", "1", "--out", "take.2"}).out, "take.2");
 }
 
 TEST_F(OptionsFiles, InputAndEventsBelongToHeadlessRuns) {

@@ -37,6 +37,36 @@ TEST(RecordManifest, ReadsBackWhatItWrites) {
   EXPECT_NE(fingerprint("0.5 down\n"), fingerprint("0.5 up\n"));
 }
 
+// Numbers no film has (a hand-edited record.json) are refused by name, before encode turns them into
+// "inf s of sound" or a height of 4294967242.
+TEST(RecordManifest, RefusesNumbersNoFilmHas) {
+  const std::string good = manifestText(neonFilm());
+  const auto with = [&](const std::string& from, const std::string& to) -> std::string {
+    std::string text = good;
+    const size_t at = text.find(from);
+    if (at == std::string::npos) return "no " + from + " in " + text;
+    text.replace(at, from.size(), to);
+    try {
+      (void)parseManifest(text, "record.json");
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const auto refuses = [&](const std::string& from, const std::string& to, const std::string& why) {
+    const std::string said = with(from, to);
+    EXPECT_NE(said.find(why), std::string::npos) << to << ": " << said;
+  };
+  refuses("\"fps\": 30.0", "\"fps\": 0", "(fps 0: frames a second are above 0 and at most 1000)");
+  refuses("\"fps\": 30.0", "\"fps\": 1e300", "(fps 1e+300: frames a second are above 0 and at most 1000)");
+  refuses("\"height\": 54", "\"height\": -54", "(height -54: a whole number from 1 to 65536)");
+  refuses("\"width\": 96", "\"width\": 0", "(width 0: a whole number from 1 to 65536)");
+  refuses("\"width\": 96", "\"width\": 96.5", "(width 96.5: a whole number from 1 to 65536)");
+  refuses("\"spp\": 1", "\"spp\": 0", "(spp 0: a whole number from 1 to 256)");
+  refuses("\"seed\": 0", "\"seed\": -1", "(seed -1: a whole number from 0 to 4294967295)");
+  EXPECT_EQ(with("\"fps\": 30.0", "\"fps\": 24"), "accepted");
+}
+
 TEST(RecordManifest, NamesEveryDifference) {
   const RecordManifest film = neonFilm();
   EXPECT_TRUE(manifestDifferences(film, film).empty());
