@@ -131,6 +131,9 @@ def to_glob(p):
     p = re.sub(r"\{[^}/]*\}?", "*", p)
     segs = []
     for seg in p.split("/"):
+        if re.fullmatch(r"[A-Z][A-Z-]*\.md", seg):
+            segs.append(seg)  # the docs' own names are upper case: docs/RELIABILITY.md is no placeholder
+            continue
         # An upper-case word is a placeholder (NAME, SCENE, NAME_test.cpp, frame_N.png).
         seg = re.sub(r"(?<![a-z])[A-Z][A-Z0-9_]*[A-Z0-9](?![a-z])|(?<=_)[A-Z](?=[._]|$)", "*", seg)
         segs.append(seg)
