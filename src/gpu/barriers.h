@@ -1,7 +1,7 @@
 #pragma once
 // Synchronization2 barriers derived from what a resource did last and what it does next. Host and
-// scenes name uses (use::ComputeWrite, use::FragmentSample, ...); tracked images and buffers
-// (gpu/tracked.h) remember their last use, so nobody writes a barrier by hand.
+// scenes name uses (use::ComputeWrite, use::FragmentSample, ...); images and buffers
+// (gpu/resources.h) remember their last use, so nobody writes a barrier by hand.
 #include <vulkan/vulkan.h>
 
 namespace vitrine::gpu {

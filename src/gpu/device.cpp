@@ -165,7 +165,7 @@ Instance::Instance(const InstanceOptions& options) {
   const VkApplicationInfo app{
       VK_STRUCTURE_TYPE_APPLICATION_INFO, nullptr,           "Vitrine", VK_MAKE_VERSION(0, 1, 0), "Vitrine",
       VK_MAKE_VERSION(0, 1, 0),           VK_API_VERSION_1_3};
-  // Synchronisation validation catches hazards that leave the picture unchanged (FIELD-NOTES §3).
+  // Synchronisation validation catches hazards that leave the picture unchanged.
   const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   const VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, nullptr, 1, enables, 0, nullptr};
   VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};

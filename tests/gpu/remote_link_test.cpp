@@ -1,6 +1,6 @@
 // The host's end of remote play with real OSC datagrams on loopback and real scenes: values sent for
 // a scene that is not showing wait bounded (one per key, however many arrive), and when their scene
-// opens they pass the same freeze guard as a live value (the issue's bypass: set noodles.grid=64x64x64
+// opens they pass the same freeze guard as a live value (the bypass this guards against: set noodles.grid=64x64x64
 // while kifs shows, then switch to noodles).
 #include "core/assets.h"
 #include "host/remote_link.h"
@@ -76,7 +76,7 @@ TEST_F(RemoteLinkTest, AFloodForAHiddenSceneWaitsAsOneValuePerKey) {
   for (int i = 0; i < 600; ++i)
     sendFrom(fmt::format("127.0.3.{}", i % 30 + 1).c_str(), link.port(),
              oscString("/vitrine/noodles/grid", fmt::format("{}x4x4", i % 8 + 1)));
-  // Whatever arrived is drained; before, each one stayed queued (600 here, 480,000 in the issue).
+  // Whatever arrived is drained; before, each one stayed queued (600 here; a flood can send 480,000).
   applyUntil([&] { return false; }, std::chrono::milliseconds(500));
   EXPECT_EQ(link.waiting(), 1u);
 }

@@ -81,7 +81,7 @@ TEST(FixedStep, TurnsRealTimeIntoWholeSteps) {
   EXPECT_EQ(steps.advance(0.0), 1);
 }
 
-// Issue 23: below 15 fps the simulation fell behind the clock (at most four steps a frame: at 1 fps
+// Below 15 fps the simulation fell behind the clock (at most four steps a frame: at 1 fps
 // neon and bloom ran at a fifteenth of their speed). While the simulation alone keeps up, every step
 // that is due runs, however slow the frames.
 TEST(FixedStep, FollowsTheWallClockAtOneFramePerSecond) {
@@ -153,7 +153,7 @@ TEST(FixedStep, TimeAScenesSimulationGaveUpIsFallingBehind) {
   EXPECT_EQ(steps.kept(), 0.0) << "more given up than passed counts as all of it, never below";
 }
 
-// Issue 23: the speed field accepted and showed any number ("111111114326016.00x").
+// The speed field accepted and showed any number ("111111114326016.00x").
 TEST(TimeControl, SpeedStaysInItsRangeAndKeysStepThroughIt) {
   EXPECT_EQ(TimeControl::clampSpeed(111111114326016.0f), TimeControl::kMaxSpeed);
   EXPECT_EQ(TimeControl::clampSpeed(-3.0f), 0.0f);

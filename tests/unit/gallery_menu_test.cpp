@@ -75,7 +75,7 @@ std::vector<gpu::PassTime> somePasses(int n) {
   return passes;
 }
 
-// Issue 23: the per-pass timing rows vanished for a frame after a switch, so everything below them
+// The per-pass timing rows vanished for a frame after a switch, so everything below them
 // moved up 100-200 px and a click meant for the preset list switched scene.
 TEST(GalleryMenu, NothingMovesUnderARestingCursorWhenTheTimingsEmpty) {
   HeadlessImGui imgui;
@@ -147,7 +147,7 @@ TEST(GalleryMenu, LayoutSurvivesItsIniLines) {
   EXPECT_LE(read.passRows, 64);
 }
 
-// Issue 23: digits typed into a field switched scenes. At a few frames a second the click that
+// Digits typed into a field switched scenes. At a few frames a second the click that
 // activates the field and the digits typed after it arrive in one frame: the gallery asks after the
 // menu has seen the click, when the field already has the keyboard (WantTextInput says so only a
 // frame later).
@@ -183,7 +183,7 @@ TEST(GalleryMenu, AFieldActivatedThisFrameHasTheKeyboard) {
   EXPECT_TRUE(menuHasKeyboard());
 }
 
-// Issue 23: the speed field showed any number typed into it.
+// The speed field showed any number typed into it.
 TEST(GalleryMenu, TheSpeedFieldClampsWhatIsTyped) {
   HeadlessImGui imgui;
   const SceneInfo& info = sceneWithPresets();
@@ -198,7 +198,7 @@ TEST(GalleryMenu, TheSpeedFieldClampsWhatIsTyped) {
   EXPECT_EQ(choice.time.speed, TimeControl::kMaxSpeed);
 }
 
-// Issue 23: the preset list always read "choose...": it names the preset the values match.
+// The preset list always read "choose...": it names the preset the values match.
 TEST(ParamPanel, NamesThePresetTheValuesMatch) {
   const SceneInfo& info = sceneWithPresets();
   StillScene scene(info);

@@ -1,5 +1,5 @@
 // The glass presets are complete: each sets every value that makes its look, so it gives the same settings
-// whatever was chosen before it (issue 22: physical optics, then the diamond preset, must be the original's
+// whatever was chosen before it (physical optics, then the diamond preset, must give the original's
 // diamond), and each turns on the original's smooth curvature.
 #include "params/schema.h"
 #include "params/schema_impl.h"

@@ -39,7 +39,7 @@ TEST(RemoteWaitingValues, OneClientCanHoldOnlyItsShare) {
   EXPECT_TRUE(waiting.put("a", "kifs", "k9", "1")) << "taken values free the share";
 }
 
-// The flood: 480,000 datagrams from rotating loopback addresses, each a new "client".
+// A flood: 480,000 datagrams from rotating loopback addresses, each a new "client".
 TEST(RemoteWaitingValues, AFloodFromRotatingSendersStaysWithinTheTotal) {
   WaitingValues waiting({.perClient = 64, .total = 256});
   size_t refused = 0;

@@ -236,7 +236,7 @@ int pagesServed(uint16_t port, int loads) {
   return served;
 }
 
-// The lock-out: 64 idle connections without a token refused 13 of a phone's 14 page loads.
+// A lock-out: without the limits, 64 idle connections without a token refused 13 of a phone's 14 page loads.
 // Strangers from one address, then from 64 addresses, give way to the phone each time.
 TEST_F(RemoteWeb, IdleStrangersCannotLockOutAPhone) {
   WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
