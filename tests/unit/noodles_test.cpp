@@ -3,7 +3,7 @@
 // plan, the camera.
 #include "gpu/check.h"
 #include "maths/flow_field.h"
-#include "params/schema_impl.h"
+#include "params/schema.h"
 #include "scenes/noodles/camera.h"
 #include "scenes/noodles/frames.h"
 #include "scenes/noodles/integrate.h"
