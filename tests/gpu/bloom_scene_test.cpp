@@ -42,6 +42,19 @@ struct Hsv {
   float hue, saturation, value;  // degrees, 0..1, 0..1 of the sRGB-encoded colour
 };
 
+// An sRGB-encoded colour as HSV.
+Hsv toHsv(float r, float g, float b) {
+  const float hi = std::max({r, g, b}), lo = std::min({r, g, b}), d = hi - lo;
+  float h = 0.0f;
+  if (d > 0.0f) h = hi == r ? std::fmod((g - b) / d + 6.0f, 6.0f) : hi == g ? (b - r) / d + 2.0f : (r - g) / d + 4.0f;
+  return {h * 60.0f, hi > 0.0f ? d / hi : 0.0f, hi};
+}
+// A linear pixel, encoded to sRGB, as HSV.
+Hsv pixelHsv(const ImageRgba& image, int x, int y) {
+  float c[3];
+  for (int i = 0; i < 3; ++i) c[i] = linearToSrgb(std::clamp(image.at(x, y)[i], 0.0f, 1.0f));
+  return toHsv(c[0], c[1], c[2]);
+}
 // The mean sRGB colour of a patch at the crystal's centre (the origin shows at (0.5, 0.53)), as HSV.
 Hsv centreColour(const ImageRgba& image) {
   double sum[3] = {0, 0, 0};
@@ -50,11 +63,7 @@ Hsv centreColour(const ImageRgba& image) {
   for (int y = cy - 3; y <= cy + 3; ++y)
     for (int x = cx - 3; x <= cx + 3; ++x, ++count)
       for (int c = 0; c < 3; ++c) sum[c] += linearToSrgb(std::clamp(image.at(x, y)[c], 0.0f, 1.0f));
-  const float r = float(sum[0] / count), g = float(sum[1] / count), b = float(sum[2] / count);
-  const float hi = std::max({r, g, b}), lo = std::min({r, g, b}), d = hi - lo;
-  float h = 0.0f;
-  if (d > 0.0f) h = hi == r ? std::fmod((g - b) / d + 6.0f, 6.0f) : hi == g ? (b - r) / d + 2.0f : (r - g) / d + 4.0f;
-  return {h * 60.0f, hi > 0.0f ? d / hi : 0.0f, hi};
+  return toHsv(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
 }
 // The mean absolute difference of two frames' channels.
 double difference(const ImageRgba& a, const ImageRgba& b) {
@@ -104,21 +113,12 @@ std::array<double, 4> stateShares(const ImageRgba& image) {
     for (uint32_t x = 0; x < image.width; ++x) {
       const bloom::Ray ray = bloom::cameraRay((float(x) + 0.5f) / float(image.width), (float(y) + 0.5f) / float(image.height), aspect);
       if (!bloom::octahedronChord(ray, bloom::kCrystalRadius * 0.9f)) continue;  // inside the silhouette's edge
-      float rgb[3];
-      for (int c = 0; c < 3; ++c) rgb[c] = linearToSrgb(std::clamp(image.at(x, y)[c], 0.0f, 1.0f));
-      const float hi = std::max({rgb[0], rgb[1], rgb[2]}), lo = std::min({rgb[0], rgb[1], rgb[2]});
-      const float saturation = hi > 0.0f ? (hi - lo) / hi : 0.0f;
-      float hue = 0.0f;
-      if (hi > lo) {
-        const float d = hi - lo;
-        hue = 60.0f * (hi == rgb[0] ? std::fmod((rgb[1] - rgb[2]) / d + 6.0f, 6.0f)
-                                    : hi == rgb[1] ? (rgb[2] - rgb[0]) / d + 2.0f : (rgb[0] - rgb[1]) / d + 4.0f);
-      }
+      const Hsv c = pixelHsv(image, int(x), int(y));
       ++all;
-      if (saturation < 0.15f) ++count[0];
-      else if (hue > 18.0f && hue < 60.0f) ++count[1];                   // amber: orange
-      else if (hi > 0.78f || (hue > 300.0f && hue < 345.0f)) ++count[2];  // rose: light, pink
-      else ++count[3];                                                    // crimson: a deeper red
+      if (c.saturation < 0.15f) ++count[0];
+      else if (c.hue > 18.0f && c.hue < 60.0f) ++count[1];                      // amber: orange
+      else if (c.value > 0.78f || (c.hue > 300.0f && c.hue < 345.0f)) ++count[2];  // rose: light, pink
+      else ++count[3];                                                          // crimson: a deeper red
     }
   for (double& c : count) c /= std::max(all, 1.0);
   return count;
