@@ -66,6 +66,7 @@ void FrameResources::create(Entry& entry, VkExtent2D target) {
   desc.extent = sizeFor(entry.decl.size, target);
   desc.type = desc.extent.depth > 1 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   desc.format = entry.decl.format;
+  desc.storageFormat = entry.decl.storageFormat;
   desc.usage = entry.decl.usage;
   if (entry.decl.pairing == Pairing::History || entry.decl.zeroed) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // cleared
   if (!entry.decl.initial.empty()) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;

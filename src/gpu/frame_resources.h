@@ -43,6 +43,9 @@ struct ImageDecl {
   ImageUse initialUse = use::ComputeSample;  // where an uploaded image is left
   bool state = false;  // simulation state a checkpoint saves and restores (download, restore)
   bool zeroed = false;  // cleared to zero at creation: for images too big to upload from the CPU
+  // A second format that storage writes see (Image::storageView): e.g. R32_UINT over a packed unorm
+  // format, so a shader writes the texels' bits with a rounding it chooses rather than the driver's.
+  VkFormat storageFormat = VK_FORMAT_UNDEFINED;
 };
 
 struct ImageHandle {
