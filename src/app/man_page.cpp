@@ -33,7 +33,9 @@ std::string flagWithValue(const flags::Flag& flag) {
 }  // namespace
 
 std::string manPage() {
-  std::string out = ".TH VITRINE 1 \"\" \"Vitrine\" \"User Commands\"\n"
+  // No hyphenation (HY: the man macros turn it on again at each paragraph) and a ragged right edge:
+  // flags and file names stay whole and searchable.
+  std::string out = ".TH VITRINE 1 \"\" \"Vitrine\" \"User Commands\"\n.nr HY 0\n.nh\n.ad l\n"
                     ".SH NAME\nvitrine \\- a gallery of real\\-time GPU pieces\n.SH SYNOPSIS\n";
   for (const flags::ModeInfo& mode : flags::modes()) {
     out += ".SY vitrine\n";
