@@ -75,13 +75,11 @@ _vitrine() {
   local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD - 1]} mode=gallery word
   COMPREPLY=()
   case ${COMP_WORDS[1]} in
-    bench | record | encode | compare) mode=${COMP_WORDS[1]} ;;
+    @COMMAND_PATTERN@) mode=${COMP_WORDS[1]} ;;
   esac
   for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
     case $word in
-      --headless) mode=headless ;;
-      --export-preset) mode=export ;;
-    esac
+@MODE_FLAGS@    esac
   done
   case $prev in
     @OPTIONAL_SCENE@) [[ $cur == -* ]] || _vitrine_add "$("$(_vitrine_bin)" --list-scenes 2>/dev/null | awk '{print $2}')" "$cur" ;;
@@ -100,7 +98,7 @@ _vitrine() {
     local flags=_vitrine_$mode
     COMPREPLY=($(compgen -W "${!flags} $_vitrine_listing" -- "$cur"))
   elif ((COMP_CWORD == 1)); then
-    COMPREPLY=($(compgen -W "bench record encode compare" -- "$cur"))
+    COMPREPLY=($(compgen -W "@COMMANDS@" -- "$cur"))
   elif [[ $mode == encode || $mode == compare ]]; then
     compopt -o filenames 2>/dev/null
     COMPREPLY=($(compgen -f -- "$cur"))
@@ -139,6 +137,17 @@ std::string bashCompletion() {
     choices += fmt::format("    {}) COMPREPLY=($(compgen -W '{}' -- \"$cur\")); return ;;\n", flag.name, words);
   }
   replaceMark(body, "@CHOICES@", choices);
+  // The modes: those a first word starts (bench), and those a flag picks (--headless).
+  std::string commands, modeFlags;
+  for (const flags::ModeInfo& mode : flags::modes()) {
+    if (mode.word.starts_with("--")) modeFlags += fmt::format("      {}) mode={} ;;\n", mode.word, modeVariable(mode));
+    else if (!mode.word.empty()) commands += (commands.empty() ? "" : " ") + std::string(mode.word);
+  }
+  std::string commandPattern = commands;
+  for (char& c : commandPattern) c = c == ' ' ? '|' : c;
+  replaceMark(body, "@COMMAND_PATTERN@", commandPattern);
+  replaceMark(body, "@MODE_FLAGS@", modeFlags);
+  replaceMark(body, "@COMMANDS@", commands);
   return out + body;
 }
 
