@@ -70,7 +70,7 @@ constexpr Flag kFlags[] = {
              "any message then makes the run exit non-zero.",
      .store = on<&Options::validation>},
     {.name = "--reduced-motion", .modes = kRuns, .value = Value::None,
-     .help = "Asks the scenes for calm: slower, gentler motion; turns the flash guard on.",
+     .help = "Asks the scenes for calm: slower, gentler motion where a scene has it; turns the flash guard on.",
      .store = on<&Options::reducedMotion>},
     {.name = "--flash-guard", .modes = kRuns, .metavar = "on|off", .value = Value::Choice,
      .help = "on holds back what would flash more than three times a second over a large area (WCAG 2.3.1; "
@@ -254,19 +254,20 @@ constexpr Flag kFlags[] = {
     // compare: the golden metric's per-case loosening (tests/golden/cases.txt), so any binary checks a case
     // as the suite does (scripts/golden-cases).
     {.name = "--fail-fraction", .modes = kCompare, .metavar = "F", .value = Value::Text,
-     .help = "The fraction of pixels that may differ, 0 to 1.",
+     .help = "The fraction of pixels that may differ, 0 to 1 (0.002).",
      .store =
          [](Options& o, std::string_view flag, const std::string& v) {
            o.compareThresholds.failFraction = parseMetric(flag, v, 0.0, 1.0);
          }},
     {.name = "--hard-limit", .modes = kCompare, .metavar = "H", .value = Value::Text,
-     .help = "The difference no pixel may pass.",
+     .help = "The largest difference any pixel may have (0.25).",
      .store =
          [](Options& o, std::string_view flag, const std::string& v) {
            o.compareThresholds.hardLimit = float(parseMetric(flag, v, 0.0, 1e9));
          }},
     {.name = "--lowpass", .modes = kCompare, .metavar = "N", .value = Value::Text,
-     .help = "Compares N-pixel block averages instead of pixels, 0 to 4096.",
+     .help = "Also compares averages over N x N blocks, for pictures whose single pixels may flip (0 to 4096; "
+             "0: off).",
      .store =
          [](Options& o, std::string_view flag, const std::string& v) {
            o.compareThresholds.block = int(parseMetric(flag, v, 0.0, 4096.0));
