@@ -1,5 +1,6 @@
 // Vitrine: parses the command line and hands over to one mode. Every failure a user can cause ends
 // here as one sentence on stderr and a non-zero exit.
+#include "app/help.h"
 #include "app/options.h"
 #include "gpu/check.h"
 #include "gpu/device.h"
@@ -16,7 +17,9 @@ int main(int argc, char** argv) {
   try {
     const Options options = parseOptions(argc, argv);
     switch (options.mode) {
-      case Mode::Help: std::fputs(usage(), stdout); return 0;
+      case Mode::Help: std::fputs(help::usage().c_str(), stdout); return 0;
+      case Mode::HelpMan: std::fputs(help::manPage().c_str(), stdout); return 0;
+      case Mode::HelpCompletion: std::fputs(help::bashCompletion().c_str(), stdout); return 0;
       case Mode::Version: std::printf("vitrine 0.1.0\n"); return 0;
       case Mode::ListScenes: {
         int width = 0;  // the longest name: the titles line up after it
@@ -28,6 +31,8 @@ int main(int argc, char** argv) {
       }
       case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced
         return host::runListParams(options);
+      case Mode::ListKeys: return host::runListKeys(options);
+      case Mode::ListPresets: return host::runListPresets(options);
       case Mode::ListMonitors: std::fputs(host::Window::listMonitors().c_str(), stdout); return 0;
       case Mode::ListDevices: {
         gpu::Instance instance({options.validation, {}});

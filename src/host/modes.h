@@ -15,6 +15,8 @@ int runRecordFilm(const Options& options);  // record --out NAME.mp4|.mov|.mkv: 
 int runEncode(const Options& options);    // encode FOLDER: a recorded sequence into a film (host/encode.cpp)
 int runCompare(const Options& options);   // compare: the golden metric on two files
 int runListParams(const Options& options);  // --list-params: each scene's parameters (host/list_params.cpp)
+int runListKeys(const Options& options);     // --list-keys: SCENE.KEY, one a line
+int runListPresets(const Options& options);  // --list-presets: SCENE.NAME, the scene's own then the user's
 
 // The offline runs' live input (headless, record): the --map, --audio-in and --midi-in files for
 // `scene`, frame-exact; null when the command line asks for none. Throws vitrine::Error for bad input.
