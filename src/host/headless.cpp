@@ -8,6 +8,7 @@
 #include "host/user_presets.h"
 #include "host/event_log.h"
 #include "host/input_script.h"
+#include "host/live_link.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "host/output_warp_file.h"

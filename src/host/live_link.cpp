@@ -1,8 +1,8 @@
 #include "host/live_link.h"
 
+#include "app/options.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
-#include "host/modes.h"
 #include "host/scene_renderer.h"
 #include "live/audio_capture.h"
 #include "live/audio_clip.h"
