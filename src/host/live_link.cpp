@@ -9,7 +9,7 @@
 #include "live/audio_file_input.h"
 #include "live/midi_input.h"
 #include "live/smf.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 
