@@ -7,7 +7,7 @@
 #include "host/modes.h"
 #include "host/user_presets.h"
 #include "host/window.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -3,7 +3,7 @@
 
 #include "app/values.h"
 #include "core/error.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "core/output_path.h"
 #include "image/image_io.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <algorithm>
 #include <cstdlib>

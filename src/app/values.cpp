@@ -1,7 +1,7 @@
 #include "app/values.h"
 
 #include "core/error.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <cctype>
 #include <charconv>

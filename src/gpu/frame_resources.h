@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vitrine::gpu {
@@ -144,6 +145,17 @@ class FrameResources {
   // Images and buffers alike: an absolute size is known at once, a relative one once the target's is.
   template <typename E> void createWhenSized(E& entry) {
     if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  }
+  // declare and redeclare, for images and buffers alike: the new entry's index; the entry redeclared.
+  template <typename E> uint32_t declareIn(std::vector<E>& entries, decltype(E::decl) decl) {
+    entries.push_back(E{std::move(decl)});
+    createWhenSized(entries.back());
+    return uint32_t(entries.size() - 1);
+  }
+  template <typename E> void redeclareIn(std::vector<E>& entries, uint32_t index, decltype(E::decl) decl) {
+    E& entry = entries.at(index);
+    entry.decl = std::move(decl);
+    createWhenSized(entry);
   }
   void beginBuffers(VkCommandBuffer cmd, StreamArena& stream);
   void writeFirstContents(VkCommandBuffer cmd, StreamArena& stream, Entry& entry);

@@ -9,7 +9,7 @@
 #include "host/modes.h"
 #include "host/user_presets.h"
 #include "params/listing.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 namespace vitrine::host {
 

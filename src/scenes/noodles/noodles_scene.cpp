@@ -225,7 +225,6 @@ void NoodlesScene::drawPanel() {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<NoodlesScene>("noodles", "Curl-noise noodles", 5, &schema,
-    "Drag to orbit the camera.");
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<NoodlesScene>(context); }
 
 }  // namespace vitrine::noodles
