@@ -64,7 +64,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       settings_(params::defaultSettingsPath(), options.resetSettings, /*keepScene=*/options.kiosk),
       guard_(device_, programs_),
       flashGuard_(flashGuardOn(options)),
-      renderer_(std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight)),
+      renderer_(makeRenderer()),
       swapchain_(device_, surface_.handle(), window_.handle(), window_.framebufferSize(), options.vsync),
       overlay_(device_, window_.handle(), swapchain_.format(), kFramesInFlight,
                {assets_.font("Fraunces"), assets_.font("CormorantSC")},
@@ -76,14 +76,10 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       capture_(device_, kFramesInFlight, "captures"),
       steps_(input_.dt),
       vsync_(options.vsync),
-      warpFile_(options.outputWarp),
-      playlist_(std::move(playlist)) {
+      warpFile_(options.outputWarp) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
   tiers_.setStartingTier(AdaptiveQuality::name(AdaptiveQuality::startingTier(device_)));
-  renderer_->setEventSink(&tiers_);
-  renderer_->setAudioSink(&audio_);
-  renderer_->setRealtime(true);
   remoteSaves_ = options.remoteSaves;
   if (options.remote) remote_.emplace(options.remoteBind, options.remoteAllow), remote_->setPresets(&presets_);
   if (options.kiosk) {
@@ -122,7 +118,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     if (const std::string why = presets_.import(file); !why.empty())
       std::fprintf(stderr, "vitrine: presets: %s not imported: %s\n", file.c_str(), why.c_str());
   const SceneInfo* last = findScene(settings_.lastScene());
-  const SceneInfo& firstScene = !playlist_.empty() ? namedScene(playlist_.front().scene)
+  const SceneInfo& firstScene = !playlist.empty() ? namedScene(playlist.front().scene)
                                 : named          ? *named
                                 : last           ? *last
                                                  : sceneRegistry().front();
@@ -144,18 +140,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   }
   live_ = std::make_unique<GalleryLive>(options, settings_, audio_, firstScene.name);
   if (options.kiosk) {
-    const auto scenes = sceneRegistry();
-    // Cycling resumes after 30 s alone, or the dwell when shorter (but 10 s at least).
-    if (playlist_.empty()) {
-      kiosk_.emplace(scenes.size(), size_t(&firstScene - scenes.data()),
-                     KioskTiming{options.dwell, 2.0, std::clamp(options.dwell, 10.0, 30.0)});
-    } else {
-      std::vector<double> dwells;
-      for (const PlaylistEntry& entry : playlist_) dwells.push_back(entry.dwell);
-      const double shortest = *std::min_element(dwells.begin(), dwells.end());
-      kiosk_.emplace(std::move(dwells), 0, KioskTiming{shortest, 2.0, std::clamp(shortest, 10.0, 30.0)});
-    }
-    lastPointer_ = window_.takePointer();  // where the cursor rests is not a touch
+    kiosk_.emplace(std::move(playlist), firstScene, options.dwell);
+    kiosk_->rest(window_.takePointer());  // where the cursor rests is not a touch
   }
   switchScene(firstScene);
 }
@@ -176,7 +162,7 @@ int Gallery::run() {
     frame();
   }
   // What the scene holds now is what the settings file keeps, whatever changed it last.
-  if (hasScene_ && playlist_.empty()) rememberValues();
+  if (hasScene_ && remembers()) rememberValues();
   device_.waitIdle();
   // What the viewer saw: frames a second from the first one shown to the last.
   if (frameCount_ > 1) {
@@ -217,11 +203,8 @@ void Gallery::frame() {
   handleKeys();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
-  Crossfade fade;
-  if (incoming_ && incoming_->hasScene()) {  // kiosk mode's cross-fade: both scenes run and draw
-    incoming_->recordTarget(cmd, slot, incomingShown_, frameExtent(swapchain_.extent(), shownWarp()));
-    fade = {&incoming_->target(), fade_};
-  }
+  // Kiosk mode's cross-fade: both scenes run and draw.
+  const Crossfade fade = crossfade_.record(cmd, slot, frameExtent(swapchain_.extent(), shownWarp()));
   renderer_->setFlashGuard(flashGuard_ ? &guard_ : nullptr);
   renderer_->record(cmd, slot, shown_,
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
@@ -294,7 +277,7 @@ void Gallery::simulate() {
   lastFrame_ = now;
   frameSeconds_ += (elapsed - frameSeconds_) * 0.05;
   Pointer pointer = window_.takePointer();
-  bool touched = touchedThisFrame(pointer);
+  bool touched = kiosk_ && kiosk_->touched(pointer, !keys_.empty() || !drops_.empty());
   if (remote_) {
     RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
     touched = touched || applied.touched;
@@ -307,7 +290,7 @@ void Gallery::simulate() {
         remoteKeys_[std::string(renderer_->info().name)].insert(value.first);
         applied.values.push_back(std::move(value));
       }
-    if (!applied.values.empty() && playlist_.empty()) rememberValues();  // saved like the panel's (--remote-saves)
+    if (!applied.values.empty() && remembers()) rememberValues();  // saved like the panel's (--remote-saves)
     actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
     if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
@@ -334,22 +317,18 @@ void Gallery::simulate() {
     shown_ = input_;
     input_.time += input_.dt;
     ++input_.frame;
-    if (incoming_ && incoming_->hasScene()) {  // the scene fading in runs on its own clock, untouched
-      incoming_->scene().update(incomingInput_);
-      incomingShown_ = incomingInput_;
-      incomingInput_.time += incomingInput_.dt;
-      ++incomingInput_.frame;
-    }
+    crossfade_.step();  // the scene fading in runs on its own clock, untouched
   }
   if (!firstSteps) stepCost_.measured(due, secondsBetween(simulating, Clock::now()));
 }
 
-// Kiosk mode: did a person do anything? A key, a click, a scroll, a drop, or a mouse that moved.
-bool Gallery::touchedThisFrame(const Pointer& pointer) {
-  const bool moved = pointer.inside && glm::length(pointer.pixels - lastPointer_.pixels) > 2.0f;
-  lastPointer_ = pointer;
-  return moved || pointer.leftPressed || pointer.leftHeld || pointer.wheel != 0.0f || !keys_.empty() ||
-         !drops_.empty();
+// Renderers of the scene showing and of one fading in: their sound, their events and real time.
+std::unique_ptr<SceneRenderer> Gallery::makeRenderer() {
+  auto renderer = std::make_unique<SceneRenderer>(device_, programs_, assets_, kFramesInFlight);
+  renderer->setEventSink(&tiers_);
+  renderer->setAudioSink(&audio_);
+  renderer->setRealtime(true);
+  return renderer;
 }
 
 // Shader sources are polled a couple of times a second: often enough to feel live, rarely enough

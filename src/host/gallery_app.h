@@ -2,7 +2,7 @@
 // The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
 // screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
 // Its parts live in four files: gallery.cpp (start, the frame loop, the simulation's steps),
-// gallery_scenes.cpp (switching scenes, the kiosk's schedule and cross-fades), gallery_menu.cpp (keys,
+// gallery_scenes.cpp (switching scenes, driving the kiosk's timetable and cross-fade), gallery_menu.cpp (keys,
 // the menu, parameter edits and presets, screenshots and captures) and gallery_projector.cpp
 // (projector setup and the pins it keeps). runGallery (host/modes.h) is the way in.
 #include <chrono>
@@ -23,14 +23,14 @@
 #include "host/frame_slot.h"
 #include "host/gallery_live.h"
 #include "host/gallery_settings.h"
-#include "host/kiosk.h"
+#include "host/kiosk_crossfade.h"
+#include "host/kiosk_timetable.h"
 #include "host/live_capture.h"
 #include "host/menu.h"
 #include "host/modes.h"
 #include "host/output_window.h"
 #include "host/overlay.h"
 #include "host/param_panel.h"
-#include "host/playlist.h"
 #include "host/projector_setup.h"
 #include "host/remote_link.h"
 #include "host/scene_renderer.h"
@@ -88,12 +88,13 @@ class Gallery {
   bool managePresets(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
-  const SceneInfo& entryScene(size_t entry) const;
-  size_t entryOf(const SceneInfo& info) const;
   void startEntryPreset(SceneRenderer& renderer, size_t entry);
   void finishFade();
   void nowShowing();
-  bool touchedThisFrame(const Pointer& pointer);
+  std::unique_ptr<SceneRenderer> makeRenderer();
+  // A kiosk's playlist presets are not remembered, so that a line without a preset shows the scene as
+  // saved, whatever an earlier line set.
+  bool remembers() const { return !kiosk_ || !kiosk_->playlist(); }
 
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
@@ -112,7 +113,7 @@ class Gallery {
   FlashGuard guard_;          // before the renderers, which drain the device before it goes
   bool flashGuard_ = false;   // --flash-guard, --kiosk, --reduced-motion, then the menu's switch
   std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
-  std::unique_ptr<SceneRenderer> incoming_;  // kiosk mode: the scene fading in, made at the first fade
+  KioskCrossfade crossfade_{[this] { return makeRenderer(); }};  // kiosk mode: the scene fading in
   Swapchain swapchain_;
   Overlay overlay_;
   Screenshots screenshots_;
@@ -166,14 +167,7 @@ class Gallery {
   std::optional<PanelEdit> costlyEdit_;  // an edit that would freeze the window, waiting for a yes
   std::string costlyWhy_;
 
-  // Kiosk mode (--kiosk).
-  std::optional<KioskSchedule> kiosk_;
-  // --playlist: the kiosk's entries. Their presets apply over the saved values and are not remembered,
-  // so that a line without a preset shows the scene as saved, whatever an earlier line set.
-  std::vector<PlaylistEntry> playlist_;
-  FrameInput incomingInput_, incomingShown_;  // the incoming scene's steps during a fade
-  float fade_ = 0.0f;                         // its weight in the output
-  Pointer lastPointer_;                       // to tell a moved mouse
+  std::optional<KioskTimetable> kiosk_;  // --kiosk (and --playlist): what shows when
   // Remote play (--remote): keys a client changed, per scene; kept out of the settings file unless
   // --remote-saves.
   std::optional<RemoteLink> remote_;
