@@ -76,12 +76,12 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
       capture_(device_, kFramesInFlight, "captures"),
       steps_(input_.dt),
       vsync_(options.vsync),
-      warpFile_(options.outputWarp) {
+      warpFile_(options.outputWarp),
+      remote_(options.remoteSaves) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
   tiers_.setStartingTier(AdaptiveQuality::name(AdaptiveQuality::startingTier(device_)));
-  remoteSaves_ = options.remoteSaves;
-  if (options.remote) remote_.emplace(options.remoteBind, options.remoteAllow), remote_->setPresets(&presets_);
+  if (options.remote) remote_.listen(options.remoteBind, options.remoteAllow, &presets_);
   if (options.kiosk) {
     uiHidden_ = true;
     window_.setCursorHidden(true);
@@ -278,23 +278,17 @@ void Gallery::simulate() {
   frameSeconds_ += (elapsed - frameSeconds_) * 0.05;
   Pointer pointer = window_.takePointer();
   bool touched = kiosk_ && kiosk_->touched(pointer, !keys_.empty() || !drops_.empty());
-  if (remote_) {
-    RemoteApplied applied = remote_->apply(*renderer_, nullptr, input_.time, frameMs());
-    touched = touched || applied.touched;
-    if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
-    for (const auto& [key, value] : applied.values) remoteKeys_[std::string(renderer_->info().name)].insert(key);
+  if (remote_.on()) {
     // Values sent while this scene was hidden wait until its own frames are timed: the guard judges
     // them by what a frame of this scene costs, not by the time of the scene shown before.
-    if (timedFrames_ >= kTimedFramesBeforeWaiting)
-      for (auto& value : remote_->applyWaiting(*renderer_, gpuMs_)) {
-        remoteKeys_[std::string(renderer_->info().name)].insert(value.first);
-        applied.values.push_back(std::move(value));
-      }
+    const RemoteApplied applied = remote_.apply(*renderer_, input_.time, frameMs(),
+                                                timedFrames_ >= kTimedFramesBeforeWaiting ? std::optional(gpuMs_) : std::nullopt);
+    touched = touched || applied.touched;
+    if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     if (!applied.values.empty() && remembers()) rememberValues();  // saved like the panel's (--remote-saves)
-    actions_.insert(actions_.end(), applied.actions.begin(), applied.actions.end());
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
-    if (auto phone = remote_->pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
-    remote_->publish(*renderer_);
+    if (auto phone = remote_.pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
+    remote_.publish(*renderer_);
   }
   if (kiosk_) kioskStep(elapsed, touched);
   if (setup_.active()) setup_.pointer(pointer, warpOf(setupOutput_));
@@ -308,7 +302,7 @@ void Gallery::simulate() {
     input_.keysPressed = std::exchange(keys_, {});
     input_.keysHeld = overlay_.wantsText() ? std::vector<int>{} : window_.keysHeld();
     input_.droppedFiles = std::exchange(drops_, {});
-    input_.actions = std::exchange(actions_, {});
+    input_.actions = remote_.takeActions();
     live_->step(*renderer_, input_);
     renderer_->scene().update(input_);
     // A frame's GPU time is news to its first step only: the automatic tiers count frames, and a

@@ -7,10 +7,8 @@
 // (projector setup and the pins it keeps). runGallery (host/modes.h) is the way in.
 #include <chrono>
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +30,7 @@
 #include "host/overlay.h"
 #include "host/param_panel.h"
 #include "host/projector_setup.h"
-#include "host/remote_link.h"
+#include "host/remote_session.h"
 #include "host/scene_renderer.h"
 #include "host/screenshot.h"
 #include "host/shown_time.h"
@@ -168,12 +166,7 @@ class Gallery {
   std::string costlyWhy_;
 
   std::optional<KioskTimetable> kiosk_;  // --kiosk (and --playlist): what shows when
-  // Remote play (--remote): keys a client changed, per scene; kept out of the settings file unless
-  // --remote-saves.
-  std::optional<RemoteLink> remote_;
-  std::map<std::string, std::set<std::string>, std::less<>> remoteKeys_;
-  bool remoteSaves_ = false;
-  std::vector<ActionCall> actions_;  // from clients, for the next step
+  RemoteSession remote_;  // --remote: the clients, and the values they set
   std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
 };
 

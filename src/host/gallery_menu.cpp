@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
 #include "host/gallery_app.h"
 
@@ -112,7 +113,7 @@ void Gallery::showMenu() {
   MenuState state{renderer_->info(), renderer_->scene(), fps, cpuMs_, passes_, vsync_, programs_.error(),
                   note_, missingAssets_, overlay_.titleFont(), &panel_, panelError_, time_,
                   helpShown_, capture_.status(renderer_->info().name), capture_.active(), reloadNote_,
-                  remote_ ? remote_->status() : std::string(), costlyEdit_ ? costlyWhy_ : std::string(),
+                  remote_.status(), costlyEdit_ ? costlyWhy_ : std::string(),
                   tiers_.describe(renderer_->info().name, params::snapshot(renderer_->parameters())),
                   clockNote(), &menuLayout_};
   state.userPresets = presets_.presetsOf(renderer_->info().name);
@@ -120,7 +121,7 @@ void Gallery::showMenu() {
   state.live = live_->panelState();
   state.flashGuard = flashGuard_;
   const MenuChoice choice = drawMenu(state);
-  if (live_->apply(choice.live, panel_) && remote_) remote_->setMappings(live_->mappingLines());
+  if (live_->apply(choice.live, panel_)) remote_.setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
   if (choice.flashGuard && !flashGuard_) guard_.reset();  // what it held is stale: count from the next frame
   flashGuard_ = choice.flashGuard;
@@ -191,11 +192,7 @@ void Gallery::applyEdit(const PanelEdit& edit) {
 }
 
 void Gallery::applyEditNow(const PanelEdit& edit) {
-  auto& remoteKeys = remoteKeys_[std::string(renderer_->info().name)];  // what the user sets here is theirs
-  if (edit.what == PanelEdit::What::Values)
-    for (const auto& kv : edit.values) remoteKeys.erase(kv.first);
-  else
-    remoteKeys.clear();
+  remote_.userSet(renderer_->info().name, edit);  // what the user sets here is theirs
   switch (edit.what) {
     case PanelEdit::What::Values: panelError_ = renderer_->applyParameters(edit.values); break;
     case PanelEdit::What::Preset: {
@@ -210,7 +207,7 @@ void Gallery::applyEditNow(const PanelEdit& edit) {
     default: break;  // the user's presets: managePresets
   }
   rememberValues();
-  if (remote_) remote_->publish(*renderer_, true);
+  remote_.publish(*renderer_, true);
 }
 
 // Saving, renaming, deleting or exporting one of the user's presets of the scene showing (true), said in
@@ -246,7 +243,7 @@ bool Gallery::managePresets(const PanelEdit& edit) {
     noted_ = Clock::now();
     std::printf("vitrine: %s\n", done.c_str());
     std::fflush(stdout);
-    if (remote_) remote_->publish(*renderer_, true);
+    remote_.publish(*renderer_, true);
   }
   return true;
 }
@@ -256,9 +253,7 @@ bool Gallery::managePresets(const PanelEdit& edit) {
 void Gallery::rememberValues() {
   const std::string_view scene = renderer_->info().name;
   params::KeyValues values = params::snapshot(renderer_->parameters());
-  std::set<std::string> theirs;  // keys whose live value is not the user's to save
-  if (const auto remote = remoteKeys_.find(scene); remote != remoteKeys_.end() && !remoteSaves_)
-    theirs = remote->second;
+  std::set<std::string> theirs = remote_.notTheUsers(scene);  // keys whose live value is not the user's to save
   if (live_)  // a mapping plays these: the values the user saved stay
     for (std::string& key : live_->drivenKeys()) theirs.insert(std::move(key));
   if (!theirs.empty()) {

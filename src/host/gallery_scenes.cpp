@@ -69,9 +69,8 @@ void Gallery::switchScene(const SceneInfo& info) {
 // The scene showing changed (a switch, a finished fade): its mappings, and every page told.
 void Gallery::nowShowing() {
   live_->showing(renderer_->info());
-  if (!remote_) return;
-  remote_->setMappings(live_->mappingLines());
-  remote_->publish(*renderer_, true);
+  remote_.setMappings(live_->mappingLines());
+  remote_.publish(*renderer_, true);
 }
 
 // A playlist line's preset over the scene's saved values, just after it started; a preset the scene
