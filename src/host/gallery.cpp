@@ -56,7 +56,6 @@ const SceneInfo& Gallery::namedScene(const std::string& name) {
 
 Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<PlaylistEntry> playlist)
     : window_(options.size.value_or(VkExtent2D{1280, 720}), options.fullscreen, options.monitor, options.span),
-      warp_(options.outputWarp.empty() ? std::nullopt : std::optional(readOutputWarp(options.outputWarp))),
       instance_({options.validation, window_.vulkanExtensions()}),
       surface_(window_.createSurface(instance_.handle())),
       device_(instance_, {options.device, surface_.handle()}),
@@ -74,9 +73,15 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
                options.resetSettings),
       screenshots_(device_, kFramesInFlight, "screenshots"),
       capture_(device_, kFramesInFlight, "captures"),
+      outputs_(settings_,
+               [this](VkExtent2D extent, const maths::OutputWarp& warp, std::string_view where) {
+                 checkWarpedFrame(device_, extent, warp, where);
+               },
+               options.outputWarp,
+               options.outputWarp.empty() ? std::nullopt : std::optional(readOutputWarp(options.outputWarp)),
+               window_.framebufferSize()),
       steps_(input_.dt),
       vsync_(options.vsync),
-      warpFile_(options.outputWarp),
       remote_(options.remoteSaves) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
@@ -87,25 +92,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     window_.setCursorHidden(true);
   }
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
-  if (!options.outputs.empty()) {
-    std::vector<OutputPlacement> placements = readOutputs(options.outputs);
-    for (size_t i = 0; i < placements.size(); ++i) {
-      const std::string where = fmt::format("{}, output {}", options.outputs, i + 1);
-      if (const auto& window = placements[i].window) {
-        const uint32_t limit = device_.limits().maxImageDimension2D;
-        if (uint32_t((*window)[2]) > limit || uint32_t((*window)[3]) > limit)
-          throw Error(fmt::format("{}: a window of {}x{} is outside what {} supports (1 to {} per side).", where,
-                                  (*window)[2], (*window)[3], device_.properties().deviceName, limit));
-      }
-      outputs_.push_back(std::make_unique<OutputWindow>(instance_, device_, placements[i], vsync_, kFramesInFlight, int(i) + 1));
-      window_.takeKeysOf(outputs_.back()->handle());
-      OutputWindow& output = *outputs_.back();
-      if (placements[i].warp) checkWarpedFrame(device_, output.extent(), output.warp(), where);
-      else output.warp() = savedWarp(output.name(), output.extent()).value_or(maths::OutputWarp{});
-    }
-  }
-  if (warp_) checkWarpedFrame(device_, window_.framebufferSize(), *warp_, options.outputWarp);
-  else warp_ = savedWarp(kMainOutput, window_.framebufferSize());  // a file named on the command line wins
+  if (!options.outputs.empty())
+    outputs_.openWindows(instance_, device_, window_, options.outputs, vsync_, kFramesInFlight);
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
@@ -199,16 +187,16 @@ void Gallery::frame() {
   simulate();
   showMenu();
   showToast();
-  if (setup_.active()) setup_.draw(warpOf(setupOutput_), swapchain_.extent(), outputName(setupOutput_), outputs_.size() + 1);
+  outputs_.drawSetup(swapchain_.extent());
   handleKeys();
   VkCommandBuffer cmd = current.begin();
   const bool compute = swapchain_.computeWrites();
   // Kiosk mode's cross-fade: both scenes run and draw.
-  const Crossfade fade = crossfade_.record(cmd, slot, frameExtent(swapchain_.extent(), shownWarp()));
+  const Crossfade fade = crossfade_.record(cmd, slot, frameExtent(swapchain_.extent(), outputs_.shownWarp()));
   renderer_->setFlashGuard(flashGuard_ ? &guard_ : nullptr);
   renderer_->record(cmd, slot, shown_,
                     BlitDestination{swapchain_.image(*image), swapchain_.extent(), kAcquired, gpu::use::ColorAttachment,
-                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, shownWarp()},
+                                    compute ? swapchain_.view(*image) : VK_NULL_HANDLE, compute, outputs_.shownWarp()},
                     fade);
   if (screenshots_.requested() || capture_.active()) {
     recordWindowCopy(cmd);
@@ -216,20 +204,14 @@ void Gallery::frame() {
     screenshots_.record(cmd, slot, *windowCopy_, rendered, renderer_->info().name, &renderer_->timer());
     capture_.record(cmd, slot, *windowCopy_, rendered, &renderer_->timer());
   }
-  // The other outputs show the same frame, each through its own warp; one that is hidden or being
-  // rebuilt misses this frame.
-  std::vector<std::pair<VkSemaphore, VkSemaphore>> outputsDrawn;
-  for (auto& output : outputs_)
-    if (output->acquire(slot, vsync_)) {
-      renderer_->recordOutput(cmd, output->destination(kAcquireStage), fade);
-      outputsDrawn.emplace_back(output->acquired(slot), output->renderFinished());
-    }
+  // The other outputs show the same frame, each through its own warp.
+  const auto outputsDrawn = outputs_.record(cmd, slot, *renderer_, fade, vsync_, kAcquireStage);
   slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_->timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image), outputsDrawn);
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
   swapchain_.present(*image);
-  for (auto& output : outputs_) output->present();
+  outputs_.present();
   // One line once the window shows its first frame: what is showing where (and what the gallery's
   // checks wait for instead of guessing how long a start takes).
   if (frameCount_++ == 0) {
@@ -239,11 +221,8 @@ void Gallery::frame() {
   }
   // And one when projector setup first shows for an output, its card built: the calibration card
   // can take seconds to build on a busy CPU, and a corner dragged before then would be lost.
-  if (!setup_.active()) setupShown_.reset();
-  else if (setupShown_ != setupOutput_ && !nextScene_) {
-    setupShown_ = setupOutput_;
-    std::fprintf(stderr, "vitrine: projector setup of %s\n", std::string(outputName(setupOutput_)).c_str());
-  }
+  if (const auto output = outputs_.setupNewlyShown(/*ready=*/!nextScene_))
+    std::fprintf(stderr, "vitrine: projector setup of %s\n", std::string(*output).c_str());
   pollShaders();
 }
 
@@ -291,8 +270,8 @@ void Gallery::simulate() {
     remote_.publish(*renderer_);
   }
   if (kiosk_) kioskStep(elapsed, touched);
-  if (setup_.active()) setup_.pointer(pointer, warpOf(setupOutput_));
-  cursor_.observe(pointer, setup_.active() || (!uiHidden_ && overlay_.wantsMouse()));  // setup's mouse is not the scene's
+  outputs_.setupPointer(pointer);
+  cursor_.observe(pointer, outputs_.setupActive() || (!uiHidden_ && overlay_.wantsMouse()));  // setup's mouse is not the scene's
   // Every step that is due, unless a step costs more than the time it stands for (StepCost).
   const int due = time_.due(steps_, elapsed, stepCost_.affordable(elapsed), renderer_->scene().takeGivenUpSeconds());
   const bool firstSteps = input_.frame == 0;  // a scene's first update builds things: not its cost

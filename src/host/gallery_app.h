@@ -1,10 +1,12 @@
 #pragma once
 // The windowed gallery: the frame loop tying the window, swapchain, scene renderer, overlay and
 // screenshots together. Two frames are in flight: the CPU records one while the GPU runs the other.
-// Its parts live in four files: gallery.cpp (start, the frame loop, the simulation's steps),
-// gallery_scenes.cpp (switching scenes, driving the kiosk's timetable and cross-fade), gallery_menu.cpp (keys,
-// the menu, parameter edits and presets, screenshots and captures) and gallery_projector.cpp
-// (projector setup and the pins it keeps). runGallery (host/modes.h) is the way in.
+// Its parts live in three files: gallery.cpp (start, the frame loop, the simulation's steps),
+// gallery_scenes.cpp (switching scenes, driving the kiosk's timetable and cross-fade) and gallery_menu.cpp
+// (keys, the menu, parameter edits and presets, screenshots and captures, starting projector setup).
+// Its rooms are objects of their own: the kiosk (KioskTimetable, KioskCrossfade), the remote session
+// (RemoteSession) and the outputs with projector setup (GalleryOutputs). runGallery (host/modes.h) is
+// the way in.
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -26,10 +28,9 @@
 #include "host/live_capture.h"
 #include "host/menu.h"
 #include "host/modes.h"
-#include "host/output_window.h"
+#include "host/gallery_outputs.h"
 #include "host/overlay.h"
 #include "host/param_panel.h"
-#include "host/projector_setup.h"
 #include "host/remote_session.h"
 #include "host/scene_renderer.h"
 #include "host/screenshot.h"
@@ -61,15 +62,6 @@ class Gallery {
   void frame();
   void handleKeys();
   void startSetup();
-  void endSetup(ProjectorSetup::Key how);
-  // Outputs by number: 0 the main window, then --outputs' windows in order.
-  maths::OutputWarp& warpOf(size_t output);
-  std::string_view outputName(size_t output) const { return output == 0 ? kMainOutput : outputs_[output - 1]->name(); }
-  VkExtent2D outputExtent(size_t output) const { return output == 0 ? swapchain_.extent() : outputs_[output - 1]->extent(); }
-  // How the main window shows the frame: its own warp, or the one of the output being set up.
-  const maths::OutputWarp* shownWarp() { return setup_.active() && setupOutput_ > 0 ? &warpOf(setupOutput_) : warp(); }
-  std::optional<maths::OutputWarp> savedWarp(std::string_view output, VkExtent2D extent);
-  void keepWarp(size_t output);
   void switchScene(const SceneInfo& info);
   void simulate();
   void collect(uint32_t slot);
@@ -97,8 +89,6 @@ class Gallery {
   Assets assets_ = Assets::locate();
   std::vector<std::string> missingAssets_ = assets_.missing();
   Window window_;
-  std::optional<maths::OutputWarp> warp_;  // --output-warp: how this output shows the frame (a projector's)
-  const maths::OutputWarp* warp() const { return warp_ ? &*warp_ : nullptr; }
   gpu::Instance instance_;
   Surface surface_;
   gpu::Device device_;
@@ -117,7 +107,7 @@ class Gallery {
   Screenshots screenshots_;
   LiveCapture capture_;
   std::vector<FrameSlot> slots_;
-  std::vector<std::unique_ptr<OutputWindow>> outputs_;  // --outputs: more windows showing the same frame
+  GalleryOutputs outputs_;  // the main window's warp, --outputs' windows and projector setup (F7)
   uint64_t frameCount_ = 0;
   uint64_t sceneSerial_ = 0;           // counts scene switches and restarts
   std::vector<uint64_t> slotSerial_ = std::vector<uint64_t>(kFramesInFlight);  // the scene each slot drew
@@ -131,17 +121,12 @@ class Gallery {
   // output's warp, the flash guard's hold-back or a cross-fade: what F12 and F9 save.
   std::optional<gpu::Image> windowCopy_;
   bool helpShown_ = false;
-  ProjectorSetup setup_;                    // F7: the corner pin dragged on the picture
-  const SceneInfo* beforeSetup_ = nullptr;  // the scene setup mode switched away from (to the card)
-  size_t setupOutput_ = 0;                  // the output whose pin setup moves
-  std::optional<size_t> setupShown_;        // the output whose setup the log last said is showing
-  static constexpr std::string_view kMainOutput = "main";  // the main window's name in the settings file
+  const SceneInfo* beforeSetup_ = nullptr;  // the scene projector setup switched away from (to the card)
   CursorTracker cursor_{/*waitForMovement=*/true};
   std::vector<int> keys_;  // pressed since the last step
   std::vector<std::string> drops_;  // files dropped since the last step
 
   bool vsync_;
-  std::string warpFile_;  // --output-warp's file, where projector setup writes a kept pin
   bool uiHidden_ = false;
   bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;

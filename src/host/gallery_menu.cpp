@@ -1,4 +1,5 @@
-// The gallery's keys and menu: the parameter panel's edits and presets, screenshots and captures.
+// The gallery's keys and menu: the parameter panel's edits and presets, screenshots and captures,
+// projector setup's start.
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
@@ -39,12 +40,11 @@ void Gallery::handleKeys() {
                      std::find(held.begin(), held.end(), GLFW_KEY_RIGHT_SHIFT) != held.end();
   for (int key : keys) {
     if (kiosk_ && !kioskAllows(key)) continue;
-    if (setup_.active()) {  // its keys are setup's: Esc undoes the pin rather than closing the gallery
-      const ProjectorSetup::Key used = setup_.key(key, shift, outputExtent(setupOutput_), warpOf(setupOutput_));
-      if (used != ProjectorSetup::Key::Ignored) {
-        if (used != ProjectorSetup::Key::Used) endSetup(used);
-        continue;
-      }
+    // During projector setup its keys are setup's: Esc undoes the pin rather than closing the gallery.
+    if (const GalleryOutputs::SetupKey setup = outputs_.setupKey(key, shift, swapchain_.extent()); setup.used) {
+      if (!setup.note.empty()) note_ = setup.note, noted_ = Clock::now();
+      if (setup.ended && beforeSetup_) nextScene_ = std::exchange(beforeSetup_, nullptr);
+      continue;
     }
     switch (key) {
       case GLFW_KEY_ESCAPE:
@@ -105,6 +105,16 @@ void Gallery::handleKeys() {
   }
   keys_.insert(keys_.end(), keys.begin(), keys.end());
   for (std::string& path : window_.takeDrops()) drops_.push_back(std::move(path));
+}
+
+// Projector setup shows the calibration card, when this build has one, and the UI it needs.
+void Gallery::startSetup() {
+  if (outputs_.setupActive()) return;
+  outputs_.startSetup();
+  if (const SceneInfo* card = findScene("calibrate"); card && card != &renderer_->info())
+    beforeSetup_ = &renderer_->info(), nextScene_ = card;
+  note_ = "projector setup";
+  noted_ = Clock::now();
 }
 
 void Gallery::showMenu() {

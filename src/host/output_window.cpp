@@ -63,7 +63,7 @@ std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
 
 OutputWindow::OutputWindow(const gpu::Instance& instance, const gpu::Device& device, const OutputPlacement& placement,
                            bool vsync, uint32_t framesInFlight, int index)
-    : warp_(placement.warp.value_or(maths::OutputWarp{})), name_(placement.name) {
+    : Output(placement.name, placement.warp.value_or(maths::OutputWarp{})) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);  // a projector shows the picture, not a title bar
   glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);
@@ -115,7 +115,7 @@ bool OutputWindow::acquire(uint32_t slot, bool vsync) {
 BlitDestination OutputWindow::destination(VkPipelineStageFlags2 acquireStage) const {
   const bool compute = swapchain_->computeWrites();
   return {swapchain_->image(*image_), swapchain_->extent(), {acquireStage, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED},
-          gpu::use::Present, compute ? swapchain_->view(*image_) : VK_NULL_HANDLE, compute, &warp_};
+          gpu::use::Present, compute ? swapchain_->view(*image_) : VK_NULL_HANDLE, compute, &warp()};
 }
 
 void OutputWindow::present() {

@@ -5,7 +5,7 @@
 // edges). The main window has the menu and the cursor; keys pressed while an output has the focus
 // go to the main window (Window::takeKeysOf).
 #include "gpu/device.h"
-#include "host/scene_renderer.h"
+#include "host/output.h"
 #include "host/swapchain.h"
 #include "host/window.h"
 #include "maths/output_warp.h"
@@ -34,27 +34,22 @@ struct OutputPlacement {
 // Throws vitrine::Error naming the file and the entry.
 std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file);
 
-class OutputWindow {
+class OutputWindow final : public Output {
  public:
   // GLFW is up (the main window's); the device presents from its queue to this window's surface, or
   // this throws vitrine::Error saying so.
   OutputWindow(const gpu::Instance& instance, const gpu::Device& device, const OutputPlacement& placement, bool vsync,
                uint32_t framesInFlight, int index);
-  ~OutputWindow();
-  OutputWindow(const OutputWindow&) = delete;
-  OutputWindow& operator=(const OutputWindow&) = delete;
+  ~OutputWindow() override;
 
-  // The next image, for frame slot `slot`: false when the window is hidden or its swapchain out of date
-  // (rebuilt for the next frame), and then nothing is drawn to it this frame.
-  bool acquire(uint32_t slot, bool vsync);
-  VkSemaphore acquired(uint32_t slot) const { return acquired_[slot]; }
-  VkSemaphore renderFinished() const { return swapchain_->renderFinished(*image_); }
-  // The acquired image as the present pass's destination, first used at `acquireStage`.
-  BlitDestination destination(VkPipelineStageFlags2 acquireStage) const;
-  void present();
-  maths::OutputWarp& warp() { return warp_; }
-  const std::string& name() const { return name_; }
-  VkExtent2D extent() const { return swapchain_->extent(); }
+  // False when the window is hidden or its swapchain out of date (rebuilt for the next frame).
+  bool acquire(uint32_t slot, bool vsync) override;
+  BlitDestination destination(VkPipelineStageFlags2 acquireStage) const override;
+  std::pair<VkSemaphore, VkSemaphore> semaphores(uint32_t slot) const override {
+    return {acquired_[slot], swapchain_->renderFinished(*image_)};
+  }
+  void present() override;
+  VkExtent2D extent() const override { return swapchain_->extent(); }
   GLFWwindow* handle() const { return window_; }
 
  private:
@@ -63,8 +58,6 @@ class OutputWindow {
   std::optional<Swapchain> swapchain_;
   std::vector<gpu::Unique<VkSemaphore>> acquired_;  // one a frame slot
   std::optional<uint32_t> image_;
-  maths::OutputWarp warp_;
-  std::string name_;
 };
 
 }  // namespace vitrine::host
