@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "core/printable.h"
-#include "host/gallery_settings.h"
+#include "host/gallery/gallery_settings.h"
 #include "scenes/scene.h"
 
 #include <fmt/format.h>

@@ -4,7 +4,7 @@
 #include <functional>
 
 #include "gpu/sync_objects.h"
-#include "host/kiosk_crossfade.h"
+#include "host/gallery/kiosk_crossfade.h"
 #include "host/scene_renderer.h"
 #include "image/image.h"
 #include "shaders/test/accumulate_push.h"

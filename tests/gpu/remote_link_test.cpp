@@ -4,7 +4,7 @@
 // while kifs shows, then switch to noodles).
 #include "core/assets.h"
 #include "host/remote_link.h"
-#include "host/remote_session.h"
+#include "host/gallery/remote_session.h"
 #include "host/scene_renderer.h"
 #include "support/gpu_test.h"
 

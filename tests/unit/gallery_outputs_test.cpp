@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "host/gallery_outputs.h"
-#include "host/output_warp_file.h"
+#include "host/present/gallery_outputs.h"
+#include "host/present/output_warp_file.h"
 #include "support/temp_folder.h"
 
 namespace vitrine::host {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "host/kiosk_timetable.h"
+#include "host/gallery/kiosk_timetable.h"
 
 namespace vitrine::host {
 namespace {

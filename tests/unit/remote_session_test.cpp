@@ -3,7 +3,7 @@
 // tests/gpu/remote_link_test.cpp.)
 #include <gtest/gtest.h>
 
-#include "host/remote_session.h"
+#include "host/gallery/remote_session.h"
 
 namespace vitrine::host {
 namespace {

@@ -1,4 +1,4 @@
-#include "host/frame_slot.h"
+#include "host/gallery/frame_slot.h"
 
 #include <fmt/format.h>
 

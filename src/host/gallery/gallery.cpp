@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "gpu/check.h"
-#include "host/gallery_app.h"
-#include "host/output_warp_file.h"
+#include "host/gallery/gallery_app.h"
+#include "host/present/output_warp_file.h"
 #include "scenes/adaptive_quality.h"
 
 namespace vitrine::host {

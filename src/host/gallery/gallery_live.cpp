@@ -1,4 +1,4 @@
-#include "host/gallery_live.h"
+#include "host/gallery/gallery_live.h"
 
 #include "core/error.h"
 #include "host/scene_renderer.h"

@@ -5,11 +5,11 @@
 // before each step, and with what the menu returned.
 #include "app/options.h"
 #include "audio/engine.h"
-#include "host/gallery_settings.h"
-#include "host/gamepads.h"
+#include "host/gallery/gallery_settings.h"
+#include "host/gallery/gamepads.h"
 #include "host/live_link.h"
-#include "host/live_panel.h"
-#include "host/param_panel.h"
+#include "host/ui/live_panel.h"
+#include "host/ui/param_panel.h"
 
 #include <memory>
 #include <string>

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <set>
 
-#include "host/gallery_app.h"
+#include "host/gallery/gallery_app.h"
 
 namespace vitrine::host {
 namespace {

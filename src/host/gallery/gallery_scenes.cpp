@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "host/gallery_app.h"
+#include "host/gallery/gallery_app.h"
 
 namespace vitrine::host {
 namespace {

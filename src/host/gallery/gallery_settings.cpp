@@ -1,4 +1,4 @@
-#include "host/gallery_settings.h"
+#include "host/gallery/gallery_settings.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "host/gamepads.h"
+#include "host/gallery/gamepads.h"
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "host/kiosk.h"
+#include "host/gallery/kiosk.h"
 
 #include <algorithm>
 #include <utility>

@@ -1,12 +1,13 @@
 #pragma once
-// Kiosk mode's timetable (--kiosk): each scene shows for the dwell time, then the next one fades in
+// Kiosk mode's schedule (--kiosk): each scene shows for the dwell time, then the next one fades in
 // over a couple of seconds while both run. A person touching anything holds the current scene (a fade
 // under way completes at once); cycling resumes once nobody has touched anything for the idle time.
-// A scene that fails is skipped. Pure logic in real seconds: the frame loop asks it what to do.
+// A scene that fails is skipped. Pure logic in seconds: the timetable (host/gallery/kiosk_timetable.h)
+// asks it what to do.
 //
 // What it cycles through are entries: the registry's scenes, each for the same dwell, or the lines of a
-// playlist (--playlist, host/playlist.h), each with its own dwell; the gallery knows which scene and
-// preset an entry shows.
+// playlist (--playlist, host/gallery/playlist.h), each with its own dwell; the timetable knows which
+// scene and preset an entry shows.
 #include <cstddef>
 #include <optional>
 #include <vector>

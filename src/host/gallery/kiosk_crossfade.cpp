@@ -1,4 +1,4 @@
-#include "host/kiosk_crossfade.h"
+#include "host/gallery/kiosk_crossfade.h"
 
 #include <utility>
 

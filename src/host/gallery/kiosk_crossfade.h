@@ -1,7 +1,7 @@
 #pragma once
 // Kiosk mode's cross-fade: the scene coming in runs in a second renderer, on its own clock and untouched
 // by input, and its frame is mixed into the output by the fade's weight (the present pass's Crossfade)
-// until the fade is over, when the renderers swap places. The timetable (host/kiosk_timetable.h) says
+// until the fade is over, when the renderers swap places. The timetable (host/gallery/kiosk_timetable.h) says
 // when a fade begins and how far it is; this owns what it draws. A transition of another kind (a
 // filter between the two frames) replaces the mix here.
 #include "frame/frame_input.h"

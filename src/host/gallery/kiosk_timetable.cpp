@@ -1,4 +1,4 @@
-#include "host/kiosk_timetable.h"
+#include "host/gallery/kiosk_timetable.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,14 +1,14 @@
 #pragma once
 // Kiosk mode's timetable (--kiosk): what shows and when. It turns the kiosk's entries (the registry's
-// scenes in turn, or a playlist's lines, host/playlist.h) and its schedule (host/kiosk.h) into scenes,
+// scenes in turn, or a playlist's lines, host/gallery/playlist.h) and its schedule (host/gallery/kiosk.h) into scenes,
 // tells a person's touch from a cursor at rest, and keeps the schedule in step with the scene the
 // gallery shows (a number key, a phone, a scene that would not start). No GPU: the gallery starts the
-// scenes it names, the cross-fade (host/kiosk_crossfade.h) mixes them.
+// scenes it names, the cross-fade (host/gallery/kiosk_crossfade.h) mixes them.
 //
 // The schedule runs on the seconds advance() is given: the gallery passes the wall clock's time since
 // the last frame. Another clock (beats, timecode) drives it through the same call.
-#include "host/kiosk.h"
-#include "host/playlist.h"
+#include "host/gallery/kiosk.h"
+#include "host/gallery/playlist.h"
 #include "host/pointer.h"
 #include "scenes/scene.h"
 

@@ -1,4 +1,4 @@
-#include "host/live_capture.h"
+#include "host/gallery/live_capture.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "host/plural.h"
-#include "host/screenshot.h"
+#include "host/gallery/screenshot.h"
 #include "image/image_io.h"
 
 namespace vitrine::host {

@@ -1,4 +1,4 @@
-#include "host/playlist.h"
+#include "host/gallery/playlist.h"
 
 #include "core/bounded_file.h"
 #include "core/error.h"

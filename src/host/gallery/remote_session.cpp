@@ -1,4 +1,4 @@
-#include "host/remote_session.h"
+#include "host/gallery/remote_session.h"
 
 namespace vitrine::host {
 

@@ -3,7 +3,7 @@
 // the next steps, and which values of each scene a client set rather than the user. Those stay out of
 // the settings file unless --remote-saves: the values saved before are kept for them. Without --remote
 // the session is off and its calls do nothing, except the bookkeeping of the user's own edits.
-#include "host/param_panel.h"
+#include "host/ui/param_panel.h"
 #include "host/remote_link.h"
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "host/screenshot.h"
+#include "host/gallery/screenshot.h"
 
 #include <fmt/format.h>
 

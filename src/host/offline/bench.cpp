@@ -20,7 +20,7 @@
 #include "gpu/memory_ledger.h"
 #include "host/user_presets.h"
 #include "host/modes.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "params/settings_file.h"
 
 namespace vitrine::host {

@@ -1,11 +1,11 @@
-#include "host/checkpoint.h"
+#include "host/offline/checkpoint.h"
 
 #include "core/atomic_file.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 #include "frame/state_archive.h"
-#include "host/record_manifest.h"
+#include "host/offline/record_manifest.h"
 
 #include <fmt/format.h>
 

@@ -9,8 +9,8 @@
 #include "host/event_log.h"
 #include "host/input_script.h"
 #include "host/modes.h"
-#include "host/offscreen.h"
-#include "host/output_warp_file.h"
+#include "host/offline/offscreen.h"
+#include "host/present/output_warp_file.h"
 #include "host/scene_renderer.h"
 #include "core/output_path.h"
 

@@ -1,4 +1,4 @@
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 
 #include <fmt/format.h>
 

@@ -71,7 +71,7 @@ class Offscreen {
   // that drives the cursor instead of the script's while present.
   void addInput(std::vector<ActionCall> actions, std::optional<Pointer> pointer);
 
-  // Checkpoints (host/checkpoint.h). saveSimulation: between frames, every parameter's exact value and
+  // Checkpoints (host/offline/checkpoint.h). saveSimulation: between frames, every parameter's exact value and
   // the scene's own state (Scene::simulationState). restoreSimulation: before the first frame, puts the
   // run where it was `frames` frames in: the script and live input, which are cheap and keep their own
   // state, are replayed up to there without the scene, then the state is restored. Its values must be

@@ -1,22 +1,22 @@
 // record: a scene rendered offline into a numbered sequence of frames, for a film. Time advances in
 // fixed steps of 1 / (fps x samples), so each frame averages `spp` samples spread over its interval
 // (motion blur and anti-aliasing at once). The simulation runs from frame 0, or from the latest
-// checkpoint (host/checkpoint.h) at or before the first frame to write, writing only the frames asked
+// checkpoint (host/offline/checkpoint.h) at or before the first frame to write, writing only the frames asked
 // for that are not already there: a run resumes where an interrupted one stopped, and frames A..B-1
 // rendered on one machine are bit for bit those a whole run renders (same driver). The folder's
-// record.json (host/record_manifest.h) keeps a resume from mixing in another film's frames.
+// record.json (host/offline/record_manifest.h) keeps a resume from mixing in another film's frames.
 #include "audio/engine.h"
 #include "audio/wav.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/printable.h"
 #include "film/film_format.h"
-#include "host/checkpoint.h"
+#include "host/offline/checkpoint.h"
 #include "host/event_log.h"
 #include "host/modes.h"
-#include "host/offscreen.h"
-#include "host/record_manifest.h"
-#include "host/record_shared.h"
+#include "host/offline/offscreen.h"
+#include "host/offline/record_manifest.h"
+#include "host/offline/record_shared.h"
 #include "image/image_io.h"
 
 #include <fmt/format.h>

@@ -8,7 +8,7 @@
 #include "film/video_encoder.h"
 #include "host/event_log.h"
 #include "host/modes.h"
-#include "host/record_shared.h"
+#include "host/offline/record_shared.h"
 #include "host/stop_signal.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "host/record_manifest.h"
+#include "host/offline/record_manifest.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "host/record_shared.h"
+#include "host/offline/record_shared.h"
 #include "host/user_presets.h"
 
 #include "host/modes.h"

@@ -6,7 +6,7 @@
 #include "audio/engine.h"
 #include "host/event_log.h"
 #include "host/live_link.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 
 #include <chrono>
 #include <cstdint>

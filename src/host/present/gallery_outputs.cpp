@@ -1,4 +1,4 @@
-#include "host/gallery_outputs.h"
+#include "host/present/gallery_outputs.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -9,9 +9,9 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "gpu/device.h"
-#include "host/output_warp_file.h"
-#include "host/output_window.h"
-#include "host/window.h"
+#include "host/present/output_warp_file.h"
+#include "host/present/output_window.h"
+#include "host/present/window.h"
 
 namespace vitrine::host {
 

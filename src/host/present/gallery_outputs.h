@@ -3,12 +3,12 @@
 // showing the one frame through its own warp, and projector setup (F7) moving one output's corner pin at
 // a time, kept in the settings file under the output's name (the main window's also in --output-warp's
 // file). The frame loop asks it how the main window shows the frame, has it draw every other output
-// after the main window, and gives it setup's keys and mouse. A new kind of output (host/output.h) is
+// after the main window, and gives it setup's keys and mouse. A new kind of output (host/present/output.h) is
 // added here beside the windows and is drawn and pinned like them.
-#include "host/gallery_settings.h"
-#include "host/output.h"
+#include "host/gallery/gallery_settings.h"
+#include "host/present/output.h"
 #include "host/pointer.h"
-#include "host/projector_setup.h"
+#include "host/present/projector_setup.h"
 
 #include <cstddef>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "host/output_warp_file.h"
+#include "host/present/output_warp_file.h"
 
 #include "core/bounded_file.h"
 #include "core/error.h"

@@ -1,10 +1,10 @@
-#include "host/output_window.h"
+#include "host/present/output_window.h"
 
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
-#include "host/output_warp_file.h"
+#include "host/present/output_warp_file.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>

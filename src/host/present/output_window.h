@@ -5,9 +5,9 @@
 // edges). The main window has the menu and the cursor; keys pressed while an output has the focus
 // go to the main window (Window::takeKeysOf).
 #include "gpu/device.h"
-#include "host/output.h"
-#include "host/swapchain.h"
-#include "host/window.h"
+#include "host/present/output.h"
+#include "host/present/swapchain.h"
+#include "host/present/window.h"
 #include "maths/output_warp.h"
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "host/projector_setup.h"
+#include "host/present/projector_setup.h"
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>

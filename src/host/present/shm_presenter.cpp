@@ -1,4 +1,4 @@
-#include "host/shm_presenter.h"
+#include "host/present/shm_presenter.h"
 
 #include <sys/ipc.h>
 #include <sys/shm.h>

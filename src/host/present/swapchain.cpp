@@ -1,4 +1,4 @@
-#include "host/swapchain.h"
+#include "host/present/swapchain.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 
 #include "gpu/check.h"
 #include "gpu/sync_objects.h"
-#include "host/window.h"
+#include "host/present/window.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

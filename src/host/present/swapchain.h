@@ -8,7 +8,7 @@
 // says why), except while the window is bigger than the shared memory the system grants; everything
 // else is the same.
 #include "gpu/device.h"
-#include "host/shm_presenter.h"
+#include "host/present/shm_presenter.h"
 
 #include <memory>
 #include <optional>

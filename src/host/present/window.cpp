@@ -1,7 +1,7 @@
-#include "host/window.h"
+#include "host/present/window.h"
 
 #include "gpu/check.h"
-#include "host/screen_area.h"
+#include "host/present/screen_area.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>

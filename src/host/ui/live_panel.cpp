@@ -1,4 +1,4 @@
-#include "host/live_panel.h"
+#include "host/ui/live_panel.h"
 
 #include <imgui.h>
 

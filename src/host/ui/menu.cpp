@@ -1,4 +1,4 @@
-#include "host/menu.h"
+#include "host/ui/menu.h"
 
 #include <fmt/format.h>
 #include <imgui.h>

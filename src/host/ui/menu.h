@@ -1,10 +1,10 @@
 #pragma once
-#include "host/fixed_step.h"
+#include "host/gallery/fixed_step.h"
 // The gallery's menu: scenes, timings, vsync, the current scene's own panel, and what went wrong.
 // It only draws and reports what was chosen; the frame loop decides what a choice changes.
 #include "gpu/pass_timer.h"
-#include "host/live_panel.h"
-#include "host/param_panel.h"
+#include "host/ui/live_panel.h"
+#include "host/ui/param_panel.h"
 #include "scenes/scene.h"
 
 #include <optional>

@@ -1,4 +1,4 @@
-#include "host/overlay.h"
+#include "host/ui/overlay.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "gpu/check.h"
-#include "host/font_check.h"
-#include "host/menu.h"
-#include "host/swapchain.h"
+#include "host/ui/font_check.h"
+#include "host/ui/menu.h"
+#include "host/present/swapchain.h"
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_freetype.h>

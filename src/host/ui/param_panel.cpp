@@ -1,4 +1,4 @@
-#include "host/param_panel.h"
+#include "host/ui/param_panel.h"
 
 #include <fmt/format.h>
 #include <imgui.h>
