@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "host/present/gallery_outputs.h"
+#include "host/gallery/gallery_outputs.h"
 #include "host/present/output_warp_file.h"
 #include "support/temp_folder.h"
 

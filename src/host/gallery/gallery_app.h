@@ -28,7 +28,7 @@
 #include "host/gallery/live_capture.h"
 #include "host/ui/menu.h"
 #include "host/modes.h"
-#include "host/present/gallery_outputs.h"
+#include "host/gallery/gallery_outputs.h"
 #include "host/ui/overlay.h"
 #include "host/ui/param_panel.h"
 #include "host/gallery/remote_session.h"

@@ -1,4 +1,4 @@
-#include "host/present/gallery_outputs.h"
+#include "host/gallery/gallery_outputs.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // An output of the gallery besides its main window: somewhere the frame the scene rendered once is shown
 // again, through the output's own warp (its region, turn, pin and soft edges). A window on a monitor or
 // a projector is one kind (host/present/output_window.h); another kind (a video node, a stream) implements the
-// same few calls, and the gallery's outputs (host/present/gallery_outputs.h) draw it and pin it with projector
+// same few calls, and the gallery's outputs (host/gallery/gallery_outputs.h) draw it and pin it with projector
 // setup like any other.
 #include "host/scene_renderer.h"
 #include "maths/output_warp.h"
