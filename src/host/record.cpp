@@ -6,7 +6,6 @@
 // rendered on one machine are bit for bit those a whole run renders (same driver). The folder's
 // record.json (host/record_manifest.h) keeps a resume from mixing in another film's frames.
 #include "audio/engine.h"
-#include "audio/wav.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/printable.h"
@@ -161,10 +160,7 @@ int runRecord(const Options& options) {
   if (inputs.events) inputs.events->close();
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
-  if (whole) {
-    const std::vector<float> samples = filmSound(inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
-    if (!samples.empty()) audio::writeWav(folder / "audio.wav", samples);
-  }
+  if (whole) writeFilmSound(folder / "audio.wav", inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
   std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s%s%s\n",
               written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
               options.fps, options.spp, options.scene.c_str(), device.properties().deviceName,
