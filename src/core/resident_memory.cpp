@@ -20,14 +20,15 @@ ResidentByFrames::ResidentByFrames(uint32_t frames)
     : warm_(std::max(frames / 5, 1u)), every_(std::max((frames - std::min(frames, warm_)) / 20, 1u)) {}
 
 void ResidentByFrames::before(uint32_t frame) {
+  made_ = frame + 1;
   if (frame == warm_) atWarm_ = residentBytes();
   if (frame >= warm_ && (frame - warm_) % every_ == 0)
     if (const auto now = residentBytes()) peak_ = std::max(peak_.value_or(0), *now);
 }
 
-std::string ResidentByFrames::line(uint32_t made) const {
+std::string ResidentByFrames::line() const {
   const std::optional<uint64_t> end = residentBytes();
-  if (!atWarm_ || !end || made <= warm_) return {};
+  if (!atWarm_ || !end || made_ <= warm_) return {};
   constexpr double kMiB = 1048576.0;
   return fmt::format("resident memory: {:.1f} MiB after frame {}, peak {:.1f} MiB, {:.1f} MiB at the end",
                      double(*atWarm_) / kMiB, warm_, double(std::max(peak_.value_or(0), *end)) / kMiB,

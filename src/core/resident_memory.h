@@ -19,12 +19,12 @@ class ResidentByFrames {
   uint32_t warmFrames() const { return warm_; }
   // Before frame `frame` is made.
   void before(uint32_t frame);
-  // "resident memory: W MiB after frame N, peak P MiB, E MiB at the end", the end measured now, after
-  // `made` frames; empty when the run ended within its warm-up or the system cannot tell.
-  std::string line(uint32_t made) const;
+  // "resident memory: W MiB after frame N, peak P MiB, E MiB at the end", the end measured now; empty
+  // when the run ended within its warm-up or the system cannot tell.
+  std::string line() const;
 
  private:
-  uint32_t warm_, every_;
+  uint32_t warm_, every_, made_ = 0;
   std::optional<uint64_t> atWarm_, peak_;
 };
 

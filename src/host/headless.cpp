@@ -92,7 +92,7 @@ int runHeadless(const Options& options) {
       std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
                   static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
                   static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
-    if (const std::string line = resident.line(rendered); !line.empty()) std::printf("%s\n", line.c_str());
+    if (const std::string line = resident.line(); !line.empty()) std::printf("%s\n", line.c_str());
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
                    options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);

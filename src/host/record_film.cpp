@@ -74,7 +74,7 @@ int runRecordFilm(const Options& options) {
     std::fprintf(stderr, "vitrine: %zu of %s's sounds came over %.1f s after their time and play late\n",
                  sound->late(), options.scene.c_str(), FilmSound::kSoundLag);
   encoder.finish();
-  if (const std::string line = resident.line(frames); !line.empty()) std::printf("%s\n", line.c_str());
+  if (const std::string line = resident.line(); !line.empty()) std::printf("%s\n", line.c_str());
   std::printf("recorded %u frames into %s (%ux%u, %s %s in %s, %.6g fps, %u samples a frame, %s, scene %s) on %s\n",
               frames, target.c_str(), config.size.width, config.size.height, std::string(film::codecName(format.codec)).c_str(),
               format.pixelFormat.c_str(), format.muxer.c_str(), options.fps, options.spp,
