@@ -230,27 +230,51 @@ void OfflineAudio::add(Command::Kind kind, double time, float value) { post({kin
 void OfflineAudio::post(const Command& command) { commands_.push_back(command); }
 
 std::vector<float> OfflineAudio::render(double seconds) const {
+  OfflineRender whole(*this, seconds);
+  std::vector<float> out;
+  out.reserve(size_t(whole.frames()) * 2);
+  whole.renderTo(whole.frames(), out);
+  return out;
+}
+
+// --- OfflineRender ---
+
+OfflineRender::OfflineRender(const OfflineAudio& sound, double seconds) : sound_(sound) {
   if (!std::isfinite(seconds) || seconds < 0.0)
     throw Error(fmt::format("Cannot render {} seconds of sound: the length must be a finite number from 0", seconds));
-  const int64_t frames = toSamples(seconds), end = firstSample_ + frames;
-  std::vector<float> out(size_t(frames) * 2);
+  frames_ = toSamples(seconds);
+  synth_ = std::make_unique<Synth>(sound.firstSample(), sound.reverbSeed());
+}
 
-  // The synth wants its commands in order of time; scenes may interleave sources, so sort (stably:
-  // two commands for one sample keep the order they were given in).
-  std::vector<Command> commands = commands_;
-  std::stable_sort(commands.begin(), commands.end(),
-                   [](const Command& a, const Command& b) { return a.sample < b.sample; });
-  auto synth = std::make_unique<Synth>(firstSample_, reverbSeed_);
-  size_t next = 0;
-  while (synth->now() < end) {
-    int64_t blockEnd = std::min(synth->now() + 4096, end);
-    while (next < commands.size() && commands[next].sample < blockEnd && synth->post(commands[next])) ++next;
-    // A full queue (over a thousand commands in one block): render up to the first that did not fit.
-    if (next < commands.size() && commands[next].sample < blockEnd)
-      blockEnd = std::max(commands[next].sample, synth->now() + 1);
-    synth->render(out.data() + 2 * (synth->now() - firstSample_), size_t(blockEnd - synth->now()));
+int64_t OfflineRender::rendered() const { return synth_->now() - sound_.firstSample(); }
+
+void OfflineRender::renderTo(int64_t until, std::vector<float>& out) {
+  const std::vector<Command>& commands = sound_.commands();
+  if (taken_ < commands.size()) {
+    // Commands before the first sample apply at it, as long as nothing has been rendered yet.
+    for (size_t i = taken_; i < commands.size(); ++i) {
+      if (rendered() > 0 && commands[i].sample < synth_->now()) ++late_;
+      pending_.push_back(commands[i]);
+    }
+    taken_ = commands.size();
+    // The synth wants its commands in order of time; scenes may interleave sources, so sort (stably:
+    // two commands for one sample keep the order they were given in, those taken earlier first).
+    std::stable_sort(pending_.begin(), pending_.end(),
+                     [](const Command& a, const Command& b) { return a.sample < b.sample; });
   }
-  return out;
+  const int64_t from = synth_->now(), end = sound_.firstSample() + std::clamp(until, rendered(), frames_);
+  const size_t at = out.size();
+  out.resize(at + size_t(end - from) * 2);
+  size_t next = 0;
+  while (synth_->now() < end) {
+    int64_t blockEnd = std::min(synth_->now() + 4096, end);
+    while (next < pending_.size() && pending_[next].sample < blockEnd && synth_->post(pending_[next])) ++next;
+    // A full queue (over a thousand commands in one block): render up to the first that did not fit.
+    if (next < pending_.size() && pending_[next].sample < blockEnd)
+      blockEnd = std::max(pending_[next].sample, synth_->now() + 1);
+    synth_->render(out.data() + at + 2 * size_t(synth_->now() - from), size_t(blockEnd - synth_->now()));
+  }
+  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(next));
 }
 
 }  // namespace vitrine::audio

@@ -157,12 +157,43 @@ class OfflineAudio final : public AudioSink {
   size_t commandCount() const { return commands_.size(); }
   // Every command so far, in order: a checkpoint keeps them, and a run resumed from it posts them again.
   const std::vector<Command>& commands() const { return commands_; }
+  int64_t firstSample() const { return firstSample_; }
+  uint32_t reverbSeed() const { return reverbSeed_; }
 
  private:
   void add(Command::Kind kind, double time, float value);
   int64_t firstSample_;
   uint32_t reverbSeed_;
   std::vector<Command> commands_;
+};
+
+// An OfflineAudio's sound rendered a stretch at a time while its run goes on, so a film's sound is
+// written as its frames are: sample for sample what OfflineAudio::render gives for the same length,
+// wherever the stretches end, provided each command reaches the OfflineAudio before the stretch that
+// holds its sample is rendered. One that comes later (a scene stamping a time further back than the
+// caller's lag allows) plays at the next sample rendered instead, and is counted.
+class OfflineRender {
+ public:
+  // Throws vitrine::Error for a negative or non-finite length, as render does. Reads `sound`'s
+  // commands at each renderTo, so it must outlive this.
+  OfflineRender(const OfflineAudio& sound, double seconds);
+  OfflineRender(const OfflineRender&) = delete;
+  OfflineRender& operator=(const OfflineRender&) = delete;
+
+  // Appends to `out` the interleaved stereo frames from rendered() up to `until` (counted from the
+  // first sample, cut to the length), with the commands posted so far.
+  void renderTo(int64_t until, std::vector<float>& out);
+  int64_t rendered() const;
+  int64_t frames() const { return frames_; }  // round(seconds x 48000)
+  size_t late() const { return late_; }
+
+ private:
+  const OfflineAudio& sound_;
+  int64_t frames_;
+  std::unique_ptr<Synth> synth_;
+  size_t taken_ = 0;              // commands of sound_ moved into pending_
+  std::vector<Command> pending_;  // taken, not yet posted to the synth; in order of time, stably
+  size_t late_ = 0;
 };
 
 }  // namespace vitrine::audio

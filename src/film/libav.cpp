@@ -20,6 +20,19 @@ int checkAv(int code, const std::string& target, std::string_view what) {
   return code;
 }
 
+void encodeInto(AVCodecContext& codec, const AVFrame* frame, AVFormatContext& output, AVStream& stream,
+                AVPacket& packet, const std::string& target, std::string_view what) {
+  checkAv(avcodec_send_frame(&codec, frame), target, fmt::format("encoding {}", what));
+  for (;;) {
+    const int received = avcodec_receive_packet(&codec, &packet);
+    if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
+    checkAv(received, target, fmt::format("encoding {}", what));
+    av_packet_rescale_ts(&packet, codec.time_base, stream.time_base);
+    packet.stream_index = stream.index;
+    checkAv(av_interleaved_write_frame(&output, &packet), target, fmt::format("writing {}", what));
+  }
+}
+
 FramePtr makeFrame() {
   FramePtr frame(av_frame_alloc());
   if (!frame) throw std::bad_alloc();

@@ -62,6 +62,11 @@ FramePtr makeFrame();
 PacketPtr makePacket();
 // A muxer writing `path` as `muxer` ("mp4", "mov", "matroska"), its file opened. Throws vitrine::Error.
 OutputPtr openOutput(const std::string& muxer, const std::string& path, const std::string& target);
+// Sends `frame` to `codec` (null: the end, draining it) and hands every packet it gives back to
+// `output`'s muxer as `stream`'s, which interleaves the streams by time. Throws vitrine::Error naming
+// `target` and `what` ("the video", "the sound").
+void encodeInto(AVCodecContext& codec, const AVFrame* frame, AVFormatContext& output, AVStream& stream,
+                AVPacket& packet, const std::string& target, std::string_view what);
 struct FilmFormat;
 // The muxer's options for a film in `format`'s container (both passes write the same), for
 // avformat_write_header; the caller frees what it leaves.

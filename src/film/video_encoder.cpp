@@ -2,13 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/libav.h"
-#include "film/sound_mux.h"
+#include "film/sound_track.h"
 
 namespace vitrine::film {
 namespace {
@@ -46,7 +48,7 @@ struct VideoEncoder::State {
   FilmFormat format;
   uint32_t width, height;
   double fps;
-  PendingFile videoOnly;
+  PendingFile pending;
   OutputPtr output;
   CodecPtr codec;
   AVStream* stream = nullptr;
@@ -56,13 +58,15 @@ struct VideoEncoder::State {
   std::vector<uint8_t> rgb24;     // one frame's packed RGB, the scaler's input
   std::vector<uint16_t> rgb48;    // the same at 16 bits a channel, for a 10-bit film
   std::vector<uint16_t> widened;  // a PNG's RGBA at 16 bits, for a 10-bit film
+  std::optional<SoundTrack> sound;
   uint32_t frames = 0;
+  bool started = false;  // the header written: no stream can be added
   bool finished = false;
 
   State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
         const AVCodec& encoder)
-      : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), videoOnly(path),
-        output(openOutput(format.muxer, videoOnly.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
+      : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), pending(path),
+        output(openOutput(format.muxer, pending.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
     if (!codec) throw std::bad_alloc();
     codec->width = int(width);
     codec->height = int(height);
@@ -86,10 +90,6 @@ struct VideoEncoder::State {
       stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
     stream->time_base = codec->time_base;
     stream->avg_frame_rate = codec->framerate;
-    AVDictionary* options = muxerOptions(format);
-    const int header = avformat_write_header(output.get(), &options);
-    av_dict_free(&options);
-    checkAv(header, target, "writing the header");
 
     frame->format = codec->pix_fmt;
     frame->width = codec->width;
@@ -107,24 +107,28 @@ struct VideoEncoder::State {
     }
   }
 
-  void encode(const AVFrame* next) {
-    checkAv(avcodec_send_frame(codec.get(), next), target, "encoding a frame");
-    for (;;) {
-      const int received = avcodec_receive_packet(codec.get(), packet.get());
-      if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
-      checkAv(received, target, "encoding a frame");
-      av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
-      packet->stream_index = stream->index;
-      checkAv(av_interleaved_write_frame(output.get(), packet.get()), target, "writing the video");
-    }
+  // The header, once every stream is there: before the first packet of either.
+  void start() {
+    if (started) return;
+    started = true;
+    AVDictionary* options = muxerOptions(format);
+    const int header = avformat_write_header(output.get(), &options);
+    av_dict_free(&options);
+    checkAv(header, target, "writing the header");
   }
+
+  void encode(const AVFrame* next) { encodeInto(*codec, next, *output, *stream, *packet, target, "the video"); }
 
   // The frame buffer may still be referenced by the encoder (frame threads, lookahead): a fresh one then.
   void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
 
   void send() {
+    start();
     frame->pts = frames++;
     encode(frame.get());
+    // Onto the disk frame by frame: FFmpeg's file writer otherwise holds 256 KiB, which a small or
+    // still film takes minutes to fill.
+    avio_flush(output->pb);
   }
 
   // Display values, RGBA at 8 bits a channel, into the frame.
@@ -167,10 +171,12 @@ struct VideoEncoder::State {
       throw Error(fmt::format("Cannot add a {}x{} frame to {}: the film is {}x{}.", w, h, target, width, height));
   }
 
-  // Drains the encoder, writes the trailer and closes the file, checking the close: a full disk shows
-  // up in the last flush.
-  void endVideo() {
+  // Drains the encoders, ends the sound with the video, writes the trailer and closes the file,
+  // checking the close: a full disk shows up in the last flush.
+  void end() {
+    start();
     encode(nullptr);
+    if (sound) sound->finish(std::llround(double(frames) / fps * 48000.0));
     checkAv(av_write_trailer(output.get()), target, "writing the trailer");
     checkAv(avio_closep(&output->pb), target, "closing the file");
     output.reset();
@@ -202,16 +208,30 @@ void VideoEncoder::addFrame(const Picture& srgb) {
 
 uint32_t VideoEncoder::frames() const { return state_->frames; }
 
-void VideoEncoder::finish(std::span<const float> stereo48k) {
+void VideoEncoder::addSoundTrack() {
+  State& s = *state_;
+  if (s.started || s.sound)
+    throw Error(fmt::format("Cannot give {} a sound track {}.", s.target, s.sound ? "twice" : "after its first frame"));
+  s.sound.emplace(*s.output, s.target, s.format.audioEncoder);
+}
+
+bool VideoEncoder::hasSoundTrack() const { return state_->sound.has_value(); }
+
+void VideoEncoder::addSound(std::span<const float> stereo48k) {
+  State& s = *state_;
+  if (!s.sound) throw Error(fmt::format("Cannot add sound to {}: it has no sound track.", s.target));
+  if (s.finished) throw Error(fmt::format("Cannot add sound to {}: the film is finished.", s.target));
+  s.start();
+  s.sound->add(stereo48k);
+}
+
+void VideoEncoder::finish() {
   State& s = *state_;
   if (s.finished) throw Error(fmt::format("{} is already finished.", s.target));
   if (s.frames == 0) throw Error(fmt::format("Cannot write {}: it has no frames.", s.target));
   s.finished = true;
-  s.endVideo();
-  if (stereo48k.empty()) return s.videoOnly.commit();
-  PendingFile withSound(s.target);
-  muxWithSound(s.videoOnly.path(), withSound.path(), s.target, s.format, stereo48k, double(s.frames) / s.fps);
-  withSound.commit();
+  s.end();
+  s.pending.commit();
 }
 
 }  // namespace vitrine::film

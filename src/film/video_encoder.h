@@ -1,9 +1,9 @@
 #pragma once
-// A film encoded as its frames arrive, through FFmpeg's libraries: frames go into a hidden temporary
-// beside the target (video only, in the target's container); finish() adds the sound, known only once
-// the film has been rendered, and only then does the target's name appear, by a rename. A film that is
-// never finished (an error, Ctrl-C, a destructor reached first) leaves its target as it was and no
-// temporary behind.
+// A film encoded as its frames and its sound arrive, through FFmpeg's libraries, into a hidden temporary
+// beside the target that grows as the film is made: video and sound packets interleaved by time as they
+// come, so memory stays flat however long the film. Only once the film is finished does the target's
+// name appear, by a rename. A film that is never finished (an error, Ctrl-C, a destructor reached
+// first) leaves its target as it was and no temporary behind.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -25,6 +25,11 @@ class VideoEncoder {
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
+  // Gives the film a sound track, before its first frame: 48 kHz stereo, given with addSound as the
+  // film goes. Throws vitrine::Error after the first frame, or naming an encoder this FFmpeg lacks.
+  void addSoundTrack();
+  bool hasSoundTrack() const;
+
   // The next frame, as linear light (a render, an EXR): put on the sRGB curve exactly as the PNG writer
   // does (srgb8, or srgb16 for a 10-bit film). Alpha is dropped: a film is opaque.
   void addFrame(const ImageRgba& linear);
@@ -32,11 +37,14 @@ class VideoEncoder {
   void addFrame(const Picture& srgb);
   uint32_t frames() const;
 
-  // Ends the video and writes the film: with sound (interleaved stereo at 48 kHz, cut or padded with
-  // silence to the film's length), the video's packets are copied beside the encoded sound into a
-  // second temporary, interleaved by time; without, the video-only temporary is the film. Renamed over
-  // the target last. Throws vitrine::Error, the target left as it was.
-  void finish(std::span<const float> stereo48k);
+  // The sound's next stretch, interleaved stereo at 48 kHz, following the last: given as the film goes
+  // (a little behind its frames is fine, the muxer holds what it must to interleave them).
+  void addSound(std::span<const float> stereo48k);
+
+  // Ends the film and renames it over the target: the sound, if it has a track, cut or padded with
+  // silence to exactly round(frames / fps x 48000) frames, so both streams end together. Throws
+  // vitrine::Error, the target left as it was.
+  void finish();
 
  private:
   struct State;

@@ -19,6 +19,9 @@ VideoEncoder::~VideoEncoder() = default;
 void VideoEncoder::addFrame(const ImageRgba&) {}
 void VideoEncoder::addFrame(const Picture&) {}
 uint32_t VideoEncoder::frames() const { return 0; }
-void VideoEncoder::finish(std::span<const float>) {}
+void VideoEncoder::addSoundTrack() {}
+bool VideoEncoder::hasSoundTrack() const { return false; }
+void VideoEncoder::addSound(std::span<const float>) {}
+void VideoEncoder::finish() {}
 
 }  // namespace vitrine::film

@@ -98,12 +98,11 @@ std::vector<float> monoMix(const AudioClip& clip) {
   return mono;
 }
 
-std::vector<float> stereo48k(const AudioClip& clip, double startSeconds, double seconds, bool loop) {
+namespace {
+
+void checkPlayable(const AudioClip& clip, double startSeconds) {
   if (!std::isfinite(startSeconds) || std::abs(startSeconds) > 1e9)
     throw Error(fmt::format("Cannot take sound from {} s: the start must be a finite number of seconds", startSeconds));
-  if (!(seconds >= 0.0 && seconds <= kMaxClipSeconds))
-    throw Error(fmt::format("Cannot take {} s of sound: the length must be from 0 to {} s", seconds,
-                            kMaxClipSeconds));
   if (!(clip.sampleRate >= kMinClipRate && clip.sampleRate <= kMaxClipRate))
     throw Error(fmt::format("Cannot resample sound at {} Hz: the rate must be from {} to {} Hz", clip.sampleRate,
                             kMinClipRate, kMaxClipRate));
@@ -111,62 +110,115 @@ std::vector<float> stereo48k(const AudioClip& clip, double startSeconds, double 
       (clip.channels > 0 && clip.samples.size() % size_t(clip.channels) != 0))
     throw Error(fmt::format("Cannot play a clip of {} samples in {} channels: they are not whole frames",
                             clip.samples.size(), clip.channels));
+}
 
-  const auto outFrames = size_t(std::llround(seconds * kOutputRate));
-  std::vector<float> out(outFrames * 2, 0.0f);
-  const auto frames = int64_t(clip.frames());
-  if (outFrames == 0 || frames == 0) return out;
+}  // namespace
 
-  const auto channels = size_t(clip.channels);
-  // Frame `i` of the clip on the clip's own time line, as a stereo pair: silence outside the clip
-  // unless it loops.
-  const auto frameAt = [&](int64_t i, float* pair) {
-    if (loop) i = ((i % frames) + frames) % frames;
-    if (i < 0 || i >= frames) {
-      pair[0] = pair[1] = 0.0f;
-      return;
-    }
-    const float* f = clip.samples.data() + size_t(i) * channels;
-    for (size_t c = 0; c < 2; ++c) {
-      const float s = f[std::min(c, channels - 1)];
-      pair[c] = std::isfinite(s) ? s : 0.0f;
-    }
+// libsamplerate's sinc filter starts from silence, so it is primed with `margin` clip frames before the
+// start, whose output is thrown away. The margin is a whole number of rate periods (lcm / rate clip
+// frames give lcm / 48000 output frames), so the output frame that lines up with the start is an exact
+// index into what comes out; it is at least 1024 output frames' worth, so a downsampling filter's longer
+// reach is covered too.
+struct Stereo48kStream::Resampler {
+  struct Delete {
+    void operator()(SRC_STATE* state) const { src_delete(state); }
   };
-  const auto first = std::llround(startSeconds * clip.sampleRate);
+  std::unique_ptr<SRC_STATE, Delete> state;
+  double ratio = 1.0;
+  int64_t skip = 0;           // output frames of the priming still to throw away
+  std::vector<float> input;   // clip frames read ahead as stereo pairs, from `used` on not yet taken
+  size_t used = 0;
+  std::vector<float> primed;  // the priming's output, thrown away
+};
 
-  if (clip.sampleRate == kOutputRate) {
-    for (size_t j = 0; j < outFrames; ++j) frameAt(first + int64_t(j), out.data() + 2 * j);
-    return out;
-  }
-
-  // libsamplerate's sinc filter starts from silence and ends on it, so the span is converted with
-  // clip before and after it (`margin` clip frames each side, at least 1024 output frames' worth,
-  // so a downsampling filter's longer reach is covered too). The leading margin is a whole number of
-  // rate periods (lcm / rate clip frames give lcm / 48000 output frames), so the output frame that
-  // lines up with `first` is an exact index into the converted block.
+Stereo48kStream::Stereo48kStream(const AudioClip& clip, double startSeconds, bool loop)
+    : clip_(clip), loop_(loop) {
+  checkPlayable(clip, startSeconds);
+  nextFrame_ = std::llround(startSeconds * clip.sampleRate);
+  if (clip.sampleRate == kOutputRate) return;
   const auto rate = int64_t(std::llround(clip.sampleRate)), out48 = int64_t(kOutputRate);
   const int64_t gcd = std::gcd(rate, out48), periodIn = rate / gcd, periodOut = out48 / gcd;
-  const double ratio = kOutputRate / clip.sampleRate;
-  const auto minMargin = int64_t(std::ceil(1024.0 / std::min(ratio, 1.0)));
+  resampler_ = std::make_unique<Resampler>();
+  resampler_->ratio = kOutputRate / clip.sampleRate;
+  const auto minMargin = int64_t(std::ceil(1024.0 / std::min(resampler_->ratio, 1.0)));
   const int64_t periods = (minMargin + periodIn - 1) / periodIn;
-  const int64_t margin = periods * periodIn, marginOut = periods * periodOut;
-  const auto spanIn = int64_t(std::ceil(double(outFrames) / ratio)) + 2 * margin;
-
-  std::vector<float> in(size_t(spanIn) * 2);
-  for (int64_t i = 0; i < spanIn; ++i) frameAt(first - margin + i, in.data() + 2 * i);
-  std::vector<float> converted((size_t(marginOut) + outFrames + size_t(std::ceil(double(margin) * ratio)) + 64) * 2);
-  SRC_DATA data{};
-  data.data_in = in.data();
-  data.input_frames = long(spanIn);
-  data.data_out = converted.data();
-  data.output_frames = long(converted.size() / 2);
-  data.src_ratio = ratio;
-  data.end_of_input = 1;
-  if (const int error = src_simple(&data, SRC_SINC_MEDIUM_QUALITY, 2))
+  nextFrame_ -= periods * periodIn;
+  resampler_->skip = periods * periodOut;
+  int error = 0;
+  resampler_->state.reset(src_new(SRC_SINC_MEDIUM_QUALITY, 2, &error));
+  if (!resampler_->state)
     throw Error(fmt::format("Cannot resample sound from {} Hz to 48000 Hz: {}", clip.sampleRate, src_strerror(error)));
-  const auto available = std::max<int64_t>(0, int64_t(data.output_frames_gen) - marginOut);
-  const auto copied = size_t(std::min<int64_t>(available, int64_t(outFrames)));
-  std::copy_n(converted.begin() + marginOut * 2, copied * 2, out.begin());
+}
+
+Stereo48kStream::~Stereo48kStream() = default;
+
+void Stereo48kStream::frameAt(int64_t i, float* pair) const {
+  const auto frames = int64_t(clip_.frames());
+  if (loop_ && frames > 0) i = ((i % frames) + frames) % frames;
+  if (i < 0 || i >= frames) {
+    pair[0] = pair[1] = 0.0f;
+    return;
+  }
+  const auto channels = size_t(clip_.channels);
+  const float* f = clip_.samples.data() + size_t(i) * channels;
+  for (size_t c = 0; c < 2; ++c) {
+    const float s = f[std::min(c, channels - 1)];
+    pair[c] = std::isfinite(s) ? s : 0.0f;
+  }
+}
+
+void Stereo48kStream::next(float* out, size_t frames) {
+  if (clip_.frames() == 0) {
+    std::fill_n(out, frames * 2, 0.0f);
+    return;
+  }
+  if (!resampler_) {
+    for (size_t j = 0; j < frames; ++j) frameAt(nextFrame_++, out + 2 * j);
+    return;
+  }
+  Resampler& r = *resampler_;
+  while (r.skip > 0) {
+    r.primed.resize(size_t(std::min<int64_t>(r.skip, 4096)) * 2);
+    resampled(r.primed.data(), r.primed.size() / 2);
+    r.skip -= int64_t(r.primed.size() / 2);
+  }
+  resampled(out, frames);
+}
+
+// Exactly `frames` frames out of the filter, reading the clip ahead as it asks for more.
+void Stereo48kStream::resampled(float* out, size_t frames) {
+  constexpr size_t kReadAhead = 4096;
+  Resampler& r = *resampler_;
+  while (frames > 0) {
+    if (r.used * 2 == r.input.size()) {
+      r.input.resize(kReadAhead * 2);
+      for (size_t i = 0; i < kReadAhead; ++i) frameAt(nextFrame_++, r.input.data() + 2 * i);
+      r.used = 0;
+    }
+    SRC_DATA data{};
+    data.data_in = r.input.data() + 2 * r.used;
+    data.input_frames = long(r.input.size() / 2 - r.used);
+    data.data_out = out;
+    data.output_frames = long(frames);
+    data.src_ratio = r.ratio;
+    data.end_of_input = 0;
+    if (const int error = src_process(r.state.get(), &data))
+      throw Error(fmt::format("Cannot resample sound from {} Hz to 48000 Hz: {}", clip_.sampleRate, src_strerror(error)));
+    if (data.input_frames_used == 0 && data.output_frames_gen == 0)  // never with input to take; a guard all the same
+      throw Error(fmt::format("Cannot resample sound from {} Hz to 48000 Hz: the filter stopped", clip_.sampleRate));
+    r.used += size_t(data.input_frames_used);
+    out += 2 * size_t(data.output_frames_gen);
+    frames -= size_t(data.output_frames_gen);
+  }
+}
+
+std::vector<float> stereo48k(const AudioClip& clip, double startSeconds, double seconds, bool loop) {
+  if (!(seconds >= 0.0 && seconds <= kMaxClipSeconds))
+    throw Error(fmt::format("Cannot take {} s of sound: the length must be from 0 to {} s", seconds,
+                            kMaxClipSeconds));
+  Stereo48kStream stream(clip, startSeconds, loop);
+  std::vector<float> out(size_t(std::llround(seconds * kOutputRate)) * 2);
+  stream.next(out.data(), out.size() / 2);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 namespace vitrine::live {
@@ -44,5 +45,29 @@ std::vector<float> monoMix(const AudioClip& clip);
 // for a non-finite start, a negative or non-finite length (or one over kMaxClipSeconds), or a clip
 // whose rate is outside kMinClipRate..kMaxClipRate or whose samples are not whole frames.
 std::vector<float> stereo48k(const AudioClip& clip, double startSeconds, double seconds, bool loop = false);
+
+// The same, a stretch at a time, for as long as it is asked: a film's music written as its frames are,
+// its state (libsamplerate's filter) carried from one stretch to the next, so the stretches together
+// are sample for sample stereo48k's over their whole span, wherever they end. Throws vitrine::Error as
+// stereo48k does for the start or the clip. The clip must outlive it.
+class Stereo48kStream {
+ public:
+  Stereo48kStream(const AudioClip& clip, double startSeconds, bool loop = false);
+  ~Stereo48kStream();
+  Stereo48kStream(const Stereo48kStream&) = delete;
+  Stereo48kStream& operator=(const Stereo48kStream&) = delete;
+
+  // The next `frames` frames, interleaved stereo, into out[0 .. 2 x frames).
+  void next(float* out, size_t frames);
+
+ private:
+  void frameAt(int64_t i, float* pair) const;  // the clip's frame i as a stereo pair (silence outside)
+  void resampled(float* out, size_t frames);
+  struct Resampler;
+  const AudioClip& clip_;
+  bool loop_;
+  int64_t nextFrame_;  // the clip's next frame to read
+  std::unique_ptr<Resampler> resampler_;  // none at 48 kHz
+};
 
 }  // namespace vitrine::live

@@ -38,7 +38,7 @@ done
 if "$vitrine" compare "$out/one/frame_000002.exr" "$out/whole/frame_000002.exr" | grep -q "max difference 0.00000"; then
   echo "two samples a frame gave the same picture as one"; exit 1
 fi
-# Sound: bloom's drone, the film's length exactly (0.5 s at 48 kHz, stereo float).
+# Sound: bloom's drone, the film's length exactly (0.5 s at 48 kHz, stereo 16-bit PCM).
 "$vitrine" record --scene bloom --size 32x18 --fps 24 --seconds 0.5 --set fill=0.5 --out "$out/sound" >/dev/null
 python3 - "$out/sound/audio.wav" <<'PY'
 import struct, sys

@@ -425,6 +425,75 @@ TEST(AudioEngine, FullPoolStealsTheOldestVoice) {
   EXPECT_EQ(synth.ringing(), Synth::kVoices);
 }
 
+// A run's sound as a film writes it: stretches rendered while the run still posts commands, each a
+// little behind the run's time (as record's film does), give exactly the samples a whole render gives
+// once the run is over; the stretches' ends fall anywhere, also inside a stretch of commands.
+TEST(AudioEngine, StretchesRenderedAsTheRunGoesEqualTheWholeRender) {
+  const double start = 3.7;  // a run from --time 3.7: commands before it apply at its first sample
+  OfflineAudio run(start);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  // The run's commands by the time they are posted: some stamped earlier than the one before (a
+  // scene's readings come back a few steps late), two at one sample whose order matters, one before
+  // the start, one past the end, and a burst of 1,500 in one block (more than the synth's queue).
+  struct Posted {
+    double at;  // run time when posted
+    Command command;
+  };
+  std::vector<Posted> script;
+  script.push_back({start, {Command::Kind::Drone, sampleTime(start - 1.0), 1}});
+  script.push_back({start, {Command::Kind::Volume, sampleTime(start), 0.7f}});
+  for (int i = 0; i < 60; ++i) {
+    const double t = start + 0.1 + 5.5 * uniform(random);
+    const auto kind = i % 7 == 0 ? Command::Kind::Climax : i % 5 == 0 ? Command::Kind::Volume : Command::Kind::Bell;
+    const float value = kind == Command::Kind::Bell ? float(220.0 + 660.0 * uniform(random))
+                        : kind == Command::Kind::Volume ? float(uniform(random))
+                                                        : kClimaxWet;
+    script.push_back({t + 0.05 * uniform(random), {kind, sampleTime(t), value}});  // up to 50 ms late
+  }
+  script.push_back({start + 2.0, {Command::Kind::Volume, sampleTime(start + 2.0), 0.1f}});
+  script.push_back({start + 2.0, {Command::Kind::Volume, sampleTime(start + 2.0), 0.9f}});  // this one wins
+  for (int i = 0; i < 1500; ++i)
+    script.push_back({start + 3.0, {Command::Kind::Bell, sampleTime(start + 2.95) + i, 300.0f + float(i % 40)}});
+  script.push_back({start + 4.0, {Command::Kind::ReverbWet, sampleTime(start + 4.0), 0.5f}});
+  script.push_back({start + 6.0, {Command::Kind::Bell, sampleTime(start + 9.0), kE5}});  // after the end
+  std::stable_sort(script.begin(), script.end(), [](const Posted& a, const Posted& b) { return a.at < b.at; });
+
+  constexpr double kSeconds = 6.0, kLag = 0.1;
+  OfflineRender stretches(run, kSeconds);
+  std::vector<float> streamed;
+  size_t posted = 0;
+  const int64_t ragged[] = {1, 333, 4097, 48000, 2, 1024};
+  for (int64_t now = 0, i = 0; stretches.rendered() < stretches.frames(); now += ragged[i++ % 6]) {
+    const double runTime = start + double(now) / kSampleRate;
+    while (posted < script.size() && script[posted].at <= runTime) run.post(script[posted++].command);
+    stretches.renderTo(now - sampleTime(kLag), streamed);
+    if (runTime > start + kSeconds + kLag) stretches.renderTo(stretches.frames(), streamed);
+  }
+  ASSERT_EQ(posted, script.size());
+  EXPECT_EQ(stretches.late(), 0u);
+  const std::vector<float> whole = run.render(kSeconds);
+  ASSERT_EQ(streamed.size(), whole.size());
+  EXPECT_EQ(streamed, whole);  // sample for sample
+  EXPECT_GT(*std::max_element(whole.begin(), whole.end()), 0.1f);  // and there is something to hear
+}
+
+// A command stamped before what has already been rendered cannot land on its sample: it plays at once
+// and is counted, so a run can say its sound is not the whole render's.
+TEST(AudioEngine, ACommandLaterThanItsStretchIsCounted) {
+  OfflineAudio run;
+  OfflineRender stretches(run, 1.0);
+  std::vector<float> streamed;
+  stretches.renderTo(24000, streamed);
+  run.bell(0.25, kE4);  // sample 12000, already rendered
+  stretches.renderTo(48000, streamed);
+  EXPECT_EQ(stretches.late(), 1u);
+  EXPECT_EQ(streamed.size(), 2u * 48000u);
+  EXPECT_NE(streamed, run.render(1.0));
+  EXPECT_EQ(streamed[2 * 24000], 0.0f);  // the attack starts from zero at the first sample after
+  EXPECT_NE(streamed[2 * 24001], 0.0f);
+}
+
 TEST(AudioEngine, RenderingDoesNotAllocate) {
   Synth synth;
   std::vector<float> out(2 * 512);

@@ -279,13 +279,58 @@ TEST_F(FilmEncoder, AFinishedFilmIsTheOnlyFileLeft) {
   const auto target = folder_ / "film.mkv";
   {
     VideoEncoder encoder(target, resolveFilm(target, {}, 16, 8), 16, 8, 24.0);
+    encoder.addSoundTrack();
     for (int frame = 0; frame < 3; ++frame) encoder.addFrame(grey(16, 8, 0.1f * float(frame)));
     EXPECT_EQ(encoder.frames(), 3u);
     const std::vector<float> sound(48000 / 8 * 2, 0.25f);  // an eighth of a second, the film's length
-    encoder.finish(sound);
+    encoder.addSound(sound);
+    encoder.finish();
   }
   EXPECT_GT(std::filesystem::file_size(target), 0u);
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder_), {}), 1);
+}
+
+// A film is on the disk as it is made, frame by frame, not held until its end: its temporary grows
+// with every frame, sound and all.
+TEST_F(FilmEncoder, TheTemporaryGrowsAsFramesAndSoundGoIn) {
+  const auto target = folder_ / "film.mkv";
+  VideoEncoder encoder(target, resolveFilm(target, {}, 16, 8), 16, 8, 24.0);
+  encoder.addSoundTrack();
+  const auto onDisk = [&] {
+    const auto entry = *std::filesystem::directory_iterator(folder_);
+    return std::filesystem::file_size(entry.path());
+  };
+  std::vector<uintmax_t> sizes;
+  for (int frame = 0; frame < 48; ++frame) {
+    encoder.addFrame(grey(16, 8, 0.02f * float(frame)));
+    encoder.addSound(std::vector<float>(2000 * 2, 0.25f));  // a 24th of a second
+    if (frame % 12 == 11) sizes.push_back(onDisk());
+  }
+  ASSERT_EQ(sizes.size(), 4u);
+  for (size_t i = 1; i < sizes.size(); ++i) EXPECT_GT(sizes[i], sizes[i - 1]) << "after " << (i + 1) * 12 << " frames";
+  // Two seconds in, over a second of the 24-bit sound is on the disk (Matroska holds a cluster back).
+  EXPECT_GT(sizes[3], 48000u * 2 * 3);
+  encoder.finish();
+  EXPECT_FALSE(std::filesystem::is_empty(folder_));
+}
+
+TEST_F(FilmEncoder, TheSoundTrackComesBeforeTheFirstFrameAndEndsWithTheFilm) {
+  const auto target = folder_ / "film.mkv";
+  VideoEncoder encoder(target, resolveFilm(target, {}, 16, 8), 16, 8, 24.0);
+  EXPECT_THROW(encoder.addSound(std::vector<float>(2, 0.0f)), Error);  // no track yet
+  encoder.addSoundTrack();
+  EXPECT_THROW(encoder.addSoundTrack(), Error);
+  encoder.addFrame(grey(16, 8, 0.5f));
+  encoder.addSound(std::vector<float>(48000 * 2, 0.25f));  // a whole second: more than the film's frame
+  try {
+    encoder.finish();
+    ADD_FAILURE() << "a second of sound went into a film of one frame";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("past the film's 2000"), std::string::npos) << e.what();
+  }
+  VideoEncoder silent(folder_ / "silent.mkv", resolveFilm(target, {}, 16, 8), 16, 8, 24.0);
+  silent.addFrame(grey(16, 8, 0.5f));
+  EXPECT_THROW(silent.addSoundTrack(), Error);  // its header is written: no stream can join
 }
 
 TEST_F(FilmEncoder, AnUnfinishedFilmLeavesNothing) {

@@ -3,6 +3,7 @@
 // encodes: EXR frames go through the PNG writer's sRGB conversion, PNG frames' bytes are used as they are,
 // so a film from either equals the one record --out makes. A folder missing a frame, or holding one of
 // another size, is refused, naming the frame.
+#include "audio/synth.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/video_encoder.h"
@@ -15,10 +16,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <optional>
 #include <regex>
+#include <span>
 
 namespace vitrine::host {
 namespace {
@@ -87,6 +90,8 @@ int runEncode(const Options& options) {
     std::fprintf(stderr, "vitrine: removed %s, left by a writer that died\n", stale.filename().c_str());
   const StopOnSignal stop;
   film::VideoEncoder encoder(target, format, recorded.width, recorded.height, recorded.fps);
+  if (!samples.empty()) encoder.addSoundTrack();
+  int64_t soundGiven = 0;  // the sound goes in beside the frames, so the film is interleaved as it is written
   RecordProgress progress(frames);
   const bool png = recorded.format == "png";
   for (uint32_t frame = 0; frame < frames; ++frame) {
@@ -103,9 +108,14 @@ int runEncode(const Options& options) {
       checkFrameSize(path, image.width, image.height, recorded);
       encoder.addFrame(image);
     }
+    if (!samples.empty()) {
+      const int64_t until = std::min(audio::toSamples(double(frame + 1) / recorded.fps), int64_t(samples.size() / 2));
+      encoder.addSound(std::span<const float>(samples).subspan(size_t(soundGiven) * 2, size_t(until - soundGiven) * 2));
+      soundGiven = until;
+    }
     progress.update(frame + 1, frame + 1);
   }
-  encoder.finish(samples);
+  encoder.finish();
   std::printf("encoded %u frames of %s into %s (%ux%u, %s %s in %s, %.6g fps, %s)\n", frames, folder.c_str(),
               target.c_str(), recorded.width, recorded.height, std::string(film::codecName(format.codec)).c_str(),
               format.pixelFormat.c_str(), format.muxer.c_str(), recorded.fps,

@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <string>
 #include <thread>
 
 #include "host/remote_link.h"
@@ -67,15 +68,12 @@ int runHeadless(const Options& options) {
     // Device memory after the first fifth of the frames (the soak's warm-up) and at the end; resident
     // memory then and at twenty frames spread over the rest, for its peak: by frames, not seconds, so
     // that 10,000 frames that end within a second on a fast GPU are measured as well as slow ones.
-    const uint32_t warmFrames = std::max(options.frames / 5, 1u);
-    const uint32_t residentEvery = std::max((options.frames - std::min(options.frames, warmFrames)) / 20, 1u);
+    ResidentByFrames resident(options.frames);
+    const uint32_t warmFrames = resident.warmFrames();
     gpu::MemoryTally warm;
-    std::optional<uint64_t> residentWarm, residentPeak;
     for (; rendered < options.frames && (rendered == 0 || !StopOnSignal::requested()); ++rendered) {  // one frame at least
-      const uint32_t k = rendered;
-      if (k == warmFrames) warm = gpu::liveDeviceMemory(), residentWarm = residentBytes();
-      if (k >= warmFrames && (k - warmFrames) % residentEvery == 0)
-        if (const auto now = residentBytes()) residentPeak = std::max(residentPeak.value_or(0), *now);
+      if (rendered == warmFrames) warm = gpu::liveDeviceMemory();
+      resident.before(rendered);
       if (remote) {
         RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
         if (live) for (const auto& [source, value] : applied.sources) live->sources().set(source, value);
@@ -92,10 +90,7 @@ int runHeadless(const Options& options) {
       std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
                   static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
                   static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
-    if (const auto residentEnd = residentBytes(); residentWarm && residentEnd && rendered > warmFrames)
-      std::printf("resident memory: %.1f MiB after frame %u, peak %.1f MiB, %.1f MiB at the end\n",
-                  double(*residentWarm) / 1048576.0, warmFrames,
-                  double(std::max(residentPeak.value_or(0), *residentEnd)) / 1048576.0, double(*residentEnd) / 1048576.0);
+    if (const std::string line = resident.line(); !line.empty()) std::printf("%s\n", line.c_str());
     if (!offscreen.inputFinished())
       std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
                    options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);

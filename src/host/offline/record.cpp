@@ -6,10 +6,10 @@
 // rendered on one machine are bit for bit those a whole run renders (same driver). The folder's
 // record.json (host/offline/record_manifest.h) keeps a resume from mixing in another film's frames.
 #include "audio/engine.h"
-#include "audio/wav.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/printable.h"
+#include "core/resident_memory.h"
 #include "film/film_format.h"
 #include "host/offline/checkpoint.h"
 #include "host/event_log.h"
@@ -25,6 +25,8 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace vitrine::host {
 namespace {
@@ -104,6 +106,7 @@ int runRecord(const Options& options) {
   RecordInputs inputs(options, config);
 
   uint32_t written = 0, redone = 0, saved = 0;
+  std::optional<ResidentByFrames> resident;  // by the frames this run steps through, for scripts/soak
   std::optional<uint32_t> resumedAt;
   {
     Offscreen offscreen(device, config);
@@ -133,7 +136,9 @@ int runRecord(const Options& options) {
     const uint32_t start = resumedAt.value_or(0);
 
     RecordProgress progress(end - first);
+    resident.emplace(end - start);
     for (uint32_t frame = start; frame < end; ++frame) {
+      resident->before(frame - start);
       const std::filesystem::path path = framePath(folder, frame, options.format);
       const Found state = frame >= first ? found[frame - first] : Found::Whole;
       const bool wanted = state != Found::Whole;
@@ -161,10 +166,8 @@ int runRecord(const Options& options) {
   if (inputs.events) inputs.events->close();
   // The film's sound, whole, when this run covered the whole film and the scene made any.
   const bool whole = first == 0 && end == frames;
-  if (whole) {
-    const std::vector<float> samples = filmSound(inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
-    if (!samples.empty()) audio::writeWav(folder / "audio.wav", samples);
-  }
+  if (whole) writeFilmSound(folder / "audio.wav", inputs.sound, inputs.live.get(), options.time, double(frames) / options.fps);
+  if (const std::string line = resident->line(); !line.empty()) std::printf("%s\n", line.c_str());
   std::printf("recorded %u of frames %u..%u%s into %s (%ux%u, %s, %.6g fps, %u samples a frame, scene %s) on %s%s%s\n",
               written, first, end - 1, redone ? fmt::format(" ({} not whole before)", redone).c_str() : "", folder.c_str(), config.size.width, config.size.height, options.format.c_str(),
               options.fps, options.spp, options.scene.c_str(), device.properties().deviceName,

@@ -3,6 +3,7 @@
 
 #include "host/modes.h"
 
+#include "audio/wav.h"
 #include "live/audio_clip.h"
 
 #include <fmt/format.h>
@@ -47,15 +48,34 @@ ImageRgba renderFrame(Offscreen& offscreen, uint32_t spp, bool keep) {
   return sum;
 }
 
-std::vector<float> filmSound(const audio::OfflineAudio& sound, const LiveLink* live, double start, double seconds) {
-  const live::AudioClip* music = live ? live->audioClip() : nullptr;
-  if (sound.commandCount() == 0 && !music) return {};
-  std::vector<float> samples = sound.render(seconds);
-  if (music) {
-    const std::vector<float> track = live::stereo48k(*music, start, seconds);
-    for (size_t i = 0; i < std::min(samples.size(), track.size()); ++i) samples[i] += track[i];
+bool FilmSound::any(const audio::OfflineAudio& sound, const LiveLink* live) {
+  return sound.commandCount() > 0 || (live && live->audioClip());
+}
+
+FilmSound::FilmSound(const audio::OfflineAudio& sound, const LiveLink* live, double start, double seconds)
+    : scene_(sound, seconds) {
+  if (const live::AudioClip* music = live ? live->audioClip() : nullptr) music_.emplace(*music, start);
+}
+
+int64_t FilmSound::behind(double seconds) { return std::max<int64_t>(0, audio::toSamples(seconds - kSoundLag)); }
+
+std::span<const float> FilmSound::next(int64_t until) {
+  stretch_.clear();
+  scene_.renderTo(until, stretch_);
+  if (music_) {
+    musicStretch_.resize(stretch_.size());
+    music_->next(musicStretch_.data(), musicStretch_.size() / 2);
+    for (size_t i = 0; i < stretch_.size(); ++i) stretch_[i] += musicStretch_[i];
   }
-  return samples;
+  return stretch_;
+}
+
+bool writeFilmSound(const std::filesystem::path& path, const audio::OfflineAudio& sound, const LiveLink* live,
+                    double start, double seconds) {
+  if (!FilmSound::any(sound, live)) return false;
+  FilmSound film(sound, live, start, seconds);
+  audio::writeWav(path, film.frames(), [&](int64_t frames) { return film.next(film.rendered() + frames); });
+  return true;
 }
 
 RecordProgress::RecordProgress(uint32_t total) : total_(total), terminal_(isatty(fileno(stderr))) {}
