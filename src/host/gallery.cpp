@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "core/user_dirs.h"
 #include "gpu/check.h"
 #include "host/gallery_app.h"
 #include "host/output_warp_file.h"
@@ -72,8 +73,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
                options.kiosk || settings_.path().empty() ? std::filesystem::path()
                                                          : settings_.path().parent_path() / "gallery-menu.ini",
                options.resetSettings),
-      screenshots_(device_, kFramesInFlight, "screenshots"),
-      capture_(device_, kFramesInFlight, "captures"),
+      screenshots_(device_, kFramesInFlight, vitrineUserDir(UserDir::Pictures)),
+      capture_(device_, kFramesInFlight, vitrineUserDir(UserDir::Videos)),
       steps_(input_.dt),
       vsync_(options.vsync),
       warpFile_(options.outputWarp),
