@@ -1,6 +1,7 @@
 // Vitrine: parses the command line and hands over to one mode. Every failure a user can cause ends
 // here as one sentence on stderr and a non-zero exit.
 #include "app/options.h"
+#include "core/version.h"
 #include "gpu/check.h"
 #include "gpu/device.h"
 #include "host/modes.h"
@@ -17,7 +18,10 @@ int main(int argc, char** argv) {
     const Options options = parseOptions(argc, argv);
     switch (options.mode) {
       case Mode::Help: std::fputs(usage(), stdout); return 0;
-      case Mode::Version: std::printf("vitrine 0.1.0\n"); return 0;
+      case Mode::Version:
+        std::printf("vitrine %.*s (commit %.*s)\n", int(versionNumber().size()), versionNumber().data(),
+                    int(buildCommit().size()), buildCommit().data());
+        return 0;
       case Mode::ListScenes: {
         int width = 0;  // the longest name: the titles line up after it
         for (const auto& info : sceneRegistry()) width = std::max(width, int(info.name.size()));
