@@ -83,8 +83,8 @@ install(CODE "
   file(WRITE \"${VITRINE_PACKAGING_DIR}/vitrine-kiosk.service\" \"\${unit}\")")
 install(FILES ${VITRINE_PACKAGING_DIR}/vitrine-kiosk.service DESTINATION lib/systemd/user)
 
-# The man page: written from the flag table by the binary, never by hand; its generator calls this
-# with the roff file it made, which Debian wants compressed (gzip -n: the same bytes every build).
+# The man page: written from the flag table by the binary, never by hand, and installed compressed as
+# Debian wants it (gzip -n: the same bytes every build).
 function(vitrine_install_man_page roff)
   get_filename_component(name ${roff} NAME)
   set(gz ${VITRINE_PACKAGING_DIR}/${name}.gz)
@@ -92,6 +92,10 @@ function(vitrine_install_man_page roff)
   add_custom_target(vitrine_man_page_gz ALL DEPENDS ${gz})
   install(FILES ${gz} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endfunction()
+# The flag table's generator (target vitrine_docs) writes VITRINE_DOCS_DIR/vitrine.1.
+if(TARGET vitrine_docs AND DEFINED VITRINE_DOCS_DIR)
+  vitrine_install_man_page(${VITRINE_DOCS_DIR}/vitrine.1)
+endif()
 
 # Debian's copyright file (every file's licence, the assets' authors) and a changelog naming the version.
 set(doc ${CMAKE_INSTALL_DATADIR}/doc/vitrine)
