@@ -3,6 +3,7 @@
 #   bin/vitrine                                   the binary (finds its data at ../share/vitrine)
 #   share/vitrine/{fonts,hdri,photos}/            the fetched assets, each folder with its licence
 #   share/applications, share/metainfo, share/icons/hicolor    found like an app
+#   share/man/man1/vitrine.1.gz, share/bash-completion/completions/vitrine     from the flag table
 #   lib/systemd/user/vitrine-kiosk.service        the kiosk's user unit, not enabled
 #   share/doc/vitrine/copyright, changelog.gz     what Debian wants of every package
 include(GNUInstallDirs)

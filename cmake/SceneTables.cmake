@@ -25,27 +25,28 @@ std::span<const @type@> @function@() {
 " @ONLY)
 endfunction()
 
-# vitrine_scene_tables(OUT_DIR): writes OUT_DIR/scene_registry.cpp (the SceneInfo table, for the core
-# library) and OUT_DIR/scene_schemas.cpp (the schema table, which the fuzz build links without the
-# scenes' GPU code) from VITRINE_SCENES; a file is rewritten only when its contents change.
+# vitrine_scene_tables(OUT_DIR): writes OUT_DIR/scene_registry.cpp (every scene's SceneInfo, from its
+# settings.h: no GPU code, so the fuzz build links it too) and OUT_DIR/scene_factories.cpp (every
+# scene's factory, from its NAME_scene.h: the core library's) from VITRINE_SCENES; a file is rewritten
+# only when its contents change.
 function(vitrine_scene_tables out_dir)
   set(info_includes "")
   set(infos "")
-  set(schema_includes "")
-  set(schemas "")
+  set(factory_includes "")
+  set(factories "")
   foreach(scene IN LISTS VITRINE_SCENES)
     foreach(header ${scene}/${scene}_scene.h ${scene}/settings.h)
       if(NOT EXISTS ${VITRINE_SCENES_ROOT}/${header})
         message(FATAL_ERROR "cmake/Scenes.cmake names scene '${scene}', but src/scenes/${header} does not exist")
       endif()
     endforeach()
-    string(APPEND info_includes "#include \"scenes/${scene}/${scene}_scene.h\"\n")
+    string(APPEND info_includes "#include \"scenes/${scene}/settings.h\"\n")
     string(APPEND infos "      ${scene}::kSceneInfo,\n")
-    string(APPEND schema_includes "#include \"scenes/${scene}/settings.h\"\n")
-    string(APPEND schemas "      {\"${scene}\", &${scene}::schema},\n")
+    string(APPEND factory_includes "#include \"scenes/${scene}/${scene}_scene.h\"\n")
+    string(APPEND factories "      {\"${scene}\", &${scene}::create},\n")
   endforeach()
-  vitrine_write_scene_table(${out_dir}/scene_registry.cpp SceneInfo scenes/scene.h SceneInfo sceneRegistry
+  vitrine_write_scene_table(${out_dir}/scene_registry.cpp SceneInfo scenes/catalogue.h SceneInfo sceneRegistry
     "${info_includes}" "${infos}")
-  vitrine_write_scene_table(${out_dir}/scene_schemas.cpp schema scenes/schemas.h SceneSchema sceneSchemas
-    "${schema_includes}" "${schemas}")
+  vitrine_write_scene_table(${out_dir}/scene_factories.cpp factory scenes/scene.h SceneFactoryEntry sceneFactories
+    "${factory_includes}" "${factories}")
 endfunction()

@@ -3,33 +3,13 @@
 // mapping taken formats to a line that parses back to itself and still fits its scene.
 #include "core/error.h"
 #include "live/mapping.h"
-#include "scenes/scene.h"
-#include "scenes/schemas.h"
+#include "scenes/catalogue.h"
 #include "support/require.h"
 
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
-
-namespace vitrine {
-
-// The fuzz build links no scenes' GPU code: the registry a mapping is checked against is the scenes'
-// schemas with neon's "release" as their one action (the registry's lookups, scenes/registry.cpp, run as they are).
-std::span<const SceneInfo> sceneRegistry() {
-  static constexpr std::string_view kReleaseArgs[] = {"x", "y", "z"};
-  static constexpr SceneAction kRelease[] = {{"release", kReleaseArgs, ""}};
-  static const std::vector<SceneInfo> table = [] {
-    std::vector<SceneInfo> scenes;
-    for (const SceneSchema& scene : sceneSchemas())
-      scenes.push_back({scene.name, scene.name, 0, nullptr, scene.schema, "",
-                        scene.name == "neon" ? std::span<const SceneAction>(kRelease) : std::span<const SceneAction>()});
-    return scenes;
-  }();
-  return table;
-}
-
-}  // namespace vitrine
 
 using namespace vitrine;
 using vitrine::fuzz::require;

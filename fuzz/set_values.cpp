@@ -3,7 +3,7 @@
 // a refused value says why and leaves the field alone; an accepted one has canonical text that reads
 // back to itself; a batch through applyValues is all-or-nothing.
 #include "params/schema.h"
-#include "scenes/schemas.h"
+#include "scenes/catalogue.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -18,7 +18,7 @@ using vitrine::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 2) return 0;
-  const auto scenes = sceneSchemas();
+  const auto scenes = sceneRegistry();
   const params::Schema& schema = scenes[data[0] % scenes.size()].schema();
   if (schema.params().empty()) return 0;
   const params::Param& param = schema.params()[data[1] % schema.params().size()];

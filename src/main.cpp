@@ -1,5 +1,6 @@
 // Vitrine: parses the command line and hands over to one mode. Every failure a user can cause ends
 // here as one sentence on stderr and a non-zero exit.
+#include "app/help.h"
 #include "app/options.h"
 #include "core/version.h"
 #include "gpu/check.h"
@@ -7,7 +8,7 @@
 #include "host/modes.h"
 #include "host/user_presets.h"
 #include "host/window.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -17,7 +18,9 @@ int main(int argc, char** argv) {
   try {
     const Options options = parseOptions(argc, argv);
     switch (options.mode) {
-      case Mode::Help: std::fputs(usage(), stdout); return 0;
+      case Mode::Help: std::fputs(help::usage().c_str(), stdout); return 0;
+      case Mode::HelpMan: std::fputs(help::manPage().c_str(), stdout); return 0;
+      case Mode::HelpCompletion: std::fputs(help::bashCompletion().c_str(), stdout); return 0;
       case Mode::Version:
         std::printf("vitrine %.*s (commit %.*s)\n", int(versionNumber().size()), versionNumber().data(),
                     int(buildCommit().size()), buildCommit().data());
@@ -32,6 +35,8 @@ int main(int argc, char** argv) {
       }
       case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced
         return host::runListParams(options);
+      case Mode::ListKeys: return host::runListKeys(options);
+      case Mode::ListPresets: return host::runListPresets(options);
       case Mode::ListMonitors: std::fputs(host::Window::listMonitors().c_str(), stdout); return 0;
       case Mode::ListDevices: {
         gpu::Instance instance({options.validation, {}});

@@ -8,7 +8,7 @@
 #include "params/schema.h"
 #include "remote/bind_address.h"
 #include "remote/remote_control.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,7 +1,7 @@
 #version 460
 // The tubes onto the facade. Where tubes cross, their light adds, but the sum of a pink, a cyan and an
 // amber tube is white: so the pixel takes the nearest tube's colour (kept in the tubes' alpha, see
-// tube.frag) at the luminance of all their light (nearestColourLight in src/scenes/neon/tube_light.h):
+// tube.frag) at the luminance of all their light (nearestColourLight below):
 // crossing tubes read as one in front of another, each its own neon colour, at any density. The
 // result goes back into the tubes' target for the bloom, and onto the facade (drawn once a size, so read
 // here and the sum written to the scene); the nearer of the two depths is kept, so the depth of field

@@ -32,7 +32,7 @@ void main() {
   const float strength = F.glow * F.exposure * (0.3 + 0.7 * chord) * edge * fade;
   // Alpha blends by max: the nearest tube's depth (for the depth of field), with its colour (1..3) in
   // the half float's lowest two mantissa bits, so the max also says which colour is nearest: positive
-  // halfs order as their bits do. The merge pass decodes both (tube_light.h, tubeDepthAndColour).
+  // halfs order as their bits do. The merge pass decodes both (merge.comp).
   const uint bits = (packHalf2x16(vec2(gl_FragCoord.z, 0.0)) & 0xfffcu) | (colour + 1u);
   glow = vec4(hue * strength, unpackHalf2x16(bits).x);
 }

@@ -1,7 +1,7 @@
 #version 460
 // One invocation a texel: the noise part of the flow (curl or bitangent, no lift: the integrate pass
 // adds it) at the texel's centre, for integrate_baked.comp to sample; src/scenes/noodles/strand.h's
-// bakeField is the CPU reference.
+// bakeField is the CPU reference and field_bake.h's bakedTexel the packing.
 //
 // A texel's three noises need 24 hashed lattice gradients, two thirds of its arithmetic, yet a
 // workgroup's texels (under one noise unit across at the planned spacing) share a few dozen lattice
@@ -13,7 +13,8 @@
 #include "noodles/integrate_push.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 4) in;
-layout(binding = 0, rgb10_a2) uniform writeonly image3D bakedFlow;
+// The volume's A2B10G10R10 words through a 32-bit view: the shader rounds (field_bake.h says why).
+layout(binding = 0, r32ui) uniform writeonly uimage3D bakedFlow;
 
 layout(push_constant) uniform Push { NoodlesBakePush pc; };
 // The field (curl or bitangent) specialises the pipeline, as in integrate_strands.glsl.
@@ -73,5 +74,8 @@ void main() {
     FieldSettings field = FieldSettings(BAKE_FIELD, pc.noiseScale, pc.offsetY, pc.offsetZ, 0.0);
     v = flowVelocity(pc.origin + vec3(texel) * pc.spacing, field);
   }
-  imageStore(bakedFlow, texel, vec4(clamp(v / (2.0 * pc.range) + 0.5, 0.0, 1.0), 0.0));
+  // precise: a fused multiply-add here would round some texels a step away from another driver's.
+  precise const vec3 unit = clamp(v / (2.0 * pc.range) + 0.5, 0.0, 1.0);
+  precise const uvec3 level = uvec3(floor(unit * 1023.0 + 0.5));
+  imageStore(bakedFlow, texel, uvec4(level.x | level.y << 10 | level.z << 20, 0u, 0u, 0u));
 }

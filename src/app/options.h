@@ -1,6 +1,7 @@
 #pragma once
 // The command line, parsed into one value. Bad input is a vitrine::Error with a sentence that says
-// what was wrong and what would be right; main turns it into a non-zero exit.
+// what was wrong and what would be right; main turns it into a non-zero exit. The flags themselves are
+// declared in app/flags.cpp; --help, the man page and the completion script in app/help.h.
 #include "film/film_format.h"
 #include "image/image_compare.h"
 
@@ -15,7 +16,8 @@
 namespace vitrine {
 
 enum class Mode {
-  Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListMonitors, ListScenes, ListParams, ExportPreset, Help, Version
+  Gallery, Headless, Bench, Record, Encode, Compare, ListDevices, ListMonitors, ListScenes, ListParams, ListKeys, ListPresets,
+  ExportPreset, Help, HelpMan, HelpCompletion, Version
 };
 
 // One --set or --preset: "SCENE.KEY=VALUE" applies to that scene only, "KEY=VALUE" to whichever runs.
@@ -49,7 +51,7 @@ struct Options {
   SceneSetting exportPreset;             // --export-preset [SCENE.]NAME --out FILE: a user's preset written out
   std::vector<std::string> compare;  // compare REF CANDIDATE
   CompareThresholds compareThresholds;  // compare --fail-fraction F --hard-limit H --lowpass N
-  std::string listParams;            // --list-params [SCENE]: empty for every scene
+  std::string listParams;            // --list-params, --list-keys, --list-presets [SCENE]: empty for every scene
   std::string input;                 // --input FILE (headless): scripted input
   std::string events;                // --events FILE (headless): the scene's events, as JSON lines
   bool resetSettings = false;        // --reset-settings (gallery)
@@ -103,6 +105,5 @@ std::vector<std::pair<std::string, std::string>> parametersFor(const Options& op
 // The --preset names that apply to `scene`, likewise.
 std::vector<std::string> presetsFor(const Options& options, std::string_view scene, bool unqualifiedToo);
 VkExtent2D parseSize(const std::string& text);  // "1920x1080"
-const char* usage();
 
 }  // namespace vitrine

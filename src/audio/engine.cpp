@@ -14,7 +14,6 @@
 #include "audio/rtaudio_stream.h"
 #include "core/error.h"
 #include "core/hidden_stderr.h"
-#include "core/printable.h"
 
 namespace vitrine::audio {
 
@@ -160,15 +159,12 @@ std::string AudioOutput::open(const Options& options) {
     unsigned int frames = options.bufferFrames;
     device->openStream(&output, nullptr, RTAUDIO_FLOAT32, kSampleRate, &frames, &playCallback, synth.get(),
                        &streamOptions, &streamError);
-    device->startStream();
-    if (!device->isStreamRunning()) return "the stream did not start";
+    if (std::string why = startStream(*device); !why.empty()) return why;
     synth_ = std::move(synth);
     device_ = std::move(device);
     return {};
-  } catch (const RtAudioError& e) {
-    return trimmed(e.getMessage());
-  } catch (const std::exception& e) {
-    return trimmed(e.what());
+  } catch (...) {
+    return openFailure();
   }
 }
 

@@ -325,8 +325,8 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
   features.features.shaderInt64 = has.features.shaderInt64;
   features.features.fillModeNonSolid = has.features.fillModeNonSolid;
   features.features.shaderStorageImageWriteWithoutFormat = has.features.shaderStorageImageWriteWithoutFormat;
-  features.features.shaderStorageImageExtendedFormats = has.features.shaderStorageImageExtendedFormats;  // r16f
-  storageExtendedFormats_ = has.features.shaderStorageImageExtendedFormats;
+  // Storage images in the extended formats: glass's motion vectors (rg16f), noodles' baked flow (rgb10_a2).
+  features.features.shaderStorageImageExtendedFormats = has.features.shaderStorageImageExtendedFormats;
   storageWriteWithoutFormat_ = has.features.shaderStorageImageWriteWithoutFormat;
   bufferInt64Atomics_ = has.features.shaderInt64 && has12.shaderBufferInt64Atomics;
   // Invocation counts only when asked (bench --pipeline-stats), like the compiler statistics below.

@@ -76,8 +76,6 @@ class Device {
   std::string describe() const;  // "NVIDIA H100 (driver 0x..., Vulkan 1.3.x)"
   // Storage images without a format qualifier: lets one compute pass write any output format.
   bool storageWriteWithoutFormat() const { return storageWriteWithoutFormat_; }
-  // Storage images in the extended formats (r16f: half the bytes of a float lattice).
-  bool storageExtendedFormats() const { return storageExtendedFormats_; }
   // 64-bit integers in shaders and atomics on them in storage buffers (noodles' visibility buffer).
   bool bufferInt64Atomics() const { return bufferInt64Atomics_; }
   // Pipelines are built with their compiler statistics captured (DeviceOptions::pipelineStatistics,
@@ -157,7 +155,6 @@ class Device {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queueFamily_ = 0;
   bool storageWriteWithoutFormat_ = false;
-  bool storageExtendedFormats_ = false;
   bool bufferInt64Atomics_ = false;
   bool countsInvocations_ = false;
   MemoryLimits memoryLimits_;

@@ -10,17 +10,10 @@
 
 namespace vitrine::gpu {
 
-BufferHandle FrameResources::declare(BufferDecl decl) {
-  buffers_.push_back({std::move(decl), {}, 0, true});
-  BufferEntry& entry = buffers_.back();
-  createWhenSized(entry);
-  return {uint32_t(buffers_.size() - 1)};
-}
+BufferHandle FrameResources::declare(BufferDecl decl) { return {declareIn(buffers_, std::move(decl))}; }
 
 void FrameResources::redeclare(BufferHandle handle, BufferDecl decl) {
-  BufferEntry& entry = buffers_.at(handle.index);
-  entry.decl = std::move(decl);
-  createWhenSized(entry);
+  redeclareIn(buffers_, handle.index, std::move(decl));
 }
 
 void FrameResources::create(BufferEntry& entry, VkExtent2D target) {

@@ -48,17 +48,10 @@ VkExtent3D sizeFor(const ImageSize& size, VkExtent2D target) {
 
 }  // namespace
 
-ImageHandle FrameResources::declare(ImageDecl decl) {
-  entries_.push_back({std::move(decl), {}, 0, true, false});
-  Entry& entry = entries_.back();
-  createWhenSized(entry);
-  return {uint32_t(entries_.size() - 1)};
-}
+ImageHandle FrameResources::declare(ImageDecl decl) { return {declareIn(entries_, std::move(decl))}; }
 
 void FrameResources::redeclare(ImageHandle handle, ImageDecl decl) {
-  Entry& entry = entries_.at(handle.index);
-  entry.decl = std::move(decl);
-  createWhenSized(entry);
+  redeclareIn(entries_, handle.index, std::move(decl));
 }
 
 void FrameResources::create(Entry& entry, VkExtent2D target) {
@@ -66,6 +59,7 @@ void FrameResources::create(Entry& entry, VkExtent2D target) {
   desc.extent = sizeFor(entry.decl.size, target);
   desc.type = desc.extent.depth > 1 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   desc.format = entry.decl.format;
+  desc.storageFormat = entry.decl.storageFormat;
   desc.usage = entry.decl.usage;
   if (entry.decl.pairing == Pairing::History || entry.decl.zeroed) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // cleared
   if (!entry.decl.initial.empty()) desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;

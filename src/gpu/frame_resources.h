@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vitrine::gpu {
@@ -43,6 +44,9 @@ struct ImageDecl {
   ImageUse initialUse = use::ComputeSample;  // where an uploaded image is left
   bool state = false;  // simulation state a checkpoint saves and restores (download, restore)
   bool zeroed = false;  // cleared to zero at creation: for images too big to upload from the CPU
+  // A second format that storage writes see (Image::storageView): e.g. R32_UINT over a packed unorm
+  // format, so a shader writes the texels' bits with a rounding it chooses rather than the driver's.
+  VkFormat storageFormat = VK_FORMAT_UNDEFINED;
 };
 
 struct ImageHandle {
@@ -141,6 +145,17 @@ class FrameResources {
   // Images and buffers alike: an absolute size is known at once, a relative one once the target's is.
   template <typename E> void createWhenSized(E& entry) {
     if (!entry.decl.size.isRelative() || target_.width > 0) create(entry, target_);
+  }
+  // declare and redeclare, for images and buffers alike: the new entry's index; the entry redeclared.
+  template <typename E> uint32_t declareIn(std::vector<E>& entries, decltype(E::decl) decl) {
+    entries.push_back(E{std::move(decl)});
+    createWhenSized(entries.back());
+    return uint32_t(entries.size() - 1);
+  }
+  template <typename E> void redeclareIn(std::vector<E>& entries, uint32_t index, decltype(E::decl) decl) {
+    E& entry = entries.at(index);
+    entry.decl = std::move(decl);
+    createWhenSized(entry);
   }
   void beginBuffers(VkCommandBuffer cmd, StreamArena& stream);
   void writeFirstContents(VkCommandBuffer cmd, StreamArena& stream, Entry& entry);

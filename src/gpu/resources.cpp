@@ -73,6 +73,9 @@ Image::Image(const Device& device, const ImageDesc& desc, const std::string& nam
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = desc.type;
   info.format = desc.format;
+  // The two formats share a size class (the views reinterpret the same bits), which Vulkan allows
+  // for a mutable image.
+  if (desc.storageFormat != VK_FORMAT_UNDEFINED) info.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
   info.extent = desc.extent;
   info.mipLevels = desc_.mips;
   info.arrayLayers = 1;
@@ -97,11 +100,17 @@ Image::Image(const Device& device, const ImageDesc& desc, const std::string& nam
   device.name(VkDeviceMemory(memory_), VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
   if (!(desc.usage & viewable)) return;  // copy-only images have no view
 
-  auto makeView = [&](uint32_t base, uint32_t count, const std::string& label) {
+  const bool split = desc.storageFormat != VK_FORMAT_UNDEFINED;
+  auto makeView = [&](uint32_t base, uint32_t count, const std::string& label, bool storage = false) {
+    // With a storage format of its own, each view takes only its part of the usage: the main format
+    // need not support storage.
+    VkImageViewUsageCreateInfo usage{VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO};
+    usage.usage = storage ? VkImageUsageFlags(VK_IMAGE_USAGE_STORAGE_BIT) : desc.usage & ~VK_IMAGE_USAGE_STORAGE_BIT;
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    if (split) viewInfo.pNext = &usage;
     viewInfo.image = image;
     viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = desc.format;
+    viewInfo.format = storage ? desc.storageFormat : desc.format;
     viewInfo.subresourceRange = {desc.aspect, base, count, 0, 1};
     VkImageView view;
     VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
@@ -109,6 +118,12 @@ Image::Image(const Device& device, const ImageDesc& desc, const std::string& nam
     return Unique<VkImageView>(device, view);
   };
   view_ = makeView(0, desc_.mips, name + " view");
+  if (split) {
+    if (desc_.mips != 1 || !(desc.usage & VK_IMAGE_USAGE_STORAGE_BIT))
+      throw Error(fmt::format("{}: a storage format of its own needs one level and storage use", name));
+    storageView_ = makeView(0, 1, name + " storage view", true);
+    return;
+  }
   if (desc_.mips > 1 && (desc.usage & VK_IMAGE_USAGE_STORAGE_BIT))
     for (uint32_t level = 0; level < desc_.mips; ++level)
       mipViews_.push_back(makeView(level, 1, fmt::format("{} mip {}", name, level)));

@@ -54,6 +54,7 @@ struct ImageDesc {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
   uint32_t mips = 1;  // 0: the full chain down to 1x1
+  VkFormat storageFormat = VK_FORMAT_UNDEFINED;  // set: storageView() writes the bits in this format
 };
 
 uint32_t fullMipCount(VkExtent3D extent);
@@ -66,6 +67,7 @@ class Image {
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }  // every mip level
   VkImageView mipView(uint32_t level) const;  // one level, for storage writes into a chain
+  VkImageView storageView() const { return storageView_ ? VkImageView(storageView_) : view(); }
   const ImageDesc& desc() const { return desc_; }  // desc().mips is the actual count
   VkExtent2D extent2d() const { return {desc_.extent.width, desc_.extent.height}; }
   VkExtent3D extent() const { return desc_.extent; }
@@ -88,6 +90,7 @@ class Image {
   Unique<VkDeviceMemory> memory_;
   Unique<VkImageView> view_;
   std::vector<Unique<VkImageView>> mipViews_;
+  Unique<VkImageView> storageView_;  // desc().storageFormat's view of level 0
   ImageUse last_ = use::Discard;
 };
 

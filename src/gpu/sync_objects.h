@@ -1,6 +1,6 @@
 #pragma once
-// Small command and synchronisation objects, each created owned and named, so a debugger
-// capture of the gallery reads as what each object is for.
+// Small command and synchronisation objects, each created owned and named, so a debugger capture or
+// a validation message says what each object is for.
 #include <string>
 
 #include "gpu/device.h"

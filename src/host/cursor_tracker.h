@@ -3,7 +3,7 @@
 // press did not land on the menu. Movement and scrolling add up until a simulation step takes them,
 // so a frame that runs no step loses nothing and a frame that runs several does not repeat it.
 #include "host/pointer.h"
-#include "scenes/scene.h"
+#include "frame/frame_input.h"
 
 #include <optional>
 

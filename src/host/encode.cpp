@@ -9,7 +9,7 @@
 #include "host/modes.h"
 #include "host/record_manifest.h"
 #include "host/record_shared.h"
-#include "host/stop_signal.h"
+#include "core/stop_signal.h"
 #include "image/image_io.h"
 #include "live/audio_clip.h"
 

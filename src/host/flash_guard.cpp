@@ -30,16 +30,18 @@ gpu::Image& FlashGuard::guard(VkCommandBuffer cmd, const GuardSources& sources, 
   lastTime_ = time;
   const VkSampler linear = device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp);
   const VkImageLayout sampled = gpu::use::ComputeSample.layout;
+  // The measure and the present read the same: the frame (and the one fading in), the held frame, the state.
+  const gpu::Bindings frame = gpu::Bindings()
+                                  .sampledImage("source", sources.source, linear, sampled)
+                                  .sampledImage("incoming", sources.incoming, linear, sampled)
+                                  .storageImage("held", held_.view())
+                                  .storageBuffer("FlashGuard", state_.handle());
 
   if (!fresh) {
     held_.use(cmd, gpu::use::ComputeRead);
     state_.use(cmd, gpu::use::ComputeReadWriteBuffer);
     measure_.bind(cmd);
-    measure_.push(cmd, gpu::Bindings()
-                           .sampledImage("source", sources.source, linear, sampled)
-                           .sampledImage("incoming", sources.incoming, linear, sampled)
-                           .storageImage("held", held_.view())
-                           .storageBuffer("FlashGuard", state_.handle()));
+    measure_.push(cmd, frame);
     measure_.constants(cmd, shader::HostFlashMeasurePush{sources.fade});
     measure_.dispatchOver(cmd, extent);
   }
@@ -55,11 +57,7 @@ gpu::Image& FlashGuard::guard(VkCommandBuffer cmd, const GuardSources& sources, 
   held_.use(cmd, gpu::use::ComputeReadWrite);
   state_.use(cmd, gpu::use::ComputeReadBuffer);
   show_.bind(cmd);
-  show_.push(cmd, gpu::Bindings()
-                      .sampledImage("source", sources.source, linear, sampled)
-                      .sampledImage("incoming", sources.incoming, linear, sampled)
-                      .storageImage("held", held_.view())
-                      .storageBuffer("FlashGuard", state_.handle()));
+  show_.push(cmd, frame);
   show_.constants(cmd, shader::HostFlashPresentPush{sources.fade, fresh ? 0u : 1u});
   show_.dispatchOver(cmd, extent);
   return held_;

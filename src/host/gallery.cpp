@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <thread>
 
+#include "core/stop_signal.h"
 #include "core/user_dirs.h"
 #include "gpu/check.h"
 #include "host/gallery_app.h"
@@ -20,8 +20,6 @@ namespace {
 
 using Clock = Gallery::Clock;
 constexpr uint32_t kFramesInFlight = Gallery::kFramesInFlight;
-
-volatile std::sig_atomic_t stopRequested = 0;
 
 constexpr auto kShaderPollInterval = std::chrono::milliseconds(500);
 constexpr auto kNoteSeconds = std::chrono::seconds(6);  // how long a screenshot's note stays
@@ -162,13 +160,13 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
 }
 
 int Gallery::run() {
-  while (!window_.shouldClose() && !stopRequested) {
+  while (!window_.shouldClose() && !StopOnSignal::requested()) {
     window_.pollEvents();
     if (window_.hidden()) {
       audio_.pause();  // minimised: no drone playing to nobody
       const auto hiddenAt = Clock::now();
       // Sleep on events (a few wake-ups a second, so a stop signal is still seen) until shown again.
-      while (window_.hidden() && !window_.shouldClose() && !stopRequested) window_.waitForEvents(0.25);
+      while (window_.hidden() && !window_.shouldClose() && !StopOnSignal::requested()) window_.waitForEvents(0.25);
       audio_.resume();
       lastFrame_ = Clock::now();  // time spent minimised is not simulated, nor counted as shown
       shownTime_.hidden(hiddenAt, lastFrame_);
@@ -372,9 +370,8 @@ void Gallery::pollShaders() {
 int runGallery(const Options& options) {
   const SceneInfo* named = options.scene.empty() ? nullptr : &Gallery::namedScene(options.scene);  // a typo fails first
   // SIGTERM (a kiosk's service manager) and Ctrl-C end the loop like Esc: settings are flushed, the
-  // device is idled and destroyed in order. The handler only sets a flag.
-  std::signal(SIGTERM, [](int) { stopRequested = 1; });
-  std::signal(SIGINT, [](int) { stopRequested = 1; });
+  // device is idled and destroyed in order.
+  const StopOnSignal stop;
   if (!options.kiosk) return Gallery(options, named).run();
   // A bad playlist is refused here, naming its line, before a window opens.
   std::vector<PlaylistEntry> playlist;
@@ -404,9 +401,9 @@ int runGallery(const Options& options) {
                    (long long)pause.count());
     }
     gallery.reset();
-    for (auto slept = std::chrono::seconds(0); slept < pause && !stopRequested; slept += std::chrono::seconds(1))
+    for (auto slept = std::chrono::seconds(0); slept < pause && !StopOnSignal::requested(); slept += std::chrono::seconds(1))
       std::this_thread::sleep_for(std::chrono::seconds(1));
-    if (stopRequested) return 0;
+    if (StopOnSignal::requested()) return 0;
     pause = std::min(pause * 2, std::chrono::seconds(60));
     const auto scenes = sceneRegistry();
     named = failing ? &scenes[(size_t(failing - scenes.data()) + 1) % scenes.size()] : nullptr;

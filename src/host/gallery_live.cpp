@@ -4,7 +4,7 @@
 #include "host/scene_renderer.h"
 #include "live/audio_capture.h"
 #include "live/audio_clip.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 

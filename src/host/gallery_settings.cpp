@@ -8,14 +8,9 @@
 #include <set>
 
 #include "core/error.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 namespace vitrine::host {
-
-const params::Schema* schemaOfScene(std::string_view scene) {
-  const SceneInfo* info = findScene(scene);
-  return info ? &info->schema() : nullptr;
-}
 
 namespace {
 
@@ -23,7 +18,7 @@ namespace {
 std::optional<std::string> effectiveText(std::string_view scene, const params::KeyValues& values, const std::string& key) {
   for (const auto& [k, text] : values)
     if (k == key) return text;
-  const params::Schema* schema = schemaOfScene(scene);
+  const params::Schema* schema = findSchema(scene);
   const params::Param* param = schema ? schema->find(key) : nullptr;
   if (!param) return std::nullopt;
   const auto defaults = schema->makeDefaults();
@@ -42,7 +37,7 @@ GallerySettings::GallerySettings(std::filesystem::path path, bool reset, bool ke
     changes_.all = !keepScene_;  // the file starts over at the first save (a kiosk merges, keeping the scene)
     return;
   }
-  params::LoadResult loaded = params::loadSettings(path_, schemaOfScene);
+  params::LoadResult loaded = params::loadSettings(path_, findSchema);
   settings_ = std::move(loaded.settings);
   for (auto& warning : loaded.warnings) warnings_.push_back(fmt::format("{}: {}", path_.string(), warning));
 }
@@ -136,7 +131,7 @@ void GallerySettings::save() {
     std::error_code ec;
     params::Settings merged = settings_;
     if (!changes_.all && std::filesystem::exists(path_, ec)) {
-      params::LoadResult disk = params::loadSettings(path_, schemaOfScene, params::LoadMode::ReplaceBad);
+      params::LoadResult disk = params::loadSettings(path_, findSchema, params::LoadMode::ReplaceBad);
       if (disk.readable) {
         merged = params::mergeSettings(std::move(disk.settings), settings_, changes_);
       } else {
@@ -146,7 +141,7 @@ void GallerySettings::save() {
         }
       }
     }
-    params::saveSettings(path_, merged, schemaOfScene);
+    params::saveSettings(path_, merged, findSchema);
     changes_ = {};
   } catch (const std::exception& e) {  // a full disk or a read-only home must not end the session
     warnings_.push_back(e.what());

@@ -57,7 +57,4 @@ class GallerySettings {
   std::vector<std::string> warnings_;
 };
 
-// The schema of a registered scene, for the settings file (null for a scene this build lacks).
-const params::Schema* schemaOfScene(std::string_view scene);
-
 }  // namespace vitrine::host

@@ -8,15 +8,16 @@
 #include "host/user_presets.h"
 #include "host/event_log.h"
 #include "host/input_script.h"
+#include "host/live_link.h"
 #include "host/modes.h"
 #include "host/offscreen.h"
 #include "host/output_warp_file.h"
 #include "host/scene_renderer.h"
 #include "core/output_path.h"
+#include "core/stop_signal.h"
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <optional>
 #include <thread>
@@ -25,9 +26,6 @@
 #include <fmt/format.h>
 
 namespace vitrine::host {
-namespace {
-volatile std::sig_atomic_t stopHeadless = 0;
-}  // namespace
 
 int runHeadless(const Options& options) {
   const std::filesystem::path out = options.out;
@@ -52,6 +50,7 @@ int runHeadless(const Options& options) {
   if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
   uint32_t rendered = 0;  // fewer than --frames when SIGTERM ends a --remote run early
+  std::optional<StopOnSignal> stop;  // a --remote run's, caught until the run has written its last frame
   {
     Offscreen offscreen(device, config);
     std::optional<RemoteLink> remote;
@@ -62,8 +61,7 @@ int runHeadless(const Options& options) {
       remote.emplace(options.remoteBind, options.remoteAllow);
       remote->setPresets(&presets.emplace(openUserPresets()));
       if (live) remote->setMappings(live->mappingLines());
-      std::signal(SIGTERM, [](int) { stopHeadless = 1; });
-      std::signal(SIGINT, [](int) { stopHeadless = 1; });
+      stop.emplace();
     }
     auto due = std::chrono::steady_clock::now();
     // Device memory after the first fifth of the frames (the soak's warm-up) and at the end; resident
@@ -73,7 +71,7 @@ int runHeadless(const Options& options) {
     const uint32_t residentEvery = std::max((options.frames - std::min(options.frames, warmFrames)) / 20, 1u);
     gpu::MemoryTally warm;
     std::optional<uint64_t> residentWarm, residentPeak;
-    for (; rendered < options.frames && (rendered == 0 || !stopHeadless); ++rendered) {  // one frame at least
+    for (; rendered < options.frames && (rendered == 0 || !StopOnSignal::requested()); ++rendered) {  // one frame at least
       const uint32_t k = rendered;
       if (k == warmFrames) warm = gpu::liveDeviceMemory(), residentWarm = residentBytes();
       if (k >= warmFrames && (k - warmFrames) % residentEvery == 0)

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "host/cursor_tracker.h"
-#include "scenes/scene.h"
+#include "frame/frame_input.h"
 
 namespace vitrine::host {
 

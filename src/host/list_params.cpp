@@ -1,4 +1,5 @@
-// vitrine --list-params [SCENE]: every parameter of a scene, from its schema alone (no device).
+// vitrine --list-params [SCENE]: every parameter of a scene, from its schema alone (no device); and
+// --list-keys and --list-presets, the same names one a line, for scripts and the bash completion.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -8,7 +9,7 @@
 #include "host/modes.h"
 #include "host/user_presets.h"
 #include "params/listing.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 namespace vitrine::host {
 
@@ -33,6 +34,26 @@ int runListParams(const Options& options) {
     first = false;
   }
   if (first) throw Error(unknownScene(options.listParams));
+  return 0;
+}
+
+int runListKeys(const Options& options) {
+  for (const auto& info : sceneRegistry())
+    if (options.listParams.empty() || info.name == options.listParams)
+      for (const params::Param& param : info.schema().params())
+        std::printf("%.*s.%s\n", int(info.name.size()), info.name.data(), param.key.c_str());
+  return 0;
+}
+
+int runListPresets(const Options& options) {
+  const params::PresetStore mine = openUserPresets();  // its warnings are --list-params' to show
+  for (const auto& info : sceneRegistry()) {
+    if (!options.listParams.empty() && info.name != options.listParams) continue;
+    const std::string scene(info.name);
+    for (const params::Preset& preset : info.schema().presets()) std::printf("%s.%s\n", scene.c_str(), preset.name.c_str());
+    for (const params::UserPreset* preset : mine.presetsOf(scene))
+      std::printf("%s.%s\n", scene.c_str(), preset->name.c_str());
+  }
   return 0;
 }
 

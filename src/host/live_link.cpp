@@ -1,15 +1,15 @@
 #include "host/live_link.h"
 
+#include "app/options.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
-#include "host/modes.h"
 #include "host/scene_renderer.h"
 #include "live/audio_capture.h"
 #include "live/audio_clip.h"
 #include "live/audio_file_input.h"
 #include "live/midi_input.h"
 #include "live/smf.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 

@@ -18,6 +18,7 @@
 
 namespace vitrine {
 class EventSink;
+struct Options;
 struct SceneInfo;
 }  // namespace vitrine
 
@@ -107,5 +108,9 @@ class LiveLink {
   bool vetted_ = false;       // the mappings playing now have been judged against the live scene
   std::string lastRefusal_;   // while the scene refuses the mapped values: said once, when it begins
 };
+
+// The offline runs' live input (headless, record): the --map, --audio-in and --midi-in files for
+// `scene`, frame-exact; null when the command line asks for none. Throws vitrine::Error for bad input.
+std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::string& scene);
 
 }  // namespace vitrine::host

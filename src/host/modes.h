@@ -1,9 +1,6 @@
 #pragma once
 // The program's modes, each a function of the parsed options returning the process exit code.
 #include "app/options.h"
-#include "host/live_link.h"
-
-#include <memory>
 
 namespace vitrine::host {
 
@@ -15,9 +12,7 @@ int runRecordFilm(const Options& options);  // record --out NAME.mp4|.mov|.mkv: 
 int runEncode(const Options& options);    // encode FOLDER: a recorded sequence into a film (host/encode.cpp)
 int runCompare(const Options& options);   // compare: the golden metric on two files
 int runListParams(const Options& options);  // --list-params: each scene's parameters (host/list_params.cpp)
-
-// The offline runs' live input (headless, record): the --map, --audio-in and --midi-in files for
-// `scene`, frame-exact; null when the command line asks for none. Throws vitrine::Error for bad input.
-std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::string& scene);
+int runListKeys(const Options& options);     // --list-keys: SCENE.KEY, one a line
+int runListPresets(const Options& options);  // --list-presets: SCENE.NAME, the scene's own then the user's
 
 }  // namespace vitrine::host

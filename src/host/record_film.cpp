@@ -9,7 +9,7 @@
 #include "host/event_log.h"
 #include "host/modes.h"
 #include "host/record_shared.h"
-#include "host/stop_signal.h"
+#include "core/stop_signal.h"
 
 #include <fmt/format.h>
 

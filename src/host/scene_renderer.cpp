@@ -43,15 +43,16 @@ void SceneRenderer::clear() {
   info_ = nullptr;
 }
 
-void SceneRenderer::setScene(const SceneInfo& info) {
+void SceneRenderer::setScene(const SceneInfo& info, SceneFactory create) {
   clear();
+  if (!create) throw Error(fmt::format("scene {} has no factory (cmake/Scenes.cmake lists the scenes)", info.name));
   if (gpu::injectedSceneFailure(info.name))
     throw Error(fmt::format("scene {} failed to start (injected by VITRINE_INJECT)", info.name));
   resources_ = std::make_unique<gpu::FrameResources>(device_);
   resources_->setFramesInFlight(framesInFlight_);  // before the scene declares per-frame buffers
   sceneExtent_ = {0, 0};  // the new scene's images are sized at its first frame
-  scene_ = info.create(SceneContext{{device_, programs_, *resources_}, assets_, SceneEvents(events_, info.name),
-                                             *audio_, framesInFlight_, realtime_});
+  scene_ = create(SceneContext{{device_, programs_, *resources_}, assets_, SceneEvents(events_, info.name), *audio_,
+                               framesInFlight_, realtime_});
   info_ = &info;
 }
 

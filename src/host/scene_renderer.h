@@ -51,9 +51,10 @@ class SceneRenderer {
                 uint32_t framesInFlight);
   ~SceneRenderer();
 
-  // Creates the scene (the previous one is retired, not waited for); throws vitrine::Error if its
-  // set-up fails.
-  void setScene(const SceneInfo& info);
+  // Creates the scene with `create` (the previous one is retired, not waited for); throws
+  // vitrine::Error if its set-up fails. A scene of the registry is made by its own factory.
+  void setScene(const SceneInfo& info, SceneFactory create);
+  void setScene(const SceneInfo& info) { setScene(info, sceneFactory(info)); }
   Scene& scene() { return *scene_; }
   params::Bound parameters() { return scene_->parameters(); }
   // key=value pairs for the current scene, judged together (the scene's cross-parameter check runs

@@ -2,8 +2,7 @@
 
 #include "core/error.h"
 #include "core/printable.h"
-#include "host/gallery_settings.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -18,11 +17,11 @@ std::filesystem::path userPresetFolder() {
 }
 
 params::PresetStore openUserPresets(params::LoadMode mode) {
-  return params::PresetStore(userPresetFolder(), schemaOfScene, mode);
+  return params::PresetStore(userPresetFolder(), findSchema, mode);
 }
 
 FoundPreset findPreset(std::string_view scene, std::string_view name, const params::PresetStore* store) {
-  const params::Schema* schema = schemaOfScene(scene);
+  const params::Schema* schema = findSchema(scene);
   if (!schema) return {std::nullopt, fmt::format("no scene '{}'", printable(scene))};
   if (const params::Preset* builtIn = schema->findPreset(name)) return {*builtIn, {}};
   std::optional<params::PresetStore> own;
@@ -51,7 +50,7 @@ std::vector<params::Preset> presetsForRun(const Options& options, std::string_vi
 std::vector<params::Preset> presetFilesFor(const Options& options, std::string_view scene) {
   std::vector<params::Preset> presets;
   for (const std::string& file : options.presetFiles) {
-    params::PresetRead read = params::readPresetFile(file, schemaOfScene);
+    params::PresetRead read = params::readPresetFile(file, findSchema);
     if (!read.preset) throw Error(fmt::format("--preset-file: {}.", read.why));
     if (read.preset->scene == scene) presets.push_back({read.preset->name, {}, std::move(read.preset->values)});
   }

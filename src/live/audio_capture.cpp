@@ -15,7 +15,6 @@
 
 #include "audio/rtaudio_stream.h"
 #include "core/hidden_stderr.h"
-#include "core/printable.h"
 #include "live/float_ring.h"
 
 namespace vitrine::live {
@@ -190,14 +189,11 @@ std::string AudioCapture::open(const Options& options) {
     device->name = info.name;
     if (onMonitor) device->name += fmt::format(" ({}, the monitor of the default output)", kMonitor);
     else if (userSource) device->name += fmt::format(" (PULSE_SOURCE={})", std::getenv("PULSE_SOURCE"));
-    device->audio->startStream();
-    if (!device->audio->isStreamRunning()) return "the stream did not start";
+    if (std::string why = audio::startStream(*device->audio); !why.empty()) return why;
     device_ = std::move(device);
     return {};
-  } catch (const RtAudioError& e) {
-    return trimmed(e.getMessage());
-  } catch (const std::exception& e) {
-    return trimmed(e.what());
+  } catch (...) {
+    return audio::openFailure();
   }
 }
 

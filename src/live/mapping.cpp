@@ -3,7 +3,7 @@
 #include "core/bounded_file.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "live/modulator.h"
 
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 

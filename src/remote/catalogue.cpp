@@ -2,7 +2,7 @@
 
 #include "params/preset_store.h"
 #include "params/schema.h"
-#include "scenes/scene.h"
+#include "scenes/catalogue.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace vitrine {
-struct SceneInfo;  // scenes/scene.h: kept out of this header, which the host's loops include
+struct SceneInfo;  // scenes/catalogue.h: kept out of this header, which the host's loops include
 }
 
 namespace vitrine::remote {

@@ -1,6 +1,7 @@
-// Looking scenes and their actions up. The table itself, sceneRegistry(), is generated from the list
-// of scenes in cmake/Scenes.cmake (cmake/SceneTables.cmake writes build/generated/scene_registry.cpp).
-#include "scenes/scene.h"
+// Looking scenes, their schemas and their actions up. The table itself, sceneRegistry(), is generated
+// from the list of scenes in cmake/Scenes.cmake (cmake/SceneTables.cmake writes
+// build/generated/scene_registry.cpp).
+#include "scenes/catalogue.h"
 
 #include "core/printable.h"
 
@@ -8,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <vector>
 
 namespace vitrine {
 
@@ -31,6 +33,11 @@ const SceneInfo* findScene(std::string_view name) {
   for (const auto& info : sceneRegistry())
     if (info.name == name) return &info;
   return nullptr;
+}
+
+const params::Schema* findSchema(std::string_view scene) {
+  const SceneInfo* info = findScene(scene);
+  return info ? &info->schema() : nullptr;
 }
 
 std::string unknownScene(std::string_view name, std::string_view where) {

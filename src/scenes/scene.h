@@ -1,13 +1,15 @@
 #pragma once
-// What a scene is to the host: a name, a title, a number key, its parameter schema and a lifecycle.
-// Scenes see the device, the program library, their declared images, the assets and the frame they
-// are asked to draw (FrameInput and FrameContext, from frame/, which passes shared by scenes use
-// without knowing of scenes); nothing else of the host.
+// A scene as the host drives it: its lifecycle, what it sees and how it is made. What it is by name
+// (SceneInfo, the registry, the lookups) is scenes/catalogue.h, which needs no GPU. Scenes see the
+// device, the program library, their declared images, the assets and the frame they are asked to draw
+// (FrameInput and FrameContext, from frame/, which passes shared by scenes use without knowing of
+// scenes); nothing else of the host.
 #include "core/assets.h"
 #include "frame/frame_context.h"
 #include "frame/state_archive.h"
 #include "params/schema.h"
 #include "audio/audio_sink.h"
+#include "scenes/catalogue.h"
 #include "scenes/scene_events.h"
 
 #include <memory>
@@ -17,14 +19,6 @@
 #include <vector>
 
 namespace vitrine {
-
-// A scene's own verb that remote control (OSC, the web page) and input scripts can trigger, declared
-// once with the scene: neon's "release x y z", glass's "shuffle". Arguments are numbers.
-struct SceneAction {
-  std::string_view name;
-  std::span<const std::string_view> args;  // their names, in order; the count is the arity
-  std::string_view help;
-};
 
 // The device, the program library and the scene's declared images (declare images there; the host owns
 // and resizes them) come from GpuContext (frame/frame_context.h), which the scene's passes take.
@@ -45,7 +39,7 @@ class Scene {
   virtual void update(const FrameInput& input) = 0;  // once per fixed step
   virtual void record(const FrameContext& frame) = 0;
   virtual void drawPanel() {}  // extra Dear ImGui read-outs below the parameter panel, gallery only
-  // The scene's parameters: its schema (SceneInfo::schema) bound to its settings struct.
+  // The scene's parameters: its schema (SceneInfo::schema, scenes/catalogue.h) bound to its settings struct.
   virtual params::Bound parameters() = 0;
   // Checks that span several parameters, run once on the final values of every change (noodles'
   // memory budget); a non-empty reason rejects the whole change.
@@ -69,42 +63,20 @@ class Scene {
   virtual void simulationState(StateArchive& /*state*/) {}
 };
 
-struct SceneInfo {
-  std::string_view name;   // "kifs": used on the command line
-  std::string_view title;  // "Volumetric KIFS": shown in the menu
-  int key;                 // number key 1..9 in the gallery
-  std::unique_ptr<Scene> (*create)(const SceneContext&);
-  const params::Schema& (*schema)();  // the parameter declarations, no instance or GPU needed
-  std::string_view input;  // for the help card: what the drag and the scene's own keys do
-  std::span<const SceneAction> actions = {};  // what remote control and scripts may trigger
-
-  const SceneAction* findAction(std::string_view actionName) const {
-    for (const auto& action : actions)
-      if (action.name == actionName) return &action;
-    return nullptr;
-  }
+// How a scene is made. Each scene's NAME_scene.h declares NAME::create; the factory table, generated
+// with the registry from cmake/Scenes.cmake, pairs it with the scene's name.
+using SceneFactory = std::unique_ptr<Scene> (*)(const SceneContext&);
+struct SceneFactoryEntry {
+  std::string_view name;
+  SceneFactory create;
 };
+std::span<const SceneFactoryEntry> sceneFactories();
 
-// A scene's SceneInfo: its factory makes a T from the context. constexpr, so every scene's info is
-// constant-initialised and the registry never sees one before it exists.
-template <typename T>
-constexpr SceneInfo sceneInfo(std::string_view name, std::string_view title, int key,
-                              const params::Schema& (*schema)(), std::string_view input,
-                              std::span<const SceneAction> actions = {}) {
-  return {name, title, key, [](const SceneContext& context) -> std::unique_ptr<Scene> {
-            return std::make_unique<T>(context);
-          },
-          schema, input, actions};
+// The factory of a scene in the registry; null for one it does not hold.
+inline SceneFactory sceneFactory(const SceneInfo& info) {
+  for (const SceneFactoryEntry& entry : sceneFactories())
+    if (entry.name == info.name) return entry.create;
+  return nullptr;
 }
-
-// "" when `call` names one of the scene's actions with its arity and finite arguments; else why not.
-std::string checkAction(const SceneInfo& info, const ActionCall& call);
-
-// Every scene, in menu order: generated from the list in cmake/Scenes.cmake.
-std::span<const SceneInfo> sceneRegistry();
-const SceneInfo* findScene(std::string_view name);
-// What to say of a scene name no scene has (`where`: e.g. " in --set nope.grid=32"): the scenes there
-// are, and the one meant when the name begins only that one ("nood": noodles).
-std::string unknownScene(std::string_view name, std::string_view where = {});
 
 }  // namespace vitrine

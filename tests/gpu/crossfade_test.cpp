@@ -48,8 +48,9 @@ TEST_F(Crossfade, MixesTheIncomingScenesTargetByTheFadesWeight) {
   Assets assets("/nonexistent");
   gpu::ProgramLibrary programs(device());
   host::SceneRenderer outgoing(device(), programs, assets, 1), incoming(device(), programs, assets, 1);
-  outgoing.setScene(testSceneInfo(dark));
-  incoming.setScene(testSceneInfo(light));
+  const TestSceneEntry &darkScene = testScene(dark), &lightScene = testScene(light);
+  outgoing.setScene(darkScene.info, darkScene.create);
+  incoming.setScene(lightScene.info, lightScene.create);
   gpu::ImageDesc desc;
   desc.extent = {32, 16, 1};
   desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;

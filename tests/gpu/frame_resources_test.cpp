@@ -77,13 +77,13 @@ class CountingScene final : public TestScene {
 };
 
 CountingScene* lastScene = nullptr;
-const SceneInfo& kCounting = testSceneInfo(lastScene);
+const TestSceneEntry& kCounting = testScene(lastScene);
 
 // Two frames in flight, as the gallery runs them, over the counting scene.
 class InFlight : public FramesInFlight {
  public:
   explicit InFlight(const gpu::Device& device) : FramesInFlight(device, Assets("/nonexistent")) {
-    renderer().setScene(kCounting);
+    renderer().setScene(kCounting.info, kCounting.create);
   }
 };
 
@@ -113,7 +113,7 @@ TEST_F(FrameResources, SceneSwitchesRetireTheOldSceneWithoutWaiting) {
   InFlight run(device());
   for (int i = 0; i < 6; ++i) {
     run.frame({48, 32});
-    run.renderer().setScene(kCounting);  // a frame of the old scene may still be running
+    run.renderer().setScene(kCounting.info, kCounting.create);  // a frame of the old scene may still be running
   }
   run.frame({48, 32});
   EXPECT_FLOAT_EQ(run.firstTexel(), 1.0f) << "a new scene's history starts empty";
@@ -129,7 +129,7 @@ TEST(FrameResourcesExit, DeferredDeletionFreesEverythingByExit) {
       InFlight run(device);
       for (uint32_t i = 0; i < 12; ++i) {
         run.frame({32 + i * 4, 24});
-        if (i % 4 == 3) run.renderer().setScene(kCounting);
+        if (i % 4 == 3) run.renderer().setScene(kCounting.info, kCounting.create);
       }
     }
     EXPECT_EQ(device.retiredCount(), 0u) << "the renderer drains what it retired when it goes";
@@ -358,7 +358,8 @@ PerFrameScene* perFrameScene = nullptr;
 
 TEST_F(DeclaredBuffers, APerFrameBufferIsADifferentBufferInEachSlot) {
   FramesInFlight run(device(), Assets("/nonexistent"));
-  run.renderer().setScene(testSceneInfo(perFrameScene));
+  const TestSceneEntry& scene = testScene(perFrameScene);
+  run.renderer().setScene(scene.info, scene.create);
   for (int i = 0; i < 6; ++i) run.frame({32, 16});
   const auto& seen = perFrameScene->seen;
   ASSERT_EQ(seen.size(), 6u);

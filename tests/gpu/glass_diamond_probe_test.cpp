@@ -6,6 +6,8 @@
 #include "gpu/resources.h"
 #include "maths/hash.h"
 #include "scenes/glass/diamond.h"
+#include "scenes/glass/diamond_rays.h"
+#include "scenes/glass/diamond_walk.h"
 #include "scenes/glass/shapes.h"
 #include "shaders/glass/probe_blocks.h"
 #include "support/gpu_test.h"

@@ -45,7 +45,8 @@ class NoodlesGpu : public test::GpuTest {
     gpu::Image volume(device(),
                       {.extent = {texels.x, texels.y, texels.z}, .format = kBakedFlowFormat,
                        .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                       .type = VK_IMAGE_TYPE_3D},
+                       .type = VK_IMAGE_TYPE_3D,
+                       .storageFormat = kBakedFlowStorageFormat},
                       "test baked flow");
     gpu::Buffer volumeReadback(device(), settings.bake.count() * 4 + 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                gpu::MemoryUse::Readback, "test baked flow readback");
@@ -53,7 +54,7 @@ class NoodlesGpu : public test::GpuTest {
       BakedFlow baked;
       if (settings.bake.baked()) {
         volume.use(cmd, gpu::use::ComputeWrite);
-        pass_.recordBake(cmd, settings, volume.view());
+        pass_.recordBake(cmd, settings, volume.storageView());
         volume.use(cmd, gpu::use::ComputeSample);
         baked = {volume.view(), device().sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp)};
       }
@@ -172,21 +173,24 @@ TEST_F(NoodlesGpu, ChunkedBindingsMatchTheCpu) {
   expectMatchesReference(s, budget);
 }
 
-// bake.comp writes what bakeField computes, to the storage's 10 bits (a step either way where the
-// device's fused arithmetic lands across a rounding boundary), in the order the volume is addressed.
+// bake.comp writes what bakeField computes, packed as bakedTexel packs it, in the order the volume is
+// addressed: a level a step away only where the device's arithmetic lands across a rounding boundary
+// (a few in ten thousand). A driver's own float-to-unorm conversion may truncate, which Vulkan allows:
+// about half the levels would then be a step low.
 void expectTheBakedFlowHoldsTheCpuBake(const StrandSettings& s, const std::vector<uint32_t>& texels) {
   ASSERT_TRUE(s.bake.baked());
   const std::vector<glm::vec3> cpu = bakeField(s.bake, s.field);
   ASSERT_EQ(texels.size(), cpu.size());
-  const float quantum = 2.0f * kBakeRange / 1023.0f;
-  float worst = 0.0f;
+  size_t stepAway = 0;
   for (size_t i = 0; i < cpu.size(); ++i)
     for (int axis = 0; axis < 3; ++axis) {
-      const float stored = (float((texels[i] >> (10 * axis)) & 1023u) / 1023.0f - 0.5f) * 2.0f * kBakeRange;
-      worst = std::max(worst, std::fabs(stored - cpu[i][axis]));
-      ASSERT_LE(std::fabs(stored - cpu[i][axis]), quantum * 1.01f) << fmt::format("texel {} axis {}", i, axis);
+      const uint32_t level = (texels[i] >> (10 * axis)) & 1023u, expected = bakedLevel(cpu[i][axis]);
+      ASSERT_LE(std::max(level, expected) - std::min(level, expected), 1u) << fmt::format("texel {} axis {}", i, axis);
+      stepAway += level != expected;
     }
-  testing::Test::RecordProperty("worst_texel_difference", fmt::format("{:.3g}", worst));
+  const double share = double(stepAway) / double(3 * cpu.size());
+  EXPECT_LT(share, 1e-3) << stepAway << " of " << 3 * cpu.size() << " levels a step from the CPU's";
+  testing::Test::RecordProperty("levels_a_step_away", fmt::format("{:.3g}", share));
 }
 
 TEST_F(NoodlesGpu, TheBakedFlowHoldsTheCpuBake) {

@@ -46,14 +46,14 @@ class TextScene final : public TestScene {
 };
 
 TextScene* lastTextScene = nullptr;
-const SceneInfo& kTextScene = testSceneInfo(lastTextScene);
+const TestSceneEntry& kTextScene = testScene(lastTextScene);
 
 // One frame at a time through the host's scene renderer, the target read back once it is done.
 class TextFrames {
  public:
   explicit TextFrames(const gpu::Device& device)
       : device_(device), assets_(Assets::locate()), programs_(device), renderer_(device, programs_, assets_, 1) {
-    renderer_.setScene(kTextScene);
+    renderer_.setScene(kTextScene.info, kTextScene.create);
     scene_ = lastTextScene;
   }
   ~TextFrames() { device_.waitIdle(); }

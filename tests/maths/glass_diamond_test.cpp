@@ -1,7 +1,10 @@
-// The round brilliant (src/scenes/glass/diamond.h): facet planes against the proportions, the polytope's
-// vertices and symmetry, the proxy hull, ray-polytope hits against marching, and the interior walk.
+// The round brilliant (src/scenes/glass/diamond.h, diamond_rays.h, diamond_walk.h): facet planes against
+// the proportions, the polytope's vertices and symmetry, the proxy hull, ray-polytope hits against
+// marching, and the interior walk.
 #include "maths/hash.h"
 #include "scenes/glass/diamond.h"
+#include "scenes/glass/diamond_rays.h"
+#include "scenes/glass/diamond_walk.h"
 #include "scenes/glass/optics.h"
 #include "scenes/glass/shapes.h"
 #include "support/random_vectors.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Scenes that exist only in a test: a base with no parameters, and a SceneInfo (not registered)
-// whose factory remembers the instance it made, so the test can look inside the scene the host drives.
+// Scenes that exist only in a test: a base with no parameters, and an entry (not registered) whose
+// factory remembers the instance it made, so the test can look inside the scene the host drives.
 #include "scenes/scene.h"
 
 #include <memory>
@@ -23,18 +23,24 @@ class TestScene : public Scene {
   NoSettings settings_;
 };
 
-// The SceneInfo of test scene T; `made` points at the last instance the host created.
-template <typename T> const SceneInfo& testSceneInfo(T*& made) {
+// A scene that exists only in a test: its SceneInfo and the factory the renderer makes it with
+// (renderer.setScene(entry.info, entry.create)).
+struct TestSceneEntry {
+  SceneInfo info;
+  SceneFactory create;
+};
+
+// Test scene T's entry; `made` points at the last instance the host created.
+template <typename T> const TestSceneEntry& testScene(T*& made) {
   static T** target = nullptr;
   target = &made;
-  static const SceneInfo info{"test", "Test", 9,
-                              [](const SceneContext& context) -> std::unique_ptr<Scene> {
-                                auto scene = std::make_unique<T>(context);
-                                *target = scene.get();
-                                return scene;
-                              },
-                              &TestScene::schema, "none"};
-  return info;
+  static const TestSceneEntry entry{{"test", "Test", 9, &TestScene::schema, "none"},
+                                    [](const SceneContext& context) -> std::unique_ptr<Scene> {
+                                      auto scene = std::make_unique<T>(context);
+                                      *target = scene.get();
+                                      return scene;
+                                    }};
+  return entry;
 }
 
 }  // namespace vitrine::test

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "host/input_script.h"
+#include "scenes/catalogue.h"
 #include "support/temp_folder.h"
 
 namespace vitrine::host {

@@ -1,9 +1,9 @@
 // The user's presets: saved, read back, renamed, deleted, exported and imported, every value checked as
 // the settings file checks it, and every refusal with a reason naming the file or the name.
-#include "host/gallery_settings.h"
 #include "host/param_panel.h"
 #include "host/playlist.h"
 #include "params/preset_store.h"
+#include "scenes/catalogue.h"
 #include "support/temp_folder.h"
 
 #include "core/error.h"
@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 class PresetStoreTest : public test::TempFolderTest {
  protected:
   fs::path presets() const { return folder_ / "presets"; }
-  PresetStore open() const { return PresetStore(presets(), host::schemaOfScene); }
+  PresetStore open() const { return PresetStore(presets(), findSchema); }
   void write(const fs::path& path, const std::string& text) {
     fs::create_directories(path.parent_path());
     std::ofstream(path, std::ios::binary) << text;
@@ -97,11 +97,11 @@ TEST_F(PresetStoreTest, ExportThenImportIsARoundTrip) {
   ASSERT_EQ(store.save({"noodles", "thick", {{"grid", "16x16x4"}, {"integrator", "rk4"}}}), "");
   const fs::path exported = folder_ / "shared" / "thick.json";
   ASSERT_EQ(store.exportTo("noodles", "thick", exported), "");
-  const PresetRead read = readPresetFile(exported, host::schemaOfScene);
+  const PresetRead read = readPresetFile(exported, findSchema);
   ASSERT_TRUE(read.preset) << read.why;
   EXPECT_EQ(*read.preset, *store.find("noodles", "thick"));
 
-  PresetStore elsewhere(folder_ / "other", host::schemaOfScene);
+  PresetStore elsewhere(folder_ / "other", findSchema);
   ASSERT_EQ(elsewhere.import(exported), "");
   EXPECT_EQ(*elsewhere.find("noodles", "thick"), *store.find("noodles", "thick"));
 }
@@ -133,7 +133,7 @@ TEST_F(PresetStoreTest, BadFilesAreRefusedNamingTheFileAndMovedAsideNeverCrashin
 
 TEST_F(PresetStoreTest, ARunThatOnlyReadsLeavesABadFileWhereItIs) {
   write(presets() / "a.json", "{not json");
-  const PresetStore store(presets(), host::schemaOfScene, LoadMode::LeaveAlone);
+  const PresetStore store(presets(), findSchema, LoadMode::LeaveAlone);
   ASSERT_EQ(store.warnings().size(), 1u);
   EXPECT_NE(store.warnings()[0].find("left as it is"), std::string::npos) << store.warnings()[0];
   EXPECT_TRUE(fs::exists(presets() / "a.json"));
@@ -141,7 +141,7 @@ TEST_F(PresetStoreTest, ARunThatOnlyReadsLeavesABadFileWhereItIs) {
 
 // The panel's list names the user's preset the values match, marked as theirs; a built-in match wins.
 TEST_F(PresetStoreTest, ThePanelMarksTheUsersPresetThatTheValuesMatch) {
-  const Schema& schema = *host::schemaOfScene("kifs");
+  const Schema& schema = *findSchema("kifs");
   const auto settings = schema.makeDefaults();
   const Bound bound{&schema, settings.get()};
   const UserPreset evening{"kifs", "evening", {{"step", "6"}, {"fold", "1.1"}}};
@@ -158,7 +158,7 @@ TEST_F(PresetStoreTest, ThePanelMarksTheUsersPresetThatTheValuesMatch) {
 }
 
 TEST_F(PresetStoreTest, WithoutAFolderNothingIsSavedAndSaysWhy) {
-  PresetStore store({}, host::schemaOfScene);
+  PresetStore store({}, findSchema);
   EXPECT_NE(store.save({"kifs", "mine", {{"step", "2"}}}).find("no settings folder"), std::string::npos);
 }
 

@@ -656,7 +656,6 @@ class BloomScene final : public Scene {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<BloomScene>("bloom", "The Bloom", 1, &schema,
-    "Move the cursor near the crystal: it is the vapour. Hold the button to breathe harder. M mutes.");
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<BloomScene>(context); }
 
 }  // namespace vitrine::bloom

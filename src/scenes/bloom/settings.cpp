@@ -78,4 +78,7 @@ int tierSamples(int samples, int lattice, int latticeInUse) {
   return std::max(8, int(std::lround(double(samples) * latticeInUse / lattice)));
 }
 
+constinit const SceneInfo kSceneInfo{"bloom", "The Bloom", 1, &schema,
+    "Move the cursor near the crystal: it is the vapour. Hold the button to breathe harder. M mutes."};
+
 }  // namespace vitrine::bloom

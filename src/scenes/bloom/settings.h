@@ -3,6 +3,7 @@
 // with the write-up's numbers as defaults.
 #include "scenes/quality.h"
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 
 namespace vitrine::bloom {
 
@@ -34,6 +35,8 @@ struct Settings {
 };
 
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 // What a quality tier costs beside its render scale: the lattice's side, and with it the diffusion's
 // passes (which grow with its square) and the statistics, and the raymarch's samples in proportion,

@@ -81,7 +81,6 @@ class CalibrateScene final : public Scene {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<CalibrateScene>("calibrate", "Calibration card", 6, &schema,
-    "A test card for the output: grid, circles, bars, ramp and corner markers; strobe=on tests the flash guard.");
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<CalibrateScene>(context); }
 
 }  // namespace vitrine::calibrate

@@ -20,4 +20,7 @@ const params::Schema& schema() {
   return table;
 }
 
+constinit const SceneInfo kSceneInfo{"calibrate", "Calibration card", 6, &schema,
+    "A test card for the output: grid, circles, bars, ramp and corner markers; strobe=on tests the flash guard."};
+
 }  // namespace vitrine::calibrate

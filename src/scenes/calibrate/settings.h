@@ -2,6 +2,7 @@
 // Everything the calibration card's panel, --set and the settings file can change, declared once
 // (params/schema.h). Apart from the scene so that what reads values needs no GPU code.
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 
 namespace vitrine::calibrate {
 
@@ -14,5 +15,7 @@ struct Settings {
 };
 
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 }  // namespace vitrine::calibrate

@@ -1,8 +1,8 @@
 #pragma once
-// The round brilliant diamond: its 57 facet planes derived from Tolkowsky-ideal proportions, a tight convex
-// hull for the rasterised proxy, the ray-polytope intersections and the interior bounce walk (the sparkle).
-// shaders/glass/diamond.glsl mirrors the functions below; the shader reads the planes from a storage buffer
-// filled with diamondBlock, so the host and the GPU use the same numbers.
+// The round brilliant diamond: its 57 facet planes derived from Tolkowsky-ideal proportions and a tight
+// convex hull for the rasterised proxy. The ray-polytope queries are in diamond_rays.h, the interior bounce
+// walk (the sparkle) in diamond_walk.h; shaders/glass/diamond.glsl mirrors them, reading the planes from a
+// storage buffer filled with diamondBlock, so the host and the GPU use the same numbers.
 //
 // Object space: the stone's axis is z, the table on top (+z), the girdle band centred on z = 0.
 // Facet indices: 0 table, 1-8 bezels, 9-16 stars, 17-32 upper girdle halves, 33-40 pavilion mains,
@@ -15,13 +15,10 @@
 
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 namespace vitrine::glass {
-
-inline constexpr float kInf = std::numeric_limits<float>::infinity();  // no hit, or no bound
 
 inline constexpr int kDiamondPlanes = GLASS_DIAMOND_PLANES;
 inline constexpr int kGirdleFacet = 57;
@@ -64,6 +61,10 @@ struct DiamondGeometry {
   DiamondVertices vertices;
 };
 
+// How far inside a facet, as a share of the girdle radius, a point must lie to count as on it and off its
+// edges: the edge neighbours are found with it, and diamondExitThrough (diamond_rays.h) trusts a guess only past it.
+inline const float kEdgeMargin = shader::kGlassEdgeMargin;
+
 DiamondGeometry makeDiamond(float diameter);
 // makeDiamond's result for the last diameter asked on this thread: what shapeSdf & co. use on the CPU.
 const DiamondGeometry& cachedDiamond(float diameter);
@@ -78,58 +79,5 @@ shader::GlassDiamond diamondBlock(const DiamondGeometry& g);
 // octagon, the star points, one 16-gon ring around the girdle band, the lower-half tips and the culet.
 // Counter-clockwise seen from outside, object space, three vertices per triangle.
 std::vector<glm::vec3> diamondHullTriangles(const DiamondGeometry& g);
-
-// --- Ray queries. The ray is in object space, d a unit direction.
-
-// The polytope ∩ girdle cylinder as a distance bound: exact inside, a lower bound outside (max of plane terms).
-float diamondSdf(const DiamondGeometry& g, glm::vec3 p);
-// The outward normal of the facet whose term is largest at p (exact on a facet, no finite differences).
-glm::vec3 diamondNormal(const DiamondGeometry& g, glm::vec3 p, int& facet);
-// For a point on the surface, the distance along its facet to the nearest edge: the gap between the largest
-// and the second-largest facet term (the girdle counts as one) over the sine of the angle between those two
-// facets, the rate at which the gap grows along the first. The wireframe view draws where it is small.
-float diamondEdgeDistance(const DiamondGeometry& g, glm::vec3 p);
-// Front hit from outside: the last entering plane (or the girdle) before the first exiting one.
-bool diamondEnter(const DiamondGeometry& g, glm::vec3 ro, glm::vec3 rd, float& t, glm::vec3& n, int& facet);
-// Back exit from a point inside: the nearest plane (or girdle) the ray leaves through; n is the outward normal.
-bool diamondExit(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, float& t, glm::vec3& n, int& facet);
-// Whether the ray from p inside leaves through `facet` (a plane, not the girdle), tested against that facet's
-// edge neighbours alone: a few planes instead of all 57. True only where the exit point lies inside the facet
-// by more than kEdgeMargin of the radius, so near an edge, where rounding could pick either facet, the caller
-// falls back to diamondExit. On true, t and n are diamondExit's.
-inline const float kEdgeMargin = shader::kGlassEdgeMargin;
-bool diamondExitThrough(const DiamondGeometry& g, glm::vec3 p, glm::vec3 d, int facet, float& t, glm::vec3& n);
-
-// --- The interior walk: light that entered the stone, bouncing off facets until it leaves or the budget ends.
-enum DiamondWalkStatus : int { kWalking = 0, kWalkDone = 1, kWalkExhausted = 2, kWalkMissed = 3 };
-
-// The facets a walk left through, leg by leg, a byte each for its first kRouteLegs legs (0xff: none). The
-// wavelengths of one pixel mostly take the same route through the stone, so each walk first tries the
-// previous wavelength's facet for a leg (diamondExitThrough) and searches all 57 only where that fails.
-inline constexpr int kRouteLegs = shader::kGlassRouteLegs;
-inline constexpr glm::uvec2 kNoRoute{0xffffffffu, 0xffffffffu};
-int routeFacet(glm::uvec2 route, int leg);  // -1: no facet known for this leg
-glm::uvec2 withRouteFacet(glm::uvec2 route, int leg, int facet);
-
-struct DiamondWalk {
-  glm::vec3 p{};            // where the ray is (on a facet after the first step)
-  glm::vec3 d{};            // its unit direction, inside the stone
-  float throughput = 1.0f;  // the share of the entering light still inside
-  int facet = -1;           // the facet the ray last met (-1 at the start)
-  int bounces = 0;          // internal reflections so far
-  int status = kWalking;
-  int maxBounces = 6;       // internal reflections allowed (the UI's 1-32)
-  glm::uvec2 route = kNoRoute;  // in: the facets to try first; out: the facets this walk left through
-};
-
-DiamondWalk diamondWalkStart(glm::vec3 p, glm::vec3 d, float throughput, int maxBounces, glm::uvec2 route = kNoRoute);
-
-// One leg of the walk: finds the next exit and splits the light there. eta = n_diamond / n_air at this
-// wavelength. Seed mode (physical = false): leaves whole if it can refract out, else reflects whole (TIR).
-// Physical mode: the exact Fresnel share R reflects on, 1 - R leaves. exitWeight is the light leaving now,
-// along exitDir (a valid unit vector even when exitWeight is 0, so env(exitDir) never sees a NaN).
-// Returns false once nothing more will leave: then status says why and throughput holds what is left inside.
-bool diamondStep(const DiamondGeometry& g, DiamondWalk& w, float eta, bool physical, glm::vec3& exitDir,
-                 float& exitWeight);
 
 }  // namespace vitrine::glass

@@ -194,13 +194,6 @@ void GlassScene::drawPanel() {
   ImGui::TextDisabled("drag a shape; Space shuffles, R next photo, hold Z, T/S/B/F the diamond from the top, side, below or tumbling");
 }
 
-constexpr SceneAction kActions[] = {
-    {"shuffle", {}, "the shapes to new places (Space)"},
-    {"next_photo", {}, "the next photo behind the glass (R)"},
-};
-
-constinit const SceneInfo kSceneInfo = sceneInfo<GlassScene>("glass", "Spectral Glass", 2, &schema,
-    "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F show "
-    "the diamond from the top, side, below or tumbling, R shows the next photo; drop an image (or an EXR panorama) on the window.", kActions);
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<GlassScene>(context); }
 
 }  // namespace vitrine::glass

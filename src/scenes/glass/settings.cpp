@@ -203,4 +203,13 @@ const params::Schema& schema() {
   return table;
 }
 
+constexpr SceneAction kActions[] = {
+    {"shuffle", {}, "the shapes to new places (Space)"},
+    {"next_photo", {}, "the next photo behind the glass (R)"},
+};
+
+constinit const SceneInfo kSceneInfo{"glass", "Spectral Glass", 2, &schema,
+    "Drag a shape to move it. Space shuffles them, hold Z for three wavelengths without jitter, T / S / B / F show "
+    "the diamond from the top, side, below or tumbling, R shows the next photo; drop an image (or an EXR panorama) on the window.", kActions};
+
 }  // namespace vitrine::glass

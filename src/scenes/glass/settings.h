@@ -3,6 +3,7 @@
 // (params/schema.h), with the original's ranges and defaults (its "Rotating cube" opening scene).
 #include "scenes/quality.h"
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 #include "scenes/glass/shapes.h"
 
 #include <string>
@@ -78,5 +79,7 @@ inline constexpr float kDiamondRotation = 0.0f;
 inline constexpr float kDiamondStrength = 1.0f;
 
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 }  // namespace vitrine::glass

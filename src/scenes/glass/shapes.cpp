@@ -1,6 +1,6 @@
 #include "scenes/glass/shapes.h"
 
-#include "scenes/glass/diamond.h"
+#include "scenes/glass/diamond_rays.h"
 
 #include <limits>
 

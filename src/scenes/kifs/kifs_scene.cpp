@@ -76,7 +76,6 @@ class KifsScene final : public Scene {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<KifsScene>("kifs", "Volumetric KIFS", 4, &schema,
-    "Drag to nudge the fractal's orientation.");
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<KifsScene>(context); }
 
 }  // namespace vitrine::kifs

@@ -25,4 +25,7 @@ const params::Schema& schema() {
   return table;
 }
 
+constinit const SceneInfo kSceneInfo{"kifs", "Volumetric KIFS", 4, &schema,
+    "Drag to nudge the fractal's orientation."};
+
 }  // namespace vitrine::kifs

@@ -2,6 +2,7 @@
 // Everything the kifs panel, --set and the settings file can change, declared once (params/schema.h).
 // Apart from the scene so that what reads values (the settings file, the fuzz targets) needs no GPU code.
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 #include "scenes/kifs/kifs_math.h"
 #include "scenes/quality.h"
 
@@ -16,5 +17,7 @@ struct Settings {
 };
 
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 }  // namespace vitrine::kifs

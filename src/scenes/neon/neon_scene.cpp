@@ -304,7 +304,7 @@ void NeonScene::update(const FrameInput& input) {
   if (const auto slots = uint32_t(tierChains(settings_.chains, quality_.active())); slots != slots_)
     engine_->setSlots(slots_ = slots);
   handleCursor(input);
-  for (const ActionCall& call : input.actions)  // checked against kActions by the host
+  for (const ActionCall& call : input.actions)  // checked against kActions (settings.cpp) by the host
     if (call.name == "release") {
       lastInput_ = input.time;
       release(input.time, clampToReleaseVolume({call.args[0], call.args[1], call.args[2]}), "action");
@@ -502,13 +502,6 @@ void NeonScene::drawPanel() {
   if (time_ - lastInput_ >= settings_.autopilotIdle) ImGui::TextDisabled("autopilot playing; drag to take over");
 }
 
-constexpr std::string_view kReleaseArgs[] = {"x", "y", "z"};
-constexpr SceneAction kActions[] = {
-    {"release", kReleaseArgs, "a tube head released at (x, y, z) metres: x across, y up from the floor, z depth"},
-    {"burst", {}, "a tube from each of the autopilot's pens at once, where they are now (a beat, with live audio)"},
-};
-
-constinit const SceneInfo kSceneInfo = sceneInfo<NeonScene>("neon", "Neon", 3, &schema,
-    "Drag to draw a neon tube along the cursor's path; leave it alone and the autopilot plays.", kActions);
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<NeonScene>(context); }
 
 }  // namespace vitrine::neon

@@ -87,4 +87,13 @@ const params::Schema& schema() {
 int tierChains(int chains, Tier tier) { return tierCount(chains, tier, kFewestChains); }
 float tierRenderScale(Tier tier) { return tier == Tier::Low ? 0.4f : tierScale(tier); }
 
+constexpr std::string_view kReleaseArgs[] = {"x", "y", "z"};
+constexpr SceneAction kActions[] = {
+    {"release", kReleaseArgs, "a tube head released at (x, y, z) metres: x across, y up from the floor, z depth"},
+    {"burst", {}, "a tube from each of the autopilot's pens at once, where they are now (a beat, with live audio)"},
+};
+
+constinit const SceneInfo kSceneInfo{"neon", "Neon", 3, &schema,
+    "Drag to draw a neon tube along the cursor's path; leave it alone and the autopilot plays.", kActions};
+
 }  // namespace vitrine::neon

@@ -3,6 +3,7 @@
 // (params/schema.h). Lengths are metres in front of a facade about 20 m wide.
 #include "scenes/quality.h"
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 
 #include <glm/vec3.hpp>
 
@@ -46,6 +47,8 @@ struct Settings {
 };
 
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 // What a quality tier costs beside its render scale: the chains the engine releases into (high: as set;
 // medium 3/4; low 1/2, never under the parameter's 16), which the chains and tubes passes step and

@@ -1,9 +1,6 @@
 #pragma once
 // How bright the neon tubes are and how wide they are drawn, in plain C++: the CPU picks the values,
 // shaders/neon/tube.vert and tube.frag use them (through NeonFrame).
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -43,14 +40,5 @@ inline float drawnTubeRadius(float radius, float depth, float frameHeight, float
 // from each release to the next, two steps every third, so consecutive releases never share a colour
 // and an autopilot whose pens take turns gives each pen every colour in turn. Mirrored by tube.vert.
 inline uint32_t tubeColour(uint32_t serial) { return (serial + serial / 3u) % 3u; }
-
-// Where tubes cross, their light adds; but pink + cyan + amber is white. The merge pass gives the
-// pixel the nearest tube's colour at the luminance of the sum: a single tube is unchanged, crossing
-// tubes stay saturated (one reads in front of the other) and the light still adds up. Mirrored by
-// shaders/neon/merge.comp.
-inline glm::vec3 nearestColourLight(glm::vec3 sum, glm::vec3 nearest) {
-  const glm::vec3 luminance{0.2126f, 0.7152f, 0.0722f};
-  return nearest * (glm::dot(sum, luminance) / std::max(glm::dot(nearest, luminance), 1e-4f));
-}
 
 }  // namespace vitrine::neon

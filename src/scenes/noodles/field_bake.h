@@ -39,14 +39,26 @@ inline constexpr uint32_t kBakeMostTexelsPerAxis = 1024;
 // texel: half the fetch traffic of half floats, which measured 0.3 ms of 10^8 steps on the H200).
 // Steps of 0.008, under 1 % of the flow's median speed (~1.1); the noise flows' components stay
 // within 4 (their largest speed over 200,000 random points was 3.6).
+// bake.comp writes the packed bits itself through a 32-bit unsigned view (bakedTexel), rounding to
+// nearest: Vulkan lets a driver convert a float to unorm by either neighbouring step, and a driver
+// that truncates biases the whole flow by half a step, which moves every strand of a baked nest.
 inline constexpr float kBakeRange = 4.0f;
 inline constexpr uint32_t kBakedTexelBytes = 4;  // RGB10A2
 
-// A flow component as the volume stores it, and back.
-inline float bakedComponent(float v) {
+// A flow component's 10-bit level: the nearest, a half step rounding up.
+inline uint32_t bakedLevel(float v) {
   const float unit = std::clamp(v / (2.0f * kBakeRange) + 0.5f, 0.0f, 1.0f);
-  return (std::round(unit * 1023.0f) / 1023.0f - 0.5f) * (2.0f * kBakeRange);
+  return uint32_t(std::floor(unit * 1023.0f + 0.5f));
 }
+
+// A texel as the volume's A2B10G10R10 words hold it: x in the low bits, alpha zero.
+inline uint32_t bakedTexel(glm::vec3 v) { return bakedLevel(v.x) | bakedLevel(v.y) << 10 | bakedLevel(v.z) << 20; }
+
+// A component as the sampler reads it back.
+inline float unbakedComponent(uint32_t level) { return (float(level) / 1023.0f - 0.5f) * (2.0f * kBakeRange); }
+
+// A flow component as the volume stores it, and back.
+inline float bakedComponent(float v) { return unbakedComponent(bakedLevel(v)); }
 
 struct FieldBake {
   glm::vec3 origin{0.0f};  // world position of texel (0, 0, 0)'s centre

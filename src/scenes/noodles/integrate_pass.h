@@ -15,6 +15,7 @@ struct BakedFlow {
 };
 
 inline constexpr VkFormat kBakedFlowFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;  // kBakeRange says why
+inline constexpr VkFormat kBakedFlowStorageFormat = VK_FORMAT_R32_UINT;           // bake.comp writes the bits
 
 class IntegratePass {
  public:

@@ -71,7 +71,7 @@ class NoodlesScene final : public Scene {
         const auto pass = frame.pass("noodles bake");
         gpu::Image& volume = frame.image(bakeVolume_);
         frame.transition(volume, gpu::use::ComputeWrite);
-        integrate_.recordBake(frame.cmd, strands, volume.view());
+        integrate_.recordBake(frame.cmd, strands, volume.storageView());
         frame.transition(volume, gpu::use::ComputeSample);
         baked = {volume.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp)};
       }
@@ -139,9 +139,11 @@ class NoodlesScene final : public Scene {
   void ensureBakeVolume(const FieldBake& bake) {
     const glm::uvec3 size = bake.baked() ? bake.texels : glm::uvec3(1);
     if (bakeDeclared_ == size) return;
-    const gpu::ImageDecl decl{"noodles baked flow", kBakedFlowFormat,
-                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                              gpu::ImageSize::absolute(size.x, size.y, size.z)};
+    const gpu::ImageDecl decl{.name = "noodles baked flow",
+                              .format = kBakedFlowFormat,
+                              .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                              .size = gpu::ImageSize::absolute(size.x, size.y, size.z),
+                              .storageFormat = kBakedFlowStorageFormat};
     if (bakeDeclared_ == glm::uvec3(0)) bakeVolume_ = resources_.declare(decl);
     else resources_.redeclare(bakeVolume_, decl);
     bakeDeclared_ = size;
@@ -223,7 +225,6 @@ void NoodlesScene::drawPanel() {
 
 }  // namespace
 
-constinit const SceneInfo kSceneInfo = sceneInfo<NoodlesScene>("noodles", "Curl-noise noodles", 5, &schema,
-    "Drag to orbit the camera.");
+std::unique_ptr<Scene> create(const SceneContext& context) { return std::make_unique<NoodlesScene>(context); }
 
 }  // namespace vitrine::noodles

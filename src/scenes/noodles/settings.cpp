@@ -155,4 +155,7 @@ const params::Schema& schema() {
   return table;
 }
 
+constinit const SceneInfo kSceneInfo{"noodles", "Curl-noise noodles", 5, &schema,
+    "Drag to orbit the camera."};
+
 }  // namespace vitrine::noodles

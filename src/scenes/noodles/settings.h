@@ -10,6 +10,7 @@
 #include "scenes/noodles/palette.h"
 
 #include "params/schema.h"
+#include "scenes/catalogue.h"
 
 #include <glm/vec3.hpp>
 
@@ -56,6 +57,8 @@ struct NoodleSettings {
 
 // Every parameter of the scene, declared once (see params/schema.h).
 const params::Schema& schema();
+// What the scene is by name: its title, key, help line and actions, with the schema above.
+extern const SceneInfo kSceneInfo;
 
 // "16" (a cube), "64x64" (a sheet) or "32x32x8".
 bool parseGrid(std::string_view text, glm::uvec3& grid, std::string* error);

@@ -1,12 +1,12 @@
-#include "host/stop_signal.h"
+#include "core/stop_signal.h"
+
+#include "core/error.h"
 
 #include <fmt/format.h>
 
 #include <csignal>
 
-#include "core/error.h"
-
-namespace vitrine::host {
+namespace vitrine {
 namespace {
 
 volatile std::sig_atomic_t caught = 0;  // the signal's number, 0 until one comes
@@ -24,10 +24,10 @@ StopOnSignal::~StopOnSignal() {
   std::signal(SIGTERM, previousTerm_ == SIG_ERR ? SIG_DFL : previousTerm_);
 }
 
-bool StopOnSignal::requested() const { return caught != 0; }
+bool StopOnSignal::requested() { return caught != 0; }
 
-void StopOnSignal::check(std::string_view what) const {
+void StopOnSignal::check(std::string_view what) {
   if (caught != 0) throw Error(fmt::format("Interrupted by {}: {}", caught == SIGINT ? "SIGINT" : "SIGTERM", what));
 }
 
-}  // namespace vitrine::host
+}  // namespace vitrine

@@ -1,7 +1,7 @@
-// sceneSchemas() is the registry's list without the GPU code; the two lists must not drift apart, or
-// a new scene's parameters would escape the fuzz targets that read values through sceneSchemas().
+// The scene catalogue (scenes/catalogue.h) and the factories (scenes/scene.h): two tables generated from
+// one list, which must name the same scenes, so every scene a name reaches can be made.
+#include "scenes/catalogue.h"
 #include "scenes/scene.h"
-#include "scenes/schemas.h"
 #include "params/listing.h"
 
 #include <gtest/gtest.h>
@@ -9,19 +9,27 @@
 namespace vitrine {
 namespace {
 
-TEST(SceneSchemas, SameScenesAndSchemasAsTheRegistry) {
+TEST(SceneCatalogue, EverySceneHasAFactoryAndEveryFactoryAScene) {
   const auto registry = sceneRegistry();
-  const auto schemas = sceneSchemas();
-  ASSERT_EQ(schemas.size(), registry.size());
+  const auto factories = sceneFactories();
+  ASSERT_EQ(factories.size(), registry.size());
   for (size_t i = 0; i < registry.size(); ++i) {
-    EXPECT_EQ(schemas[i].name, registry[i].name) << i;
-    EXPECT_EQ(schemas[i].schema, registry[i].schema) << registry[i].name;
+    EXPECT_EQ(factories[i].name, registry[i].name) << i;
+    EXPECT_NE(sceneFactory(registry[i]), nullptr) << registry[i].name;
   }
+  const SceneInfo stranger{"stranger", "Stranger", 9, registry[0].schema, ""};
+  EXPECT_EQ(sceneFactory(stranger), nullptr);
+}
+
+TEST(SceneCatalogue, FindsSchemasByName) {
+  for (const SceneInfo& scene : sceneRegistry()) EXPECT_EQ(findSchema(scene.name), &scene.schema()) << scene.name;
+  EXPECT_EQ(findSchema("nope"), nullptr);
+  EXPECT_EQ(findSchema(""), nullptr);
 }
 
 // --list-params reads on a terminal: no line past 160 characters, however long a choice list or a
 // help text, and nothing cut away (every choice's name is still there).
-TEST(SceneSchemas, ListingsFitATerminal) {
+TEST(SceneCatalogue, ListingsFitATerminal) {
   for (const SceneInfo& scene : sceneRegistry()) {
     const std::string text = params::describeSchema(scene.name, scene.schema());
     size_t start = 0, widest = 0;
