@@ -115,6 +115,15 @@ add_custom_target(vitrine_changelog ALL DEPENDS ${changelog})
 install(FILES ${changelog} DESTINATION ${doc})
 install(FILES packaging/lintian-overrides DESTINATION ${CMAKE_INSTALL_DATADIR}/lintian/overrides RENAME vitrine)
 
+# Everything the install rules copy that a build makes, so scripts/package builds no more than that.
+add_custom_target(vitrine_installed)
+add_dependencies(vitrine_installed vitrine vitrine_changelog)
+foreach(made vitrine_icons vitrine_docs vitrine_man_page_gz)
+  if(TARGET ${made})
+    add_dependencies(vitrine_installed ${made})
+  endif()
+endforeach()
+
 # --- The Debian package: `cpack -G DEB` in the build folder (scripts/package runs it and lintian).
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME vitrine)
