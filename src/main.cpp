@@ -7,7 +7,7 @@
 #include "gpu/device.h"
 #include "host/modes.h"
 #include "host/user_presets.h"
-#include "host/window.h"
+#include "host/present/window.h"
 #include "scenes/catalogue.h"
 
 #include <algorithm>

@@ -74,7 +74,7 @@ struct Options {
   // The gallery for installations.
   bool kiosk = false;                // --kiosk: fullscreen, no UI, cycling through the scenes
   double dwell = 45.0;               // --dwell SECONDS: how long each scene shows in kiosk mode
-  std::string playlist;              // --playlist FILE: the kiosk shows its entries instead (host/playlist.h)
+  std::string playlist;              // --playlist FILE: the kiosk shows its entries instead (host/gallery/playlist.h)
   bool remote = false;               // --remote: OSC and the web control page (gallery and headless)
   std::string remoteBind = "127.0.0.1:8730";  // --remote-bind ADDR:PORT
   std::vector<std::string> remoteAllow;  // --remote-allow CIDR (repeatable): OSC senders needing no token

@@ -9,7 +9,7 @@
 //                     its strands in chunks, as 10^7 segments need on a device with 128 MiB)
 //   shm-bytes:B       the system grants shared-memory segments of at most B bytes (as a small
 //                     kernel.shmmax would): a software device's window bigger than that is drawn
-//                     through Vulkan's swapchain instead (host/shm_presenter.h)
+//                     through Vulkan's swapchain instead (host/present/shm_presenter.h)
 //   dirty-memory:1    every device allocation the host can map starts filled with garbage (every byte
 //                     0x3f: 0.75 in a float, 1.8 in a half float), as a GPU's recycled memory may, where
 //                     lavapipe's starts zeroed: a frame that reads memory nothing wrote shows it

@@ -8,7 +8,7 @@
 //    "outputs": {"main": {"corners": [[0.02, 0], [1, 0.04], [0.97, 1], [0, 0.96]]}, "HDMI-1": {"turn": 180}}}
 //
 // Mappings (live/mapping.h) are kept here as their lines of text, and each output's warp (projector
-// setup's corner pin, its turn, region and soft edges; host/output_warp_file.h) as its JSON object;
+// setup's corner pin, its turn, region and soft edges; host/present/output_warp_file.h) as its JSON object;
 // whoever applies them checks them, as values are checked by their parse.
 //
 // Values are typed by kind (Float/Int: numbers, Bool: true/false, Choice/Custom: strings) and every

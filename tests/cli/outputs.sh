@@ -11,7 +11,7 @@
 # the whole desktop shows the same frame, and so does a window grown past the shared memory the system
 # grants. --list-monitors lists the display's monitor, and a monitor that is not there, a bad outputs file
 # or a window larger than the device draws, is refused. On lavapipe the windows are drawn through X shared memory
-# (src/host/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
+# (src/host/present/shm_presenter.h); the spanning window goes through Vulkan's swapchain (VITRINE_PRESENT=
 # swapchain), so both paths are held to the headless frame.
 set -u
 vitrine=$1; out=$2

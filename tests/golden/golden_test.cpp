@@ -4,7 +4,7 @@
 // (scripts/update-goldens), and only that.
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "support/gpu_test.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // pictures (the hue, saturation and value of the crystal's centre as a viewer sees it, in sRGB), what
 // reduced motion holds still, and a low quality tier that keeps the crystal's edges.
 #include "host/input_script.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "image/image.h"
 #include "support/gpu_test.h"
 #include "support/images.h"
@@ -184,7 +184,7 @@ TEST_F(BloomScene, ChromaFadesWithTheVent) {
   EXPECT_EQ(ink(), 0) << "gone once the crystal has left crimson";
 }
 
-// A slow frame is followed by every step it stood for (host/fixed_step.h), and the lattice runs them
+// A slow frame is followed by every step it stood for (host/gallery/fixed_step.h), and the lattice runs them
 // all: one frame after 30 steps shows the crystal as 30 frames of venting do, not as the 4 steps the
 // old cap let through (the vapour crawled at a quarter speed at 15 fps and below).
 TEST_F(BloomScene, ASlowFrameRunsEveryStepItStoodFor) {

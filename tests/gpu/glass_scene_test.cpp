@@ -1,7 +1,7 @@
 // The glass scene as a whole, rendered headless: the physics it promises, measured on its pictures.
 #include "core/error.h"
 #include "host/input_script.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "support/gpu_test.h"
 
 #include <algorithm>

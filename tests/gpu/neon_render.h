@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "host/input_script.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "image/image.h"
 
 namespace vitrine::test::neon_frames {

@@ -3,7 +3,7 @@
 // the flow's bake (bake.comp, integrate_baked.comp) against theirs (bakeField, strandVelocity); and
 // the raster's walk over a chunk's strands (raster_push.glsl) against strand_walk.h.
 #include "gpu/barriers.h"
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "gpu/resources.h"
 #include "scenes/noodles/integrate_pass.h"
 #include "scenes/noodles/raster_pass.h"

@@ -1,6 +1,6 @@
 // Quality tiers trade pixels and steps for time, never the picture: each scene's low tier, rendered
 // at the same output size as its high tier, shows the same light in the same places.
-#include "host/offscreen.h"
+#include "host/offline/offscreen.h"
 #include "support/gpu_test.h"
 #include "support/images.h"
 

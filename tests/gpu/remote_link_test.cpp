@@ -4,6 +4,7 @@
 // while kifs shows, then switch to noodles).
 #include "core/assets.h"
 #include "host/remote_link.h"
+#include "host/gallery/remote_session.h"
 #include "host/scene_renderer.h"
 #include "support/gpu_test.h"
 
@@ -94,6 +95,29 @@ TEST_F(RemoteLinkTest, AWaitingValueThatWouldFreezeTheWindowIsRefusedWhenItsScen
   EXPECT_EQ(valueOf(renderer, "grid"), before);
   EXPECT_EQ(valueOf(renderer, "msaa"), "off");
   EXPECT_EQ(link.waiting(), 0u);
+}
+
+// The gallery's session over the link: a live value and a waiting one, once its scene's frames are timed,
+// become clients' keys of their scenes (kept out of the settings file), until the user sets them.
+TEST_F(RemoteLinkTest, TheSessionKnowsWhichValuesAClientSet) {
+  host::RemoteSession session;
+  session.listen("127.0.0.1:0", {}, nullptr);
+  renderer.setScene(*findScene("kifs"));
+  sendFrom("127.0.0.1", session.port(), oscString("/vitrine/noodles/msaa", "off"));  // first: waiting once step is in
+  sendFrom("127.0.0.1", session.port(), oscString("/vitrine/kifs/step", "3"));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (valueOf(renderer, "step") != "3" && std::chrono::steady_clock::now() < deadline) {
+    session.apply(renderer, 0.0, 16.0, std::nullopt);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  EXPECT_EQ(valueOf(renderer, "step"), "3");
+  EXPECT_EQ(session.notTheUsers("kifs"), std::set<std::string>{"step"});
+  renderer.setScene(*findScene("noodles"));
+  EXPECT_TRUE(session.apply(renderer, 0.0, 16.0, std::nullopt).values.empty()) << "its frames are not timed yet";
+  EXPECT_EQ(session.apply(renderer, 0.0, 16.0, 16.0).values, (params::KeyValues{{"msaa", "off"}}));
+  EXPECT_EQ(session.notTheUsers("noodles"), std::set<std::string>{"msaa"});
+  session.userSet("kifs", host::PanelEdit{host::PanelEdit::What::Values, {{"step", "5"}}, {}, {}});
+  EXPECT_EQ(session.notTheUsers("kifs"), std::set<std::string>{});
 }
 
 }  // namespace

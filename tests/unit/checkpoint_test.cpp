@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "frame/state_archive.h"
-#include "host/checkpoint.h"
+#include "host/offline/checkpoint.h"
 #include "support/temp_folder.h"
 
 namespace vitrine {

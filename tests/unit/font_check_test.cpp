@@ -1,4 +1,4 @@
-#include "host/font_check.h"
+#include "host/ui/font_check.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "host/cursor_tracker.h"
-#include "host/fixed_step.h"
-#include "host/menu.h"
-#include "host/shown_time.h"
+#include "host/gallery/fixed_step.h"
+#include "host/ui/menu.h"
+#include "host/gallery/shown_time.h"
 #include "scenes/scene.h"
 
 namespace vitrine::host {

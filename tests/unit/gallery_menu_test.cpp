@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "host/menu.h"
-#include "host/param_panel.h"
+#include "host/ui/menu.h"
+#include "host/ui/param_panel.h"
 #include "host/plural.h"
-#include "host/tier_watch.h"
+#include "host/gallery/tier_watch.h"
 #include "scenes/scene.h"
 
 namespace vitrine::host {

@@ -1,6 +1,6 @@
 // The gallery's per-scene values across a session and the settings file behind them, and every
 // registered scene's parameter declarations.
-#include "host/gallery_settings.h"
+#include "host/gallery/gallery_settings.h"
 #include "scenes/scene.h"
 #include "support/files.h"
 #include "support/temp_folder.h"

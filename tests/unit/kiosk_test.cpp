@@ -1,7 +1,7 @@
 // Kiosk mode's timetable: dwell, cross-fade, a touch holding the scene, idle resumption, failures.
 #include <gtest/gtest.h>
 
-#include "host/kiosk.h"
+#include "host/gallery/kiosk.h"
 
 namespace vitrine::host {
 namespace {

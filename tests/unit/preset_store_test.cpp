@@ -1,7 +1,8 @@
 // The user's presets: saved, read back, renamed, deleted, exported and imported, every value checked as
 // the settings file checks it, and every refusal with a reason naming the file or the name.
-#include "host/param_panel.h"
-#include "host/playlist.h"
+#include "host/gallery/gallery_settings.h"
+#include "host/ui/param_panel.h"
+#include "host/gallery/playlist.h"
 #include "params/preset_store.h"
 #include "scenes/catalogue.h"
 #include "support/temp_folder.h"

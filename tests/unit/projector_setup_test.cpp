@@ -4,7 +4,7 @@
 
 #include <GLFW/glfw3.h>
 
-#include "host/projector_setup.h"
+#include "host/present/projector_setup.h"
 
 namespace vitrine::host {
 namespace {

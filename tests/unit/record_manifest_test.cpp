@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "host/record_manifest.h"
+#include "host/offline/record_manifest.h"
 #include "support/temp_folder.h"
 
 namespace vitrine::host {

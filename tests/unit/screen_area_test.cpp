@@ -1,4 +1,4 @@
-#include "host/screen_area.h"
+#include "host/present/screen_area.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,131 @@
+#include "core/resident_memory.h"
+#include "gpu/check.h"
+#include "gpu/memory_ledger.h"
+#include "image/image_io.h"
+#include "image/image_compare.h"
+#include "audio/engine.h"
+#include "audio/wav.h"
+#include "host/user_presets.h"
+#include "host/event_log.h"
+#include "host/input_script.h"
+#include "host/live_link.h"
+#include "host/modes.h"
+#include "host/offline/offscreen.h"
+#include "host/present/output_warp_file.h"
+#include "host/scene_renderer.h"
+#include "core/output_path.h"
+#include "core/stop_signal.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <thread>
+
+#include "host/remote_link.h"
+#include <fmt/format.h>
+
+namespace vitrine::host {
+
+int runHeadless(const Options& options) {
+  const std::filesystem::path out = options.out;
+  checkWritable(out);
+  gpu::Instance instance({options.validation, {}});
+  gpu::Device device(instance, {options.device});
+  OffscreenConfig config{options.scene, options.size.value_or(VkExtent2D{320, 180}), options.time, options.seed,
+                         options.reducedMotion, presetsFor(options, options.scene, true),
+                         parametersFor(options, options.scene, true)};
+  config.flashGuard = flashGuardOn(options);
+  config.presetFiles = presetFilesFor(options, options.scene);
+  if (!options.input.empty()) config.input = loadInputScript(options.input);
+  if (!options.outputWarp.empty()) {
+    config.warp = readOutputWarp(options.outputWarp);
+    checkWarpedFrame(device, config.size, *config.warp, options.outputWarp);
+  }
+  std::optional<JsonLinesEventLog> events;
+  if (!options.events.empty()) config.events = &events.emplace(options.events);
+  const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
+  config.live = live.get();
+  std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
+  if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
+  ImageRgba image;
+  uint32_t rendered = 0;  // fewer than --frames when SIGTERM ends a --remote run early
+  std::optional<StopOnSignal> stop;  // a --remote run's, caught until the run has written its last frame
+  {
+    Offscreen offscreen(device, config);
+    std::optional<RemoteLink> remote;
+    std::optional<params::PresetStore> presets;  // a client may save, apply and delete presets
+    if (options.remote) {
+      // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
+      // SIGTERM ends the run early (the last frame is still written).
+      remote.emplace(options.remoteBind, options.remoteAllow);
+      remote->setPresets(&presets.emplace(openUserPresets()));
+      if (live) remote->setMappings(live->mappingLines());
+      stop.emplace();
+    }
+    auto due = std::chrono::steady_clock::now();
+    // Device memory after the first fifth of the frames (the soak's warm-up) and at the end; resident
+    // memory then and at twenty frames spread over the rest, for its peak: by frames, not seconds, so
+    // that 10,000 frames that end within a second on a fast GPU are measured as well as slow ones.
+    const uint32_t warmFrames = std::max(options.frames / 5, 1u);
+    const uint32_t residentEvery = std::max((options.frames - std::min(options.frames, warmFrames)) / 20, 1u);
+    gpu::MemoryTally warm;
+    std::optional<uint64_t> residentWarm, residentPeak;
+    for (; rendered < options.frames && (rendered == 0 || !StopOnSignal::requested()); ++rendered) {  // one frame at least
+      const uint32_t k = rendered;
+      if (k == warmFrames) warm = gpu::liveDeviceMemory(), residentWarm = residentBytes();
+      if (k >= warmFrames && (k - warmFrames) % residentEvery == 0)
+        if (const auto now = residentBytes()) residentPeak = std::max(residentPeak.value_or(0), *now);
+      if (remote) {
+        RemoteApplied applied = remote->apply(offscreen.renderer(), config.events, offscreen.time());
+        if (live) for (const auto& [source, value] : applied.sources) live->sources().set(source, value);
+        offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
+        remote->publish(offscreen.renderer());
+        std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
+      }
+      offscreen.renderFrame();
+    }
+    image = offscreen.readback();
+    if (!options.savePreset.empty()) saveRunPreset(options, offscreen.parameters());  // the values it ended with
+    const gpu::MemoryTally end = gpu::liveDeviceMemory();
+    if (rendered > warmFrames)
+      std::printf("device memory: %llu allocations, %.1f MiB after frame %u; %llu allocations, %.1f MiB at the end\n",
+                  static_cast<unsigned long long>(warm.allocations), double(warm.bytes) / 1048576.0, warmFrames,
+                  static_cast<unsigned long long>(end.allocations), double(end.bytes) / 1048576.0);
+    if (const auto residentEnd = residentBytes(); residentWarm && residentEnd && rendered > warmFrames)
+      std::printf("resident memory: %.1f MiB after frame %u, peak %.1f MiB, %.1f MiB at the end\n",
+                  double(*residentWarm) / 1048576.0, warmFrames,
+                  double(std::max(residentPeak.value_or(0), *residentEnd)) / 1048576.0, double(*residentEnd) / 1048576.0);
+    if (!offscreen.inputFinished())
+      std::fprintf(stderr, "vitrine: %s has events after the last frame (t=%.3f s); they were not played\n",
+                   options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);
+  }
+  writeImage(out, image);
+  if (events) events->close();
+  if (sound) audio::writeWav(options.audioOut, sound->render(double(rendered) / 60.0));
+  std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
+              image.height, options.scene.c_str(), rendered, options.time, options.seed,
+              device.properties().deviceName);
+  if (rendered < options.frames)
+    std::printf("stopped after %u of the %u frames asked for\n", rendered, options.frames);
+  if (instance.validationMessages() > 0) {
+    std::fprintf(stderr, "%d validation messages: failing.\n", instance.validationMessages());
+    return 3;
+  }
+  return 0;
+}
+
+int runCompare(const Options& options) {
+  const ImageRgba reference = readImage(options.compare[0]);
+  const ImageRgba candidate = readImage(options.compare[1]);
+  const CompareResult result = compareImages(reference, candidate, options.compareThresholds);
+  if (!result.sizeMatches) {  // readImage read both, so both are EXRs
+    std::fprintf(stderr, "%s (reference %s and candidate %s, both EXR)\n", result.summary().c_str(),
+                 options.compare[0].c_str(), options.compare[1].c_str());
+    return 2;
+  }
+  std::fprintf(result.passed ? stdout : stderr, "%s\n", result.summary().c_str());  // a failure is a diagnostic
+  return result.passed ? 0 : 2;
+}
+
+}  // namespace vitrine::host
