@@ -2,6 +2,7 @@
 // here as one sentence on stderr and a non-zero exit.
 #include "app/help.h"
 #include "app/options.h"
+#include "core/version.h"
 #include "gpu/check.h"
 #include "gpu/device.h"
 #include "host/modes.h"
@@ -20,7 +21,10 @@ int main(int argc, char** argv) {
       case Mode::Help: std::fputs(help::usage().c_str(), stdout); return 0;
       case Mode::HelpMan: std::fputs(help::manPage().c_str(), stdout); return 0;
       case Mode::HelpCompletion: std::fputs(help::bashCompletion().c_str(), stdout); return 0;
-      case Mode::Version: std::printf("vitrine 0.1.0\n"); return 0;
+      case Mode::Version:
+        std::printf("vitrine %.*s (commit %.*s)\n", int(versionNumber().size()), versionNumber().data(),
+                    int(buildCommit().size()), buildCommit().data());
+        return 0;
       case Mode::ListScenes: {
         int width = 0;  // the longest name: the titles line up after it
         for (const auto& info : sceneRegistry()) width = std::max(width, int(info.name.size()));

@@ -14,6 +14,11 @@ constexpr uintmax_t kMaxAssetFileBytes = uintmax_t(1) << 30;
 
 Assets Assets::locate() {
   if (const char* env = std::getenv("VITRINE_ASSETS"); env && *env) return Assets(env);
+  // An installed binary (/usr/bin/vitrine, /usr/local/bin/vitrine) finds its data in ../share/vitrine,
+  // wherever the prefix is; a build in a checkout has no such folder and reads the checkout's cache.
+  std::error_code ec;
+  const auto installed = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "share" / "vitrine";
+  if (!ec && std::filesystem::is_directory(installed, ec)) return Assets(installed);
   return Assets(std::filesystem::path(VITRINE_ASSET_DIR) / "cache");
 }
 

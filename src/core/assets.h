@@ -22,7 +22,7 @@ std::vector<std::filesystem::path> filesIn(const std::filesystem::path& folder,
 
 class Assets {
  public:
-  // VITRINE_ASSETS overrides the folder; otherwise the checkout's assets/cache.
+  // VITRINE_ASSETS overrides the folder; otherwise an installed binary's ../share/vitrine, else the checkout's assets/cache.
   static Assets locate();
   explicit Assets(std::filesystem::path root);
 

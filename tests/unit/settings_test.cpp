@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "params/settings_file.h"
 #include "support/files.h"
+#include "support/scoped_env.h"
 
 #include <gtest/gtest.h>
 
@@ -407,27 +408,7 @@ TEST_F(SettingsFile, SaveFailsWithAnErrorWhereNoFolderCanBeMade) {
   EXPECT_THROW(saveSettings(dir_ / "file" / "settings.json", Settings{}, schemaFor), Error);
 }
 
-// Sets an environment variable for one scope and puts the old value back.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value)
-      setenv(name, value, 1);
-    else
-      unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      setenv(name_, old_->c_str(), 1);
-    else
-      unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using test::ScopedEnv;
 
 TEST(SettingsPath, FollowsTheXdgRules) {
   {

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/stop_signal.h"
+#include "core/user_dirs.h"
 #include "gpu/check.h"
 #include "host/gallery/gallery_app.h"
 #include "host/present/output_warp_file.h"
@@ -69,8 +70,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
                options.kiosk || settings_.path().empty() ? std::filesystem::path()
                                                          : settings_.path().parent_path() / "gallery-menu.ini",
                options.resetSettings),
-      screenshots_(device_, kFramesInFlight, "screenshots"),
-      capture_(device_, kFramesInFlight, "captures"),
+      screenshots_(device_, kFramesInFlight, vitrineUserDir(UserDir::Pictures)),
+      capture_(device_, kFramesInFlight, vitrineUserDir(UserDir::Videos)),
       outputs_(settings_,
                [this](VkExtent2D extent, const maths::OutputWarp& warp, std::string_view where) {
                  checkWarpedFrame(device_, extent, warp, where);
