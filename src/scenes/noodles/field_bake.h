@@ -1,7 +1,7 @@
 #pragma once
-// The flow baked into a volume once a frame, which the integrate pass samples with trilinear
-// filtering instead of evaluating the noise. A step of the exact field costs three gradient noises
-// (24 hashed lattice corners, ~1,400 instructions); a filtered fetch costs one texture operation. With
+// The flow baked into a volume once a frame, which the integrate pass samples trilinearly instead of
+// evaluating the noise. A step of the exact field costs three gradient noises (24 hashed lattice
+// corners, ~1,400 instructions); a trilinear sample costs eight independent texel fetches. With
 // 10^8 segments the noise is the whole of the integrate pass's time, and the bake (one exact
 // evaluation a texel) is a small fraction of it, so large nests bake and small ones stay exact.
 //
@@ -100,8 +100,10 @@ inline bool insideBake(const FieldBake& bake, glm::vec3 p) {
          glm::all(glm::lessThanEqual(u, glm::vec3(bake.texels - 1u)));
 }
 
-// The trilinear sample at p (insideBake(p) must hold) of `texels`, x fastest, as a GPU's linear
-// filter takes it (up to its sub-texel weight precision).
+// The trilinear sample at p (insideBake(p) must hold) of `texels`, x fastest, with float weights, as
+// integrate_baked.comp takes it. Not a sampler's linear filter: its weights have the device's
+// sub-texel precision (8 bits on NVIDIA, float on lavapipe, 4 allowed), and a strand integrated
+// through a hundred samples then lands a pixel apart from one driver to the next.
 inline glm::vec3 sampleBake(const FieldBake& bake, std::span<const glm::vec3> texels, glm::vec3 p) {
   const glm::vec3 u = bakeCoordinates(bake, p);
   const glm::uvec3 last = bake.texels - 1u;

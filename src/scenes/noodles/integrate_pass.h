@@ -8,7 +8,7 @@
 
 namespace vitrine::noodles {
 
-// The baked flow as integrate_baked.comp samples it (linear filter, clamped).
+// The baked flow as integrate_baked.comp reads it: texel by texel, weighed in the shader (sampleBake).
 struct BakedFlow {
   VkImageView view = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;

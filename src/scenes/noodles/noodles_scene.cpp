@@ -73,7 +73,7 @@ class NoodlesScene final : public Scene {
         frame.transition(volume, gpu::use::ComputeWrite);
         integrate_.recordBake(frame.cmd, strands, volume.storageView());
         frame.transition(volume, gpu::use::ComputeSample);
-        baked = {volume.view(), device_.sampler(gpu::Device::Filter::Linear, gpu::Device::Address::Clamp)};
+        baked = {volume.view(), device_.sampler(gpu::Device::Filter::Nearest, gpu::Device::Address::Clamp)};
       }
       const auto pass = frame.pass("noodles integrate");
       frame.transition(nodes, gpu::use::ComputeWriteBuffer);
