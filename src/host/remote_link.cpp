@@ -20,6 +20,35 @@ constexpr auto kPublishInterval = std::chrono::milliseconds(100);
 constexpr auto kTouchHold = std::chrono::seconds(2);
 constexpr size_t kRefusalsLogged = 20;  // then every hundredth: a broken client cannot flood the console
 
+// The page's address this process gave last, for a bind asked for again: a kiosk that starts a fresh
+// gallery after a lost device keeps the same token and, where the bind let the system choose (:0), the
+// same port, so phones reconnect by themselves. Should that port have been taken meanwhile, the
+// system chooses again.
+struct GivenAddress {
+  std::string bind, token;
+  uint16_t port = 0;
+};
+GivenAddress& lastGiven() {
+  static GivenAddress given;
+  return given;
+}
+
+remote::RemoteControl open(remote::RemoteConfig config, const std::string& bind) {
+  const GivenAddress& last = lastGiven();
+  const bool again = last.bind == bind;
+  if (again) config.token = last.token;
+  if (again && config.bind.port == 0 && last.port != 0) {
+    remote::RemoteConfig same = config;
+    same.bind.port = last.port;
+    try {
+      return remote::RemoteControl(std::move(same));
+    } catch (const std::exception&) {
+      // taken: the system chooses another below
+    }
+  }
+  return remote::RemoteControl(std::move(config));
+}
+
 remote::RemoteControl listen(const std::string& bind, const std::vector<std::string>& allow) {
   remote::RemoteConfig config;
   for (const std::string& network : allow) {
@@ -31,7 +60,7 @@ remote::RemoteControl listen(const std::string& bind, const std::vector<std::str
   }
   try {
     config.bind = remote::parseBind(bind);
-    return remote::RemoteControl(std::move(config));
+    return open(std::move(config), bind);
   } catch (const std::exception& e) {
     throw Error(fmt::format("--remote-bind {}: {}", bind, e.what()));
   }
@@ -45,10 +74,28 @@ std::string judge(SceneRenderer& renderer, const std::pair<std::string, std::str
   return refused;
 }
 
+// Whether a command is a person playing the scene on screen (the kiosk then holds it): a scene
+// switch, a touch, or a value, action or preset for the scene showing. Not a modulation source (a
+// lighting desk or a sequencer streams those all night), a value waiting for a hidden scene, or a
+// preset saved or deleted.
+bool playsTheShowingScene(const remote::RemoteCommand& command, std::string_view showing) {
+  using Kind = remote::RemoteCommand::Kind;
+  switch (command.kind) {
+    case Kind::Scene:
+    case Kind::Pointer: return true;
+    case Kind::Set:
+    case Kind::Action: return command.scene == showing;
+    case Kind::Preset: return command.scene == showing && command.key != "save" && command.key != "delete";
+    case Kind::Modulation: return false;
+  }
+  return false;
+}
+
 }  // namespace
 
 RemoteLink::RemoteLink(const std::string& bind, const std::vector<std::string>& allow)
     : control_(listen(bind, allow)) {
+  lastGiven() = {bind, control_.token(), control_.port()};
   std::printf("vitrine: remote control on %s (OSC over UDP, this page over HTTP):\n  %s\n",
               remote::formatBind(control_.bind()).c_str(), control_.pageUrl().c_str());
   std::fflush(stdout);
@@ -58,7 +105,6 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
   RemoteApplied applied;
   const std::string_view showing = renderer.info().name;
   for (remote::RemoteCommand& command : control_.drain()) {
-    applied.touched = true;
     std::string refused;
     switch (command.kind) {
       case remote::RemoteCommand::Kind::Scene:
@@ -97,7 +143,10 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
         lastTouch_ = Clock::now();
         break;
     }
-    if (refused.empty()) continue;
+    if (refused.empty()) {
+      applied.touched = applied.touched || playsTheShowingScene(command, showing);
+      continue;
+    }
     control_.tell(command.client, refused);
     ++refused_;
     logRefusal(command.client, refused);

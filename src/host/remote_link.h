@@ -23,7 +23,7 @@ struct RemoteApplied {
   const SceneInfo* scene = nullptr;      // a client chose this scene
   std::vector<ActionCall> actions;       // for the scene showing, in order
   params::KeyValues values;              // applied to the scene showing (for the settings' bookkeeping)
-  bool touched = false;                  // anything at all arrived (kiosk mode: a person is playing)
+  bool touched = false;                  // a person played the scene showing (kiosk mode holds it)
   std::vector<std::pair<std::string, float>> sources;  // live input: osc.NAME values (/vitrine/mod/NAME)
 };
 
@@ -45,6 +45,7 @@ class RemoteLink {
   params::KeyValues applyWaiting(SceneRenderer& renderer, double frameMs);
   size_t waiting() const { return waiting_.size(); }  // values waiting for their scene, for tests
   uint16_t port() const { return control_.port(); }
+  std::string pageUrl() const { return control_.pageUrl(); }
   // The phone's touch as a pointer over an output of `framebuffer` pixels, while a phone drives it.
   std::optional<Pointer> pointer(VkExtent2D framebuffer);
   // Tells every page what the scene showing is and its values (a few times a second at most).

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # gallery_remote.sh VITRINE OUTDIR: the gallery on a virtual display driven by an OSC client.
 # - With --remote-saves a value the client set is in the settings file however the gallery ends, with no
-#   scene switch before: Esc (a key sent through XTEST) and SIGTERM (a service manager) alike. Without
-#   --remote-saves it is not kept.
+#   scene switch before: Esc (a key sent through XTEST) and SIGTERM (a service manager) alike, and in a
+#   kiosk playing a playlist too. Without --remote-saves it is not kept.
 # - The freeze guard judges a value sent for a hidden scene by that scene's own frame time: noodles.grid
 #   sent while kifs shows is refused when noodles opens with about the seconds a frame that the same value
 #   sent while noodles shows is refused with (judged by the time of the scene showing, the first is off by
@@ -52,7 +52,8 @@ stop() {
 }
 step_of() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["scenes"]["kifs"].get("step", "none"))' "$1" 2>/dev/null || echo "no file"; }
 
-for run in esc:--remote-saves term:--remote-saves unsaved:; do
+printf 'kifs 60\nnoodles 60\n' >"$out/playlist.txt"
+for run in esc:--remote-saves term:--remote-saves "playlist:--remote-saves --kiosk --playlist $out/playlist.txt" unsaved:; do
   name=${run%%:*}; flag=${run#*:}
   start "$name" $flag
   osc /vitrine/kifs/step i 4

@@ -15,20 +15,29 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <string>
 #include <thread>
 
 namespace vitrine::test {
 namespace {
 
-// An OSC message with one string argument, as the spec frames it (NUL-padded to four bytes).
-std::string oscString(const std::string& path, const std::string& value) {
-  const auto padded = [](std::string text) {
-    text.push_back('\0');
-    while (text.size() % 4) text.push_back('\0');
-    return text;
-  };
-  return padded(path) + padded(",s") + padded(value);
+// An OSC string, NUL-padded to four bytes as the spec frames it.
+std::string padded(std::string text) {
+  text.push_back('\0');
+  while (text.size() % 4) text.push_back('\0');
+  return text;
+}
+
+// An OSC message with one string argument.
+std::string oscString(const std::string& path, const std::string& value) { return padded(path) + padded(",s") + padded(value); }
+
+// An OSC message with one float argument (big-endian).
+std::string oscFloat(const std::string& path, float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  bits = htonl(bits);
+  return padded(path) + padded(",f") + std::string(reinterpret_cast<const char*>(&bits), 4);
 }
 
 // Sends `datagram` from the loopback address `from` to 127.0.0.1:port.
@@ -95,6 +104,45 @@ TEST_F(RemoteLinkTest, AWaitingValueThatWouldFreezeTheWindowIsRefusedWhenItsScen
   EXPECT_EQ(valueOf(renderer, "grid"), before);
   EXPECT_EQ(valueOf(renderer, "msaa"), "off");
   EXPECT_EQ(link.waiting(), 0u);
+}
+
+// The kiosk holds a scene while a person plays it, not while a lighting desk streams modulation
+// values, a client sets values for a hidden scene or saves presets.
+TEST_F(RemoteLinkTest, OnlyPlayingTheSceneShowingCountsAsATouch) {
+  renderer.setScene(*findScene("kifs"));
+  const auto drain = [&] {  // whether what arrived within 300 ms touched the scene
+    bool touched = false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
+    while (std::chrono::steady_clock::now() < deadline) {
+      touched = link.apply(renderer, nullptr, 0.0, 16.0).touched || touched;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return touched;
+  };
+  sendFrom("127.0.0.1", link.port(), oscFloat("/vitrine/mod/fader", 0.5f));
+  EXPECT_FALSE(drain()) << "a modulation source";
+  sendFrom("127.0.0.1", link.port(), oscString("/vitrine/noodles/msaa", "off"));
+  EXPECT_FALSE(drain()) << "a value for a hidden scene";
+  sendFrom("127.0.0.1", link.port(), oscString("/vitrine/kifs/step", "4"));
+  EXPECT_TRUE(drain()) << "a value for the scene showing";
+}
+
+// A kiosk starting a fresh gallery in the process (after a lost device) opens the remote again: the
+// page's address stays, token and the port the system chose, so a phone reconnects by itself.
+TEST_F(RemoteLinkTest, ARemoteOpenedAgainKeepsItsTokenAndPort) {
+  std::string first;
+  uint16_t port = 0;
+  {
+    host::RemoteLink a("127.0.0.1:0");
+    port = a.port();
+    first = a.pageUrl();
+  }
+  host::RemoteLink b("127.0.0.1:0");
+  EXPECT_EQ(b.port(), port);
+  EXPECT_EQ(b.pageUrl(), first);
+  host::RemoteLink c("127.0.0.1:0");  // while b holds the port: another one, the same token
+  EXPECT_NE(c.port(), port);
+  EXPECT_EQ(c.pageUrl().substr(c.pageUrl().find("token=")), first.substr(first.find("token=")));
 }
 
 // The gallery's session over the link: a live value and a waiting one, once its scene's frames are timed,

@@ -112,5 +112,18 @@ TEST(Kiosk, OneSceneNeverFades) {
   EXPECT_EQ(run(kiosk, 100.0).begins, 0);
 }
 
+// The restart pause doubles while failures repeat, stops at a minute, and starts again from a second
+// after a gallery that ran for ten minutes.
+TEST(KioskRestartPause, DoublesWhileFailuresRepeatAndForgetsThemAfterAHealthyRun) {
+  using std::chrono::seconds;
+  KioskRestartPause pauses;
+  std::vector<long> quick;
+  for (int i = 0; i < 8; ++i) quick.push_back(long(pauses.after(seconds(30)).count()));
+  EXPECT_EQ(quick, (std::vector<long>{1, 2, 4, 8, 16, 32, 60, 60}));
+  EXPECT_EQ(pauses.after(seconds(3 * 24 * 3600)), seconds(1)) << "days after the last failure";
+  EXPECT_EQ(pauses.after(seconds(5)), seconds(2));
+  EXPECT_EQ(pauses.after(KioskRestartPause::kSettled), seconds(1));
+}
+
 }  // namespace
 }  // namespace vitrine::host

@@ -263,7 +263,7 @@ void Gallery::simulate() {
                                                 timedFrames_ >= kTimedFramesBeforeWaiting ? std::optional(gpuMs_) : std::nullopt);
     touched = touched || applied.touched;
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
-    if (!applied.values.empty() && remembers()) rememberValues();  // saved like the panel's (--remote-saves)
+    if (!applied.values.empty()) rememberValues();  // saved like the panel's, playlist or not (--remote-saves)
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);
     if (auto phone = remote_.pointer(window_.framebufferSize())) pointer = *phone;  // a phone drives the cursor
     remote_.publish(*renderer_);
@@ -338,17 +338,21 @@ int runGallery(const Options& options) {
 
   // The kiosk never stops: whatever ends a gallery once it has shown a frame (a lost device, memory
   // running out) is logged, and a fresh one starts with the next scene, after a pause that grows while
-  // the failures repeat. Failing before the first frame (no display, no device) is an error to report.
-  auto pause = std::chrono::seconds(1);
+  // the failures repeat (KioskRestartPause). Failing before the first frame (no display, no device)
+  // is an error to report.
+  KioskRestartPause pauses;
   for (bool first = true;; first = false) {
     std::optional<Gallery> gallery;
     const SceneInfo* failing = named;
+    const auto started = std::chrono::steady_clock::now();
+    std::chrono::seconds pause{0};
     try {
       gallery.emplace(options, named, playlist);
       return gallery->run();
     } catch (const Error& e) {
       if (first && !gallery) throw;
       if (gallery) failing = &gallery->showing();
+      pause = pauses.after(std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started));
       std::fprintf(stderr, "vitrine: kiosk: %s\nvitrine: kiosk: restarting in %lld s\n", e.what(),
                    (long long)pause.count());
     }
@@ -356,7 +360,6 @@ int runGallery(const Options& options) {
     for (auto slept = std::chrono::seconds(0); slept < pause && !StopOnSignal::requested(); slept += std::chrono::seconds(1))
       std::this_thread::sleep_for(std::chrono::seconds(1));
     if (StopOnSignal::requested()) return 0;
-    pause = std::min(pause * 2, std::chrono::seconds(60));
     const auto scenes = sceneRegistry();
     named = failing ? &scenes[(size_t(failing - scenes.data()) + 1) % scenes.size()] : nullptr;
   }

@@ -8,6 +8,8 @@
 // What it cycles through are entries: the registry's scenes, each for the same dwell, or the lines of a
 // playlist (--playlist, host/gallery/playlist.h), each with its own dwell; the timetable knows which
 // scene and preset an entry shows.
+#include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -52,6 +54,24 @@ class KioskSchedule {
   double shown_ = 0.0;          // seconds the current scene has shown without being held
   double fading_ = 0.0;         // seconds into the fade
   double sinceTouch_ = 1e300;   // seconds since the last touch
+};
+
+// The pause before the kiosk starts a fresh gallery after one failed (a lost device, memory running
+// out): 1 s, doubling while the failures repeat, at most 60 s; a gallery that ran for kSettled first
+// was healthy, so its failure starts again from 1 s (a sixth lost device days after the fifth does
+// not leave the room dark for a minute).
+class KioskRestartPause {
+ public:
+  static constexpr std::chrono::seconds kFirst{1}, kLongest{60}, kSettled{600};
+  std::chrono::seconds after(std::chrono::seconds ranFor) {
+    if (ranFor >= kSettled) next_ = kFirst;
+    const std::chrono::seconds pause = next_;
+    next_ = std::min(next_ * 2, kLongest);
+    return pause;
+  }
+
+ private:
+  std::chrono::seconds next_ = kFirst;
 };
 
 }  // namespace vitrine::host
