@@ -301,7 +301,7 @@ constexpr Flag kFlags[] = {
      .help = "The monitors, for --monitor and --outputs.", .store = listing<Mode::ListMonitors>},
     {.name = "--help", .modes = kListing, .value = Value::None, .help = "This text.",
      .store = listing<Mode::Help>, .alias = "-h"},
-    {.name = "--version", .modes = kListing, .value = Value::None, .help = "The version.",
+    {.name = "--version", .modes = kListing, .value = Value::None, .help = "The version and the commit it was built from.",
      .store = listing<Mode::Version>},
     {.name = "--help-man", .modes = kListing, .value = Value::None,
      .help = "This text as a man page (roff), for packages.", .store = listing<Mode::HelpMan>},

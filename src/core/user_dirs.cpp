@@ -13,8 +13,22 @@ namespace fs = std::filesystem;
 // user-dirs.dirs is a few hundred bytes; a larger one is not the file xdg-user-dirs writes.
 constexpr uintmax_t kMaxUserDirsBytes = 64 * 1024;
 
-std::string_view keyOf(UserDir dir) { return dir == UserDir::Pictures ? "XDG_PICTURES_DIR" : "XDG_VIDEOS_DIR"; }
-std::string_view fallbackOf(UserDir dir) { return dir == UserDir::Pictures ? "Pictures" : "Videos"; }
+std::string_view keyOf(UserDir dir) {
+  switch (dir) {
+    case UserDir::Pictures: return "XDG_PICTURES_DIR";
+    case UserDir::Videos: return "XDG_VIDEOS_DIR";
+    case UserDir::Documents: return "XDG_DOCUMENTS_DIR";
+  }
+  return {};
+}
+std::string_view fallbackOf(UserDir dir) {
+  switch (dir) {
+    case UserDir::Pictures: return "Pictures";
+    case UserDir::Videos: return "Videos";
+    case UserDir::Documents: return "Documents";
+  }
+  return {};
+}
 
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -1,13 +1,13 @@
 #pragma once
-// Where a desktop user keeps pictures and videos: the XDG user folders (xdg-user-dirs), as
-// `xdg-user-dir PICTURES` finds them. The installed gallery writes screenshots and captures there, under
-// Vitrine/, never into whatever folder it was started from.
+// Where a desktop user keeps pictures, videos and documents: the XDG user folders (xdg-user-dirs), as
+// `xdg-user-dir PICTURES` finds them. The installed gallery writes screenshots, captures and exported
+// presets there, under Vitrine/, never into whatever folder it was started from.
 #include <filesystem>
 #include <string_view>
 
 namespace vitrine {
 
-enum class UserDir { Pictures, Videos };
+enum class UserDir { Pictures, Videos, Documents };
 
 // The folder $XDG_CONFIG_HOME/user-dirs.dirs names for `dir` (`XDG_PICTURES_DIR="$HOME/Bilder"`, $HOME
 // expanded to `home`). Empty when `text` does not name it, or names it neither "$HOME/..." nor absolute,
@@ -18,7 +18,7 @@ std::filesystem::path userDirFromFile(std::string_view text, UserDir dir, const 
 // empty when neither is set.
 std::filesystem::path configHome();
 
-// The user's folder for `dir`: what user-dirs.dirs names, else $HOME/Pictures or $HOME/Videos; empty
+// The user's folder for `dir`: what user-dirs.dirs names, else $HOME/Pictures, Videos or Documents; empty
 // when HOME is not set (the caller then writes relative to the working directory).
 std::filesystem::path userDir(UserDir dir);
 

@@ -46,6 +46,7 @@ TEST_F(UserDirs, ReadsTheFileInTheConfigHomeElseFallsBackToEnglishNames) {
   ScopedEnv config("XDG_CONFIG_HOME", (folder_ / "config").c_str());
   EXPECT_EQ(vitrineUserDir(UserDir::Pictures), folder_ / "home" / "Pictures" / "Vitrine");
   EXPECT_EQ(vitrineUserDir(UserDir::Videos), folder_ / "home" / "Videos" / "Vitrine");
+  EXPECT_EQ(vitrineUserDir(UserDir::Documents), folder_ / "home" / "Documents" / "Vitrine");
 
   fs::create_directories(folder_ / "config");
   std::ofstream(folder_ / "config" / "user-dirs.dirs") << kGermanDesktop;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 
+#include "core/user_dirs.h"
 #include "host/gallery/gallery_app.h"
 
 namespace vitrine::host {
@@ -16,7 +17,6 @@ namespace {
 using Clock = Gallery::Clock;
 
 constexpr auto kToastSeconds = std::chrono::seconds(4);  // how long a note shows with the UI hidden
-const std::filesystem::path kExportFolder = "presets-exported";  // the panel's "export", beside screenshots/
 
 const SceneInfo* sceneForKey(int key) {
   for (const auto& info : sceneRegistry())
@@ -239,8 +239,9 @@ bool Gallery::managePresets(const PanelEdit& edit) {
       done = fmt::format("deleted preset '{}'", edit.preset);
       break;
     case PanelEdit::What::ExportPreset: {
-      // Into the working folder, as screenshots are: a file to hand on, read back by --preset-file.
-      const std::filesystem::path file = kExportFolder / presets_.fileOf(scene, edit.preset).filename();
+      // A file to hand on, read back by --preset-file: into the user's documents, under Vitrine/.
+      const std::filesystem::path file =
+          vitrineUserDir(UserDir::Documents) / "presets" / presets_.fileOf(scene, edit.preset).filename();
       why = presets_.exportTo(scene, edit.preset, file);
       done = fmt::format("wrote preset '{}' to {}", edit.preset, std::filesystem::absolute(file).string());
       break;
