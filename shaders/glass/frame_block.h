@@ -12,7 +12,7 @@
 // The options that choose shade.glsl's paths, as the bits of its specialization constant 1
 // (GLASS_SHADE_OPTIONS), which the host takes from this block's fields (frame_values.h: shadeOptions):
 // each combination's pipelines carry only their own paths. A uniform branch costs a GPU little, but
-// llvmpipe paid for every path not taken: lavapipe's spectral pass 85 -> 44 ms at the low tier.
+// llvmpipe paid for every path not taken (docs/PERFORMANCE.md, glass, Decisions).
 #define GLASS_SHADE_PHYSICAL 1u     // optics == 1
 #define GLASS_SHADE_ENVIRONMENT 2u  // environment == 1
 #define GLASS_SHADE_APPROX 4u       // approxExits == 1

@@ -11,8 +11,7 @@
 #define GLASS_SOURCE_PHOTO 2
 
 // post.comp's specialization constant 0 (GLASS_POST_OPTIONS): each combination is its own pipeline, as
-// llvmpipe pays for the paths a uniform branch does not take (the FXAA path cost the plain tone map
-// 7.5 -> 1.2 ms at lavapipe's low tier).
+// llvmpipe pays for the paths a uniform branch does not take (docs/PERFORMANCE.md, glass, Decisions).
 #define GLASS_POST_FXAA 1u    // FXAA after the tone map
 #define GLASS_POST_FILMIC 2u  // physical optics' filmic roll-off; without it, the seed's clip at 1
 

@@ -1,7 +1,7 @@
 #version 460
 // Scales the frame onto the output (offscreen image or swapchain image) and, for UNORM swapchains,
-// applies the sRGB transfer function. A compute pass rather than vkCmdBlitImage: on compute-first GPUs
-// such as the H100 a 4K blit took 1.19 ms, this pass a small fraction of that. In kiosk mode's
+// applies the sRGB transfer function. A compute pass rather than vkCmdBlitImage, which is slow on
+// compute-first GPUs such as the H100 (docs/PERFORMANCE.md, kifs, Decisions). In kiosk mode's
 // cross-fade it also mixes in the incoming scene's target. An output with a warp (a projector: turned,
 // mirrored, corner-pinned, edge-blended; src/maths/output_warp.h) is drawn here too, so the scene
 // renders once whatever its outputs do with it. With the flash guard on, the frame it scales is the

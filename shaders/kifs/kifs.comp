@@ -12,8 +12,8 @@ layout(binding = 0, rgba16f) uniform writeonly image2D target;
 
 layout(push_constant) uniform Push { KifsMarchPush pc; };
 // The teaching stage, 1..9, is a specialization constant: each stage's pipeline keeps only its own
-// field and colour. A uniform branch costs a GPU little, but llvmpipe paid for the stages not shown:
-// the final stage's march 36.8 -> 31.6 ms at lavapipe's low tier.
+// field and colour. A uniform branch costs a GPU little, but llvmpipe paid for the stages not shown
+// (docs/PERFORMANCE.md, kifs, Decisions).
 layout(constant_id = 0) const int KIFS_STAGE = 9;
 
 const vec3 NAVY = vec3(0.027, 0.043, 0.098);

@@ -15,8 +15,8 @@ layout(local_size_x = 64) in;
 // inline boxes' 4x4 tiles with tileMayHit): the fastest at 10^6 and 10^7 segments in one pass. A
 // nest drawn in two phases keeps boxes of up to 512 inline: its occluders are few and spread, and
 // most of the rest's boxes are dropped on their tiles or their keys, so a listed box costs a
-// workgroup for little (H200, 10^7 segments at 3840x2160: 11.87 ms raster at 256, 10.41 at 512;
-// 512 in one pass: the default nest at 3840x2160 1.97 -> 2.31 ms).
+// workgroup for little, while 512 in one pass slows the default nest (docs/PERFORMANCE.md, noodles,
+// Decisions).
 const uint MOST_CELLS_INLINE = 256u;
 const uint MOST_CELLS_INLINE_TWO_PHASES = 512u;
 

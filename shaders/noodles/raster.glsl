@@ -84,7 +84,7 @@ void castSample(uvec2 cell, uint sample_, uint held, Segment s) {
 // Keys only fall, so a plain read already nearer than anything this segment can put there (stale,
 // or even torn: its high half is still some key's depth) spares the ray, and one nearer than the
 // ray's hit spares the atomic: at ~16 hits a sample (10^6 segments at 1080p) most are skipped so.
-// (The ray test before the read: 4.0 ms for 10^6 segments on the H100; the read first: 3.25 ms.)
+// (The read first is the faster order: docs/PERFORMANCE.md, noodles, Decisions.)
 void rasterSample(uvec2 cell, Segment s) {
   uvec2 pixel = cell / SAMPLES_PER_AXIS;
   uvec2 quarter = cell - pixel * SAMPLES_PER_AXIS;

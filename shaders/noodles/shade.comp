@@ -4,7 +4,7 @@
 // and the pixel is their average. Every sample is shaded, not each segment once a pixel at one
 // place (as multisampling does): the tubes are lit from above, so shading a segment at its first
 // sample (the pixel's top) made the default frame 15 % brighter than shading every sample, and at
-// its samples' centroid 2 to 6 % darker; four shadings a pixel cost the H100 some 0.05 ms at 1080p.
+// its samples' centroid 2 to 6 % darker; the four shadings' cost: docs/PERFORMANCE.md, noodles.
 // Light and palette are tube.frag's of old: Lambert plus ambient, linear output. Dispatched once per
 // chunk of strands: the first writes every pixel, later ones add the samples of their own segments.
 #extension GL_GOOGLE_include_directive : require

@@ -121,7 +121,7 @@ void checkPlayable(const AudioClip& clip, double startSeconds) {
 // reach is covered too.
 struct Stereo48kStream::Resampler {
   struct Delete {
-    void operator()(SRC_STATE* state) const { src_delete(state); }
+    void operator()(SRC_STATE* converter) const { src_delete(converter); }
   };
   std::unique_ptr<SRC_STATE, Delete> state;
   double ratio = 1.0;

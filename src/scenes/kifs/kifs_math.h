@@ -146,8 +146,9 @@ inline glm::vec3 marchGlow(glm::vec3 ro, glm::vec3 rd, float t, int step, int ma
 
 // What a quality tier changes: pixels and steps, never the picture. 64 steps is the smallest budget
 // whose frame passes the golden metric against 90 at the same size (40 striped the core); the
-// unit tests hold each tier's march to the full one. Low renders 0.45 of the output's side (0.5 before:
-// lavapipe's 1280x720 march 45 -> 37 ms); 0.42 softened the tier test's picture past its 0.10 bound.
+// unit tests hold each tier's march to the full one. Low renders 0.45 of the output's side, cheaper on
+// lavapipe than 0.5 (docs/PERFORMANCE.md, kifs, Decisions); 0.42 softened the tier test's picture past
+// its 0.10 bound.
 struct TierMarch {
   int marchSteps;
   float renderScale;

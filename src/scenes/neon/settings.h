@@ -57,8 +57,8 @@ extern const SceneInfo kSceneInfo;
 int tierChains(int chains, Tier tier);
 // The render scale: quality.h's, but 0.4 rather than 0.5 at the low tier. There, on a CPU device, the
 // look's passes over the frame (bloom, depth of field, composite: texture taps, which llvmpipe pays
-// for one by one) are three quarters of the frame; lavapipe's 1280x720 frame 41.6 -> 30.5 ms, and
-// the gallery 13.5 -> 16 fps (docs/PERFORMANCE.md). The tubes stay lines; the facade is softer.
+// for one by one) are three quarters of the frame (docs/PERFORMANCE.md, neon, Decisions). The tubes
+// stay lines; the facade is softer.
 float tierRenderScale(Tier tier);
 
 }  // namespace vitrine::neon

@@ -27,8 +27,8 @@ enum class FieldSource : uint32_t { Auto, Exact, Baked };
 inline constexpr float kBakeTexelsPerNoiseUnit = 8.0f;
 // Auto bakes when the exact field would be evaluated this many times per texel or more (the bake then
 // costs an eighth of the exact pass or less, and a baked step about a quarter of an exact one), and
-// only past kBakeFromEvaluations: below it the exact pass takes under 0.2 ms on the H200 (10^6
-// segments: 0.10 ms exact, 0.09 baked), too little to trade exactness for. So the scene's default
+// only past kBakeFromEvaluations: below it the exact pass is too quick on a GPU to trade exactness for
+// (docs/PERFORMANCE.md, noodles). So the scene's default
 // nest (262,144 segments, RK4 included) and 10^6 stay exact; 10^7 and up bake.
 inline constexpr double kBakePaysFrom = 8.0;
 inline constexpr double kBakeFromEvaluations = 4e6;
@@ -36,7 +36,7 @@ inline constexpr double kBakeFromEvaluations = 4e6;
 inline constexpr uint64_t kBakeMostTexels = uint64_t(1) << 24;
 inline constexpr uint32_t kBakeMostTexelsPerAxis = 1024;
 // The volume holds each component as 10-bit unorm over [-kBakeRange, kBakeRange] (RGB10A2, 4 bytes a
-// texel: half the fetch traffic of half floats, which measured 0.3 ms of 10^8 steps on the H200).
+// texel: half the fetch traffic of half floats; docs/PERFORMANCE.md, noodles, Decisions).
 // Steps of 0.008, under 1 % of the flow's median speed (~1.1); the noise flows' components stay
 // within 4 (their largest speed over 200,000 random points was 3.6).
 // bake.comp writes the packed bits itself through a 32-bit unsigned view (bakedTexel), rounding to

@@ -2,7 +2,7 @@
 // The order the tube rasteriser takes a chunk's strands in: nearest the camera first. A sample keeps
 // the nearest hit so far and a segment behind it is dropped on reading its key, before any ray is cast
 // (raster.glsl), so the sooner the near strands land, the fewer casts and atomics the far ones cost
-// (10^8 segments at 1080p on the H200: 9.26 ms in index order, 7.50 walked so; docs/PERFORMANCE.md).
+// (docs/PERFORMANCE.md, noodles, Decisions).
 // The strands are seeded on a grid, x fastest, and stay near their seeds, so walking the grid with its
 // most view-aligned axis slowest, every axis from the end nearer the eye, runs roughly front to back:
 // the strands in flight at once are a slab facing the camera. Mirrored by raster_push.glsl's
