@@ -13,19 +13,15 @@ namespace fs = std::filesystem;
 // user-dirs.dirs is a few hundred bytes; a larger one is not the file xdg-user-dirs writes.
 constexpr uintmax_t kMaxUserDirsBytes = 64 * 1024;
 
-std::string_view keyOf(UserDir dir) {
+// A folder's key in user-dirs.dirs and its folder under $HOME when the file names none.
+struct DirNames {
+  std::string_view key, fallback;
+};
+DirNames namesOf(UserDir dir) {
   switch (dir) {
-    case UserDir::Pictures: return "XDG_PICTURES_DIR";
-    case UserDir::Videos: return "XDG_VIDEOS_DIR";
-    case UserDir::Documents: return "XDG_DOCUMENTS_DIR";
-  }
-  return {};
-}
-std::string_view fallbackOf(UserDir dir) {
-  switch (dir) {
-    case UserDir::Pictures: return "Pictures";
-    case UserDir::Videos: return "Videos";
-    case UserDir::Documents: return "Documents";
+    case UserDir::Pictures: return {"XDG_PICTURES_DIR", "Pictures"};
+    case UserDir::Videos: return {"XDG_VIDEOS_DIR", "Videos"};
+    case UserDir::Documents: return {"XDG_DOCUMENTS_DIR", "Documents"};
   }
   return {};
 }
@@ -62,7 +58,7 @@ fs::path userDirFromFile(std::string_view text, UserDir dir, const fs::path& hom
     text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
     if (line.empty() || line.front() == '#') continue;
     const size_t equals = line.find('=');
-    if (equals == std::string_view::npos || trimmed(line.substr(0, equals)) != keyOf(dir)) continue;
+    if (equals == std::string_view::npos || trimmed(line.substr(0, equals)) != namesOf(dir).key) continue;
     const std::string value = unquoted(trimmed(line.substr(equals + 1)));
     if (value == "$HOME" || value.starts_with("$HOME/")) {
       if (home.empty()) continue;
@@ -90,7 +86,7 @@ fs::path userDir(UserDir dir) {
     } catch (const FileRefused&) {  // no such file (most machines without a desktop): the defaults
     }
   }
-  return home.empty() ? fs::path() : home / fallbackOf(dir);
+  return home.empty() ? fs::path() : home / namesOf(dir).fallback;
 }
 
 fs::path vitrineUserDir(UserDir dir) {

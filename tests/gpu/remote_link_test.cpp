@@ -86,7 +86,7 @@ TEST_F(RemoteLinkTest, AFloodForAHiddenSceneWaitsAsOneValuePerKey) {
   for (int i = 0; i < 600; ++i)
     sendFrom(fmt::format("127.0.3.{}", i % 30 + 1).c_str(), link.port(),
              oscString("/vitrine/noodles/grid", fmt::format("{}x4x4", i % 8 + 1)));
-  // Whatever arrived is drained; before, each one stayed queued (600 here; a flood can send 480,000).
+  // Whatever arrived is drained, not left queued (600 here; a flood can send 480,000).
   applyUntil([&] { return false; }, std::chrono::milliseconds(500));
   EXPECT_EQ(link.waiting(), 1u);
 }
