@@ -34,6 +34,17 @@ class Output {
   virtual std::pair<VkSemaphore, VkSemaphore> semaphores(uint32_t slot) const = 0;
   virtual void present() = 0;  // after the submission: shows what was drawn
 
+  // How the output fares, for the menu, the remote page and the console: a window is always fine; a
+  // published node or a stream says who takes its frames and how many it had to drop.
+  struct Health {
+    std::string kind = "window";  // "window", "pipewire", "stream"
+    std::string line;             // one line: "OBS reading 1920x1080 RGBx", "reconnecting in 2 s (refused)"
+    uint64_t frames = 0;          // frames handed over
+    uint64_t dropped = 0;         // frames it could not take, dropped rather than waited for
+    bool connected = true;        // someone takes the frames now
+  };
+  virtual Health health() const { return {}; }
+
  protected:
   Output(std::string name, const maths::OutputWarp& warp) : name_(std::move(name)), warp_(warp) {}
 
