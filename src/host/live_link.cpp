@@ -267,4 +267,6 @@ std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::st
                                                .midiFile = options.midiIn});
 }
 
+std::vector<rig::ClockStatus> LiveLink::clocks() const { return {}; }
+
 }  // namespace vitrine::host

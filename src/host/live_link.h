@@ -7,6 +7,7 @@
 #include "frame/frame_input.h"
 #include "live/modulator.h"
 #include "live/source_bank.h"
+#include "rig/clock_status.h"
 
 #include <functional>
 #include <map>
@@ -82,6 +83,8 @@ class LiveLink {
   // MIDI learn: the MIDI control or gamepad input that moved most since the last call, if any moved.
   std::optional<std::string> takeMovedControl();
   std::vector<std::string> status() const;  // one line per input, for the panel
+  // The show's clocks this run follows (Link, MIDI clock, timecode), each as it stands now.
+  std::vector<rig::ClockStatus> clocks() const;
   // The --audio-in file, for a film's sound track; null without one.
   const live::AudioClip* audioClip() const;
   // What feeds a run, for a recording's manifest: the mapping lines and the input files' bytes, hashed.

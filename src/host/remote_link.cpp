@@ -229,7 +229,7 @@ void RemoteLink::publish(SceneRenderer& renderer, bool now) {
   params::KeyValues values = params::snapshot(renderer.parameters());
   const params::Schema& schema = *renderer.parameters().schema;
   for (auto& [key, value] : values) value = params::remoteView(*schema.find(key), std::move(value));
-  control_.publish({std::string(renderer.info().name), std::move(values), mappings_, std::move(userPresets)});
+  control_.publish({std::string(renderer.info().name), std::move(values), mappings_, std::move(userPresets), rig_});
 }
 
 }  // namespace vitrine::host

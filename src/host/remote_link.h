@@ -10,6 +10,7 @@
 #include "remote/rate_limiter.h"
 #include "remote/remote_control.h"
 #include "remote/waiting_values.h"
+#include "rig/rig_report.h"
 
 #include <chrono>
 #include <map>
@@ -52,6 +53,8 @@ class RemoteLink {
   void publish(SceneRenderer& renderer, bool now = false);
   // The live mapping lines playing the scene showing, shown on every page from the next publish.
   void setMappings(std::vector<std::string> lines) { mappings_ = std::move(lines); }
+  // The clocks and published outputs, shown on every page from the next publish.
+  void setRig(std::vector<rig::RigLine> lines) { rig_ = std::move(lines); }
   // Where clients' preset commands (save, apply, delete) go; without one they are refused. Applying
   // finds the scene's own presets too.
   void setPresets(params::PresetStore* presets) { presets_ = presets; }
@@ -72,6 +75,7 @@ class RemoteLink {
   size_t refused_ = 0;  // refused here (the servers count theirs in RemoteStats)
   size_t logged_ = 0;   // refusals of either kind that reached logRefusal
   std::vector<std::string> mappings_;
+  std::vector<rig::RigLine> rig_;
   // Saves and deletes write files: a few a second in all, whatever address each comes from.
   remote::TokenBucket presetWrites_{kPresetWrites};
 };

@@ -100,9 +100,12 @@ struct WebServer::Impl {
   void broadcast(const PageState& page) {
     nlohmann::json object = nlohmann::json::object();
     for (const auto& [key, text] : page.values) object[key] = text;
+    nlohmann::json rig = nlohmann::json::array();
+    for (const rig::RigLine& line : page.rig) rig.push_back({{"name", line.name}, {"ok", line.ok}, {"text", line.text}});
     auto state = std::make_shared<const std::string>(
         nlohmann::json{{"type", "state"}, {"scene", page.scene}, {"values", std::move(object)},
-                       {"mappings", page.mappings}, {"user_presets", page.userPresets}}
+                       {"mappings", page.mappings}, {"user_presets", page.userPresets},
+                       {"rig", std::move(rig)}}
             .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     if (hub.lastState && *hub.lastState == *state) return;
     hub.lastState = state;

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include "rig/rig_report.h"
 
 namespace vitrine::remote {
 
@@ -41,6 +42,7 @@ struct PageState {
   params::KeyValues values;
   std::vector<std::string> mappings;     // the live mapping lines playing the scene
   std::vector<std::string> userPresets;  // the names of the user's presets of the scene
+  std::vector<rig::RigLine> rig;         // the clocks followed and the outputs published
 };
 
 class WebServer {

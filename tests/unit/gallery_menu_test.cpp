@@ -132,6 +132,7 @@ TEST(GalleryMenu, StartsNarrowAndFoldedToItsSceneList) {
 TEST(GalleryMenu, LayoutSurvivesItsIniLines) {
   MenuLayout open;
   open.panel = open.timings = true;
+  open.rig = false;
   open.passRows = 12;
   MenuLayout read;
   std::string text = open.text();
@@ -142,6 +143,7 @@ TEST(GalleryMenu, LayoutSurvivesItsIniLines) {
   EXPECT_FALSE(read.time);
   EXPECT_TRUE(read.panel);
   EXPECT_TRUE(read.timings);
+  EXPECT_FALSE(read.rig);
   EXPECT_EQ(read.passRows, 12);
   read.readLine("pass_rows=100000");
   EXPECT_LE(read.passRows, 64);

@@ -183,6 +183,8 @@ void Gallery::frame() {
   const auto start = Clock::now();
   settings_.tick(start);
   overlay_.beginFrame();  // first: its view of this frame's clicks decides which belong to the scene
+  rig_ = rigLines();
+  remote_.setRig(rig_);
   simulate();
   showMenu();
   showToast();

@@ -68,6 +68,7 @@ class Gallery {
   void showMenu();
   void showToast();
   std::string clockNote() const;
+  std::vector<rig::RigLine> rigLines() const;  // the clocks followed and the outputs published, now
   void recordWindowCopy(VkCommandBuffer cmd);
   void pollShaders();
   void applyEdit(const PanelEdit& edit);
@@ -152,6 +153,7 @@ class Gallery {
 
   std::optional<KioskTimetable> kiosk_;  // --kiosk (and --playlist): what shows when
   RemoteSession remote_;  // --remote: the clients, and the values they set
+  std::vector<rig::RigLine> rig_;  // this frame's rigLines(), for the menu and the remote page
   std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
 };
 

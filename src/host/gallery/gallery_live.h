@@ -27,6 +27,7 @@ class GalleryLive {
   // Before each simulation step of the scene showing: gamepads, then the mapped values and actions.
   void step(SceneRenderer& renderer, FrameInput& input);
   LiveLink& link() { return *link_; }
+  const LiveLink& link() const { return *link_; }
   // The keys mappings drive now: kept out of the settings file (their saved values stay).
   std::vector<std::string> drivenKeys() const { return link_->drivenKeys(); }
   std::vector<std::string> mappingLines() const { return link_->mappingLines(); }  // for the remote page

@@ -130,6 +130,7 @@ void Gallery::showMenu() {
   state.livePanel = &live_->panel();
   state.live = live_->panelState();
   state.flashGuard = flashGuard_;
+  state.rig = rig_;
   const MenuChoice choice = drawMenu(state);
   if (live_->apply(choice.live, panel_)) remote_.setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
@@ -145,6 +146,13 @@ void Gallery::showMenu() {
     if (*choice.costly) applyEditNow(*costlyEdit_);
     costlyEdit_.reset();
   }
+}
+
+std::vector<rig::RigLine> Gallery::rigLines() const {
+  std::vector<rig::RigLine> lines;
+  for (const rig::ClockStatus& clock : live_->link().clocks()) lines.push_back(rig::describeClock(clock));
+  for (const rig::OutputReport& output : outputs_.reports()) lines.push_back(rig::describeOutput(output));
+  return lines;
 }
 
 // With the UI hidden (Tab), where a screenshot went and a clock that falls behind still show, briefly

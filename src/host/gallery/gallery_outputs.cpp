@@ -138,4 +138,13 @@ std::string GalleryOutputs::keep(size_t output) {
   return fmt::format("projector setup of {} kept in {} and the settings", name(output), warpFile_);
 }
 
+std::vector<rig::OutputReport> GalleryOutputs::reports() const {
+  std::vector<rig::OutputReport> reports;
+  for (const auto& output : others_)
+    if (Output::Health health = output->health(); health.kind != "window")
+      reports.push_back({std::move(health.kind), output->name(), std::move(health.line), health.frames, health.dropped,
+                         health.connected});
+  return reports;
+}
+
 }  // namespace vitrine::host

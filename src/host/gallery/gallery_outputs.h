@@ -9,6 +9,7 @@
 #include "host/present/output.h"
 #include "host/pointer.h"
 #include "host/present/projector_setup.h"
+#include "rig/rig_report.h"
 
 #include <cstddef>
 #include <functional>
@@ -80,6 +81,8 @@ class GalleryOutputs {
                                                           const Crossfade& fade, bool vsync,
                                                           VkPipelineStageFlags2 acquireStage);
   void present();  // after the submission
+  // How each output that is not a window fares (a published node, a stream), in order.
+  std::vector<rig::OutputReport> reports() const;
 
  private:
   // The settings file's pin for `output` of `extent` pixels; one this build refuses, or whose frame is

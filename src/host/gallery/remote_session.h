@@ -41,6 +41,9 @@ class RemoteSession {
   void publish(SceneRenderer& renderer, bool now = false) {
     if (link_) link_->publish(renderer, now);
   }
+  void setRig(std::vector<rig::RigLine> lines) {
+    if (link_) link_->setRig(std::move(lines));
+  }
   void setMappings(std::vector<std::string> lines) {
     if (link_) link_->setMappings(std::move(lines));
   }

@@ -45,6 +45,17 @@ void drawPassTable(const MenuState& state, int rows) {
   ImGui::EndTable();
 }
 
+// Each clock and published output on a line, amber while it is not well (a clock lost, frames dropped).
+void drawRig(std::span<const rig::RigLine> lines) {
+  for (const rig::RigLine& line : lines) {
+    ImGui::TextColored(line.ok ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kWarningAmber, "%s", line.name.c_str());
+    ImGui::SameLine();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", line.text.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
 // A section header whose open state is the layout's: set from it, and written back when clicked.
 bool section(const char* label, bool& open) {
   ImGui::SetNextItemOpen(open, ImGuiCond_Always);
@@ -153,8 +164,8 @@ std::optional<bool> askAboutCostlyEdit(const std::string& why) {
 float menuWidth(float fontSize) { return std::round(fontSize * 19.0f); }
 
 std::string MenuLayout::text() const {
-  return fmt::format("time={:d}\npanel={:d}\nlive={:d}\ntimings={:d}\npass_rows={}\n", time, panel, live, timings,
-                     passRows);
+  return fmt::format("time={:d}\npanel={:d}\nlive={:d}\ntimings={:d}\nrig={:d}\npass_rows={}\n", time, panel, live,
+                     timings, rig, passRows);
 }
 
 void MenuLayout::readLine(std::string_view line) {
@@ -168,6 +179,7 @@ void MenuLayout::readLine(std::string_view line) {
   else if (key == "panel") panel = number != 0;
   else if (key == "timings") timings = number != 0;
   else if (key == "live") live = number != 0;
+  else if (key == "rig") rig = number != 0;
   else if (key == "pass_rows") passRows = std::clamp(number, 0, 64);
 }
 
@@ -263,6 +275,7 @@ MenuChoice drawMenu(const MenuState& state) {
     if (state.livePanel && section("live input###live", layout.live)) choice.live = state.livePanel->draw(state.live);
     layout.passRows = std::max(layout.passRows, int(state.passes.size()));
     if (section("timings###timings", layout.timings)) drawPassTable(state, layout.passRows);
+    if (!state.rig.empty() && section("rig: clocks and outputs###rig", layout.rig)) drawRig(state.rig);
     ImGui::PopItemWidth();
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -5,6 +5,7 @@
 #include "gpu/pass_timer.h"
 #include "host/ui/live_panel.h"
 #include "host/ui/param_panel.h"
+#include "rig/rig_report.h"
 #include "scenes/scene.h"
 
 #include <optional>
@@ -20,7 +21,7 @@ namespace vitrine::host {
 // Which of the menu's sections are open, and how many timing rows it keeps: kept in the overlay's
 // layout file (with the window's place and folded state), so the menu comes back as it was left.
 struct MenuLayout {
-  bool time = false, panel = false, live = false, timings = false;  // a first start shows the scene list only
+  bool time = false, panel = false, live = false, timings = false, rig = true;  // a first start shows the scene list only
   int passRows = 0;  // rows reserved in the timings table: the most passes any scene has shown
   std::string text() const;            // "time=0\npanel=1\n...": the lines of its ini section
   void readLine(std::string_view line);  // one of those lines; anything else is ignored
@@ -57,6 +58,7 @@ struct MenuState {
   LivePanelState live;
   bool flashGuard = false;                     // frames go through the flash guard
   UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
+  std::span<const rig::RigLine> rig;           // the clocks followed and the outputs published; none: no section
 };
 
 struct MenuChoice {
