@@ -140,8 +140,13 @@ constexpr Flag kFlags[] = {
          [](Options& o, std::string_view flag, const std::string& v) {
            const size_t at = v.rfind('@');
            o.pipewire = at == std::string::npos ? v : v.substr(0, at);
-           if (at != std::string::npos) o.pipewireSize = parseSize(v.substr(at + 1));
            if (o.pipewire.empty()) throw Error(fmt::format("{} needs a node name", flag));
+           if (at == std::string::npos) return;
+           try {
+             o.pipewireSize = parseSize(v.substr(at + 1));
+           } catch (const Error&) {
+             throw Error(fmt::format("{} expects NAME or NAME@WIDTHxHEIGHT such as stage@1920x1080, not '{}'.", flag, v));
+           }
          }},
     {.name = "--reset-settings", .modes = kGallery, .value = Value::None,
      .help = "Forgets the saved settings and the menu's place and folds.",

@@ -18,7 +18,9 @@
 namespace vitrine::rig {
 namespace {
 
-constexpr uint32_t kLargest = 16384;  // the largest side offered: what the device draws is checked later
+// The largest side offered (8K): a larger frame is no video a consumer takes live, and each size costs
+// four frames of memory; the device's own limits and memory are checked when a consumer asks.
+constexpr uint32_t kLargest = 8192;
 
 // The formats offered, the consumer's choice first among equals: 8-bit, 4 bytes a pixel, so a frame is
 // copied row by row, swapping red and blue for the BGR ones.
@@ -164,7 +166,8 @@ void PipeWireSource::Impl::connect() {
                       SPA_POD_Id(SPA_MEDIA_SUBTYPE_raw), 0);
   spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_format,
                       SPA_POD_CHOICE_ENUM_Id(5, kFormats[0], kFormats[0], kFormats[1], kFormats[2], kFormats[3]), 0);
-  const spa_rectangle size{offered.width, offered.height}, smallest{1, 1}, largest{kLargest, kLargest};
+  const spa_rectangle size{offered.width, offered.height}, smallest{1, 1},
+                      largest{std::max(kLargest, offered.width), std::max(kLargest, offered.height)};
   spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_size, SPA_POD_CHOICE_RANGE_Rectangle(&size, &smallest, &largest), 0);
   const spa_fraction rateOffered{rate, 1}, slowest{0, 1}, fastest{1000, 1};
   spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_framerate,

@@ -123,4 +123,25 @@ XDG_RUNTIME_DIR=$out/empty-run PIPEWIRE_RUNTIME_DIR=$out/empty-run gallery
 stop_gallery
 [ "$(grep -c "^vitrine: pipewire: no PipeWire daemon" "$log")" = 1 ] || fail "not one line saying there is no daemon"
 echo "without a daemon: $(grep "^vitrine: pipewire: no PipeWire daemon" "$log")"
+
+# What is refused, before a frame, saying why.
+refused() {  # refused WHAT PATTERN ARGS...: the gallery with ARGS exits non-zero, its error matching PATTERN
+  local what=$1 pattern=$2; shift 2
+  if (cd "$out/work" && DISPLAY=$display XDG_CONFIG_HOME=$out/config "$vitrine" "$@") >"$out/err.txt" 2>&1; then
+    fail "$what was not refused"
+  fi
+  grep -q -e "$pattern" "$out/err.txt" || fail "$what: $(cat "$out/err.txt")"
+}
+echo '[{"pipewire": "a", "window": [0, 0, 64, 36]}]' >"$out/both.json"
+refused "a node and a window" "both.json, output 1: an output is fullscreen on a monitor, a window at a place or a PipeWire node, one of them" --outputs "$out/both.json"
+echo '[{"window": [0, 0, 64, 36], "size": [64, 36]}]' >"$out/sized.json"
+refused "a window's size" "sized.json, output 1: a size is a PipeWire node's" --outputs "$out/sized.json"
+echo '[{"pipewire": "a", "size": [0, 36]}]' >"$out/empty.json"
+refused "an empty size" "empty.json, output 1: a size has a width and a height above 0" --outputs "$out/empty.json"
+echo '[{"pipewire": "a", "size": [100000, 36]}]' >"$out/huge.json"
+refused "a size past the device" "huge.json, output 1: a node of 100000x36 is outside what .* supports" --outputs "$out/huge.json"
+echo '[{"pipewire": ""}]' >"$out/unnamed.json"
+refused "a node without a name" "unnamed.json, output 1: \"pipewire\" is not one of" --outputs "$out/unnamed.json"
+refused "--pipewire without a name" "needs a node name" --pipewire "@64x36"
+refused "--pipewire with a bad size" "--pipewire expects NAME or NAME@WIDTHxHEIGHT .*, not 'a@64y36'" --pipewire "a@64y36"
 echo "pass"

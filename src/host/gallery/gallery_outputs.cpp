@@ -9,7 +9,6 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "gpu/device.h"
-#include "gpu/resources.h"
 #include "host/present/output_warp_file.h"
 #include "host/present/output_window.h"
 #include "host/present/window.h"
@@ -33,7 +32,9 @@ void GalleryOutputs::openWindows(const gpu::Instance& instance, const gpu::Devic
     if (!placement.pipewire.empty()) {
       const VkExtent2D size = placement.size ? VkExtent2D{uint32_t((*placement.size)[0]), uint32_t((*placement.size)[1])}
                                              : main.framebufferSize();
-      gpu::checkImageSize(device, size);
+      if (const uint32_t limit = device.limits().maxImageDimension2D; size.width > limit || size.height > limit)
+        throw Error(fmt::format("{}: a node of {}x{} is outside what {} supports (1 to {} per side).", where, size.width,
+                                size.height, device.properties().deviceName, limit));
       add(rig::makePipeWireOutput(device, placement.name, placement.pipewire, placement.warp.value_or(maths::OutputWarp{}),
                                   size),
           placement.warp.has_value(), where);

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <utility>
 
+#include "core/error.h"
 #include "gpu/device.h"
 #include "gpu/frame_resources.h"
 
@@ -32,8 +34,6 @@ ReadbackOutput::~ReadbackOutput() {
 
 void ReadbackOutput::build(VkExtent2D extent) {
   gpu::checkImageSize(device_, extent);
-  if (image_) device_.retire(std::move(image_));
-  if (copies_) device_.retire(std::move(copies_));
   // As a swapchain's images: written by the compute present, which encodes sRGB into UNORM texels,
   // where the device stores without a declared format; else blitted into sRGB texels, which the blit
   // encodes. Either way the bytes read back are the display's.
@@ -42,8 +42,13 @@ void ReadbackOutput::build(VkExtent2D extent) {
   desc.extent = {extent.width, extent.height, 1};
   desc.format = compute ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R8G8B8A8_SRGB;
   desc.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | (compute ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-  image_ = gpu::Image(device_, desc, fmt::format("{} frame", name()));
-  copies_ = std::make_unique<Copies>(device_, extent, fmt::format("{} readback", name()));
+  // Both made before the old ones go, so a size that fails leaves the output as it was.
+  gpu::Image image(device_, desc, fmt::format("{} frame", name()));
+  auto copies = std::make_unique<Copies>(device_, extent, fmt::format("{} readback", name()));
+  if (image_) device_.retire(std::move(image_));
+  if (copies_) device_.retire(std::move(copies_));
+  image_ = std::move(image);
+  copies_ = std::move(copies);
 }
 
 void ReadbackOutput::collect() {
@@ -60,7 +65,17 @@ bool ReadbackOutput::acquire(uint32_t, bool) {
   if (const auto wanted = sink_->wantedExtent(); wanted && wanted->width > 0 && wanted->height > 0) {
     const uint32_t limit = device_.limits().maxImageDimension2D;
     const VkExtent2D size{std::min(wanted->width, limit), std::min(wanted->height, limit)};
-    if (size.width != extent().width || size.height != extent().height) build(size);
+    const bool refused = refused_ && refused_->width == size.width && refused_->height == size.height;
+    if ((size.width != extent().width || size.height != extent().height) && !refused) {
+      // A size the device cannot hold (memory, a limit) keeps the output's; said once, not asked again.
+      try {
+        build(size);
+      } catch (const Error& e) {
+        refused_ = size;
+        std::fprintf(stderr, "vitrine: %s: cannot publish at %ux%u (%s); staying at %ux%u\n", name().c_str(),
+                     size.width, size.height, e.what(), extent().width, extent().height);
+      }
+    }
   }
   if (!sink_->taking()) return false;
   if (!copies_->ring.full()) return true;

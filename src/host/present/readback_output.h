@@ -78,6 +78,7 @@ class ReadbackOutput final : public Output {
   std::array<Stamp, 2 * kBuffers> stamps_{};  // the frames of the copies in flight, by their tag
   uint64_t copied_ = 0;                       // copies recorded: the next tag
   uint64_t dropped_ = 0;
+  std::optional<VkExtent2D> refused_;  // a size the sink asked that the device could not hold
 };
 
 }  // namespace vitrine::host
