@@ -4,7 +4,7 @@
 # runtime folder of the test's own; the gallery on a virtual X display publishes the whole frame
 # (--pipewire) and, from --outputs, the right half of it through that output's warp. GStreamer's
 # pipewiresrc takes frames from each node: each equals the headless frame of the same scene, size and
-# warp, as 8-bit sRGB, to within one step: kifs under --reduced-motion holds still (as in outputs.sh),
+# warp, as 8-bit sRGB, to within one step, and a consumer asking another size and format gets them: kifs under --reduced-motion holds still (as in outputs.sh),
 # so every frame is the same moment; the calibration card would not do, its caption names the window. A consumer that stops reading (SIGSTOP) does not slow the gallery: its frame rate stays
 # at least what it was with a consumer reading, and the node counts the frames it dropped. Without a
 # daemon, one line says so and the gallery runs.
@@ -85,6 +85,16 @@ for frame in "$out"/right-*.rgb; do
   [ "$worst" -le 1 ] || fail "$frame (the warped output) differs from the headless frame by $worst steps"
 done
 echo "frames taken: $(ls "$out"/whole-*.rgb | wc -l) whole (RGBx), $(ls "$out"/right-*.rgb | wc -l) warped (BGRx), each within 1 step"
+# A consumer that asks another size and format gets them: the output follows, nothing restarts.
+take vitrine-test 3 small 160 90 BGRA
+python3 - "$out"/small-*.rgb <<'EOF' || fail "the frames at the size the consumer asked"
+import sys
+for name in sys.argv[1:]:
+    frame = open(name, "rb").read()
+    assert len(frame) == 160 * 90 * 3, f"{name}: {len(frame)} bytes"
+    assert sum(frame) / len(frame) > 10, f"{name}: black"
+EOF
+echo "frames taken at the size a consumer asked: $(ls "$out"/small-*.rgb | wc -l) of 160x90 (BGRA)"
 stop_gallery
 
 # fps LOG: the gallery's frames a second, from its last line.
