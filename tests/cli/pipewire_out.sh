@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # pipewire_out.sh VITRINE OUTDIR: the gallery's picture as PipeWire video sources. A private PipeWire
-# daemon (and WirePlumber, which links a consumer to the node it names, under a private D-Bus) runs in a
+# daemon (and WirePlumber, which links a consumer to the node it names, on a private D-Bus) runs in a
 # runtime folder of the test's own; the gallery on a virtual X display publishes the whole frame
 # (--pipewire) and, from --outputs, the right half of it through that output's warp. GStreamer's
 # pipewiresrc takes frames from each node: each equals the headless frame of the same scene, size and
@@ -15,13 +15,13 @@ rm -rf "$out"; mkdir -p "$out/config" "$out/work" "$out/run" "$out/empty-run"
 chmod 700 "$out/run" "$out/empty-run"
 log=$out/gallery.log
 fail() { echo "FAIL: $*"; cat "$log" 2>/dev/null; tail -5 "$out/pipewire.log" "$out/wireplumber.log" 2>/dev/null; exit 1; }
-for tool in pipewire wireplumber dbus-run-session gst-launch-1.0 Xvfb oiiotool; do
+for tool in pipewire wireplumber dbus-daemon gst-launch-1.0 Xvfb oiiotool; do
   command -v $tool >/dev/null || { echo "SKIP: $tool is not installed (scripts/setup --test installs it)"; exit 0; }
 done
 
 . "$here/virtual_display.sh"
-app= daemon= manager= consumer=
-trap 'kill $app $consumer $manager $daemon $xvfb 2>/dev/null; kill -CONT $consumer 2>/dev/null; wait 2>/dev/null' EXIT
+app= daemon= manager= consumer= bus_pid=
+trap 'kill -CONT $consumer 2>/dev/null; kill $app $consumer $manager $bus_pid $daemon $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
 start_display 320x180
 
 export XDG_RUNTIME_DIR=$out/run PIPEWIRE_RUNTIME_DIR=$out/run
@@ -30,7 +30,11 @@ pipewire >"$out/pipewire.log" 2>&1 &
 daemon=$!
 for _ in $(seq 100); do [ -S "$out/run/pipewire-0" ] && break; sleep 0.1; done
 [ -S "$out/run/pipewire-0" ] || fail "the PipeWire daemon did not start"
-dbus-run-session -- wireplumber >"$out/wireplumber.log" 2>&1 &
+# WirePlumber wants a session bus: one of the test's own, ended with it (dbus-run-session would leave
+# its bus running when it is killed).
+{ read -r bus; read -r bus_pid; } < <(dbus-daemon --session --fork --nopidfile --print-address=1 --print-pid=1)
+[ -n "${bus_pid:-}" ] || fail "no session bus for WirePlumber"
+DBUS_SESSION_BUS_ADDRESS=$bus wireplumber >"$out/wireplumber.log" 2>&1 &
 manager=$!
 
 echo '{"region": [0.5, 0, 1, 1]}' >"$out/right.json"
