@@ -146,6 +146,17 @@ constexpr Flag kFlags[] = {
      .help = "Opens more windows (projectors), each fullscreen on a monitor or at a place, showing the same frame "
              "through its own warp; the scene still renders once.",
      .store = text<&Options::outputs>},
+    {.name = "--pipewire", .modes = kGallery, .metavar = "NAME[@WxH]", .value = Value::Text,
+     .help = "Publishes the whole frame as a PipeWire video source named NAME (OBS, GStreamer's pipewiresrc, a "
+             "browser take it), offered at the window's size or WxH; the consumer may negotiate another size. "
+             "Frames a consumer cannot take are dropped, never waited for (docs/RIG.md).",
+     .store =
+         [](Options& o, std::string_view flag, const std::string& v) {
+           const size_t at = v.rfind('@');
+           o.pipewire = at == std::string::npos ? v : v.substr(0, at);
+           if (at != std::string::npos) o.pipewireSize = parseSize(v.substr(at + 1));
+           if (o.pipewire.empty()) throw Error(fmt::format("{} needs a node name", flag));
+         }},
     {.name = "--reset-settings", .modes = kGallery, .value = Value::None,
      .help = "Forgets the saved settings and the menu's place and folds.",
      .store = on<&Options::resetSettings>},
@@ -213,6 +224,10 @@ constexpr Flag kFlags[] = {
     {.name = "--warmup", .modes = kBench, .metavar = "N", .value = Value::Text,
      .help = "Frames rendered before the timed ones (30), a whole number from 0.",
      .store = [](Options& o, std::string_view flag, const std::string& v) { o.warmup = parseWhole(flag, v, 0); }},
+    {.name = "--publish", .modes = kBench, .value = Value::None,
+     .help = "Adds a published output (as --pipewire's) of the bench's size and times its passes, publish and "
+             "publish copy; no PipeWire daemon is needed.",
+     .store = on<&Options::publish>},
     {.name = "--pipeline-stats", .modes = kBench, .value = Value::None,
      .help = "Adds the compiler's statistics and each pass's shader invocations to the JSON.",
      .store = on<&Options::pipelineStats>},

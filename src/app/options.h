@@ -59,6 +59,9 @@ struct Options {
   std::string monitor;               // --monitor N|NAME (gallery): where the window and fullscreen go
   std::string outputWarp;            // --output-warp FILE (gallery, headless): the output's turn, pin, blend
   std::string outputs;               // --outputs FILE (gallery): more windows showing the frame (projectors)
+  std::string pipewire;              // --pipewire NAME[@WxH] (gallery): the frame published as a PipeWire node
+  std::optional<VkExtent2D> pipewireSize;  // its size offered first; unset: the window's
+  bool publish = false;              // bench --publish: a published output of the bench's size, timed
   bool span = false;                 // --span (gallery): the window covers every monitor, without a frame
   std::string audioOut;              // --audio-out FILE.wav (headless): the run's sound, offline
   // record: a numbered sequence of frames into the folder --out.

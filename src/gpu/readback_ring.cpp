@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace vitrine::gpu {
 
 ReadbackRing::ReadbackRing(const Device& device, FrameResources& resources, VkDeviceSize bytes, uint32_t slots,
@@ -17,28 +19,59 @@ ReadbackRing::ReadbackRing(const Device& device, FrameResources& resources, VkDe
                       0, 0.0, false});
 }
 
-bool ReadbackRing::record(VkCommandBuffer cmd, Buffer& source, double tag) {
+bool ReadbackRing::full() const {
+  const Slot& slot = slots_[next_];
+  return slot.pending && slot.serial > device_.completed();
+}
+
+ReadbackRing::Slot* ReadbackRing::take() {
+  if (full()) return nullptr;  // all in flight: skip, never wait
   Slot& slot = slots_[next_];
-  if (slot.pending && slot.serial > device_.completed()) return false;  // all in flight: skip, never wait
   next_ = (next_ + 1) % slots_.size();
-  Buffer& destination = resources_.current(slot.buffer);
+  slot.serial = device_.lastSubmitted() + 1;
+  slot.stamped = false;
+  slot.pending = true;
+  return &slot;
+}
+
+bool ReadbackRing::record(VkCommandBuffer cmd, Buffer& source, double tag) {
+  Slot* slot = take();
+  if (!slot) return false;
+  Buffer& destination = resources_.current(slot->buffer);
   source.use(cmd, use::TransferSrcBuffer);
   destination.use(cmd, use::TransferDstBuffer);
   const VkBufferCopy region{0, 0, bytes_};
   vkCmdCopyBuffer(cmd, source.handle(), destination.handle(), 1, &region);
   destination.use(cmd, use::HostReadBuffer);
-  slot.serial = device_.lastSubmitted() + 1;
-  slot.tag = tag;
-  slot.pending = true;
+  slot->tag = tag;
   return true;
+}
+
+bool ReadbackRing::record(VkCommandBuffer cmd, Image& source, double tag) {
+  Slot* slot = take();
+  if (!slot) return false;
+  recordReadback(cmd, source, resources_.current(slot->buffer));
+  slot->tag = tag;
+  return true;
+}
+
+void ReadbackRing::submitted(uint64_t serial) {
+  for (Slot& slot : slots_)
+    if (slot.pending && !slot.stamped) {
+      slot.serial = std::max(slot.serial, serial);
+      slot.stamped = true;
+    }
 }
 
 std::optional<ReadbackRing::Result> ReadbackRing::poll() {
   const uint64_t completed = device_.completed();
   Slot* newest = nullptr;
+  uint32_t superseded = 0;
   for (Slot& slot : slots_) {
     if (!slot.pending || slot.serial > completed) continue;
-    if (!newest || slot.serial > newest->serial) {
+    ++superseded;
+    // Tags rise with the serials; two copies on one submission keep the later-recorded tag.
+    if (!newest || slot.serial > newest->serial || (slot.serial == newest->serial && slot.tag > newest->tag)) {
       if (newest) newest->pending = false;
       newest = &slot;
     } else {
@@ -49,7 +82,7 @@ std::optional<ReadbackRing::Result> ReadbackRing::poll() {
   newest->pending = false;
   const Buffer& buffer = resources_.current(newest->buffer);
   buffer.invalidate();
-  return Result{{static_cast<const std::byte*>(buffer.mapped()), size_t(bytes_)}, newest->tag};
+  return Result{{static_cast<const std::byte*>(buffer.mapped()), size_t(bytes_)}, newest->tag, superseded - 1};
 }
 
 }  // namespace vitrine::gpu

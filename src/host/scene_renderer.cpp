@@ -179,7 +179,7 @@ gpu::Image& SceneRenderer::guardFrame(VkCommandBuffer cmd, const Crossfade& fade
 }
 
 void SceneRenderer::present(VkCommandBuffer cmd, const BlitDestination& dst, gpu::Image& frame, const Crossfade& fade) {
-  gpu::Pass pass(device_, &timer_, cmd, "present");
+  gpu::Pass pass(device_, &timer_, cmd, dst.pass);
   frame.use(cmd, gpu::use::ComputeSample);
   gpu::Image& other = fade.other ? *fade.other : frame;
   if (fade.other) other.use(cmd, gpu::use::ComputeSample);

@@ -29,6 +29,9 @@ struct BlitDestination {
   // How this output shows the frame (a projector's turn, mirror, region, corner pin and soft edges; the
   // compute path only). Null, or the identity: the whole frame, square-on.
   const maths::OutputWarp* warp = nullptr;
+  // What the GPU timings call the compute present pass onto this image (a published output's own name,
+  // so a benchmark tells it from the window's).
+  const char* pass = "present";
 };
 
 // The frame a scene renders for an output of `output` pixels showing it through `warp`: a quarter turn

@@ -13,6 +13,7 @@
 #include "gpu/check.h"
 #include "host/gallery/gallery_app.h"
 #include "host/present/output_warp_file.h"
+#include "rig/pipewire_source.h"
 #include "scenes/adaptive_quality.h"
 
 namespace vitrine::host {
@@ -93,6 +94,12 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   for (uint32_t i = 0; i < kFramesInFlight; ++i) slots_.emplace_back(device_, i);
   if (!options.outputs.empty())
     outputs_.openWindows(instance_, device_, window_, options.outputs, vsync_, kFramesInFlight);
+  if (!options.pipewire.empty()) {  // the whole frame, whatever the main window's warp
+    const VkExtent2D size = options.pipewireSize.value_or(window_.framebufferSize());
+    gpu::checkImageSize(device_, size);
+    outputs_.add(rig::makePipeWireOutput(device_, options.pipewire, options.pipewire, maths::OutputWarp{}, size),
+                 /*warpGiven=*/true, "--pipewire");
+  }
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());
@@ -157,6 +164,11 @@ int Gallery::run() {
     std::fprintf(stderr, "vitrine: showed %llu frames in %.1f s (%.1f fps)\n", (unsigned long long)(frameCount_ - 1),
                  seconds, double(frameCount_ - 1) / std::max(seconds, 1e-9));
   }
+  // How the published outputs fared: what they handed over and what they dropped rather than wait.
+  for (const Output::Health& health : outputs_.health())
+    if (health.kind != "window")
+      std::fprintf(stderr, "vitrine: %s: %s; %llu frames handed over, %llu dropped\n", health.kind.c_str(),
+                   health.line.c_str(), (unsigned long long)health.frames, (unsigned long long)health.dropped);
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     if (auto note = screenshots_.collect(slot)) std::printf("vitrine: %s\n", note->c_str());
   if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
@@ -204,7 +216,7 @@ void Gallery::frame() {
     capture_.record(cmd, slot, *windowCopy_, rendered, &renderer_->timer());
   }
   // The other outputs show the same frame, each through its own warp.
-  const auto outputsDrawn = outputs_.record(cmd, slot, *renderer_, fade, vsync_, kAcquireStage);
+  const auto outputsDrawn = outputs_.record(cmd, slot, *renderer_, fade, vsync_, kAcquireStage, shown_);
   slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_->timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image), outputsDrawn);

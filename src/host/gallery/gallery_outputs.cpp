@@ -9,9 +9,11 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "gpu/device.h"
+#include "gpu/resources.h"
 #include "host/present/output_warp_file.h"
 #include "host/present/output_window.h"
 #include "host/present/window.h"
+#include "rig/pipewire_source.h"
 
 namespace vitrine::host {
 
@@ -27,6 +29,16 @@ void GalleryOutputs::openWindows(const gpu::Instance& instance, const gpu::Devic
   const std::vector<OutputPlacement> placements = readOutputs(file);
   for (size_t i = 0; i < placements.size(); ++i) {
     const std::string where = fmt::format("{}, output {}", file, i + 1);
+    const OutputPlacement& placement = placements[i];
+    if (!placement.pipewire.empty()) {
+      const VkExtent2D size = placement.size ? VkExtent2D{uint32_t((*placement.size)[0]), uint32_t((*placement.size)[1])}
+                                             : main.framebufferSize();
+      gpu::checkImageSize(device, size);
+      add(rig::makePipeWireOutput(device, placement.name, placement.pipewire, placement.warp.value_or(maths::OutputWarp{}),
+                                  size),
+          placement.warp.has_value(), where);
+      continue;
+    }
     if (const auto& window = placements[i].window) {
       const uint32_t limit = device.limits().maxImageDimension2D;
       if (uint32_t((*window)[2]) > limit || uint32_t((*window)[3]) > limit)
@@ -98,14 +110,23 @@ std::optional<std::string_view> GalleryOutputs::setupNewlyShown(bool ready) {
 
 std::vector<std::pair<VkSemaphore, VkSemaphore>> GalleryOutputs::record(VkCommandBuffer cmd, uint32_t slot,
                                                                         SceneRenderer& renderer, const Crossfade& fade,
-                                                                        bool vsync, VkPipelineStageFlags2 acquireStage) {
+                                                                        bool vsync, VkPipelineStageFlags2 acquireStage,
+                                                                        const FrameInput& shown) {
   std::vector<std::pair<VkSemaphore, VkSemaphore>> drawn;
   for (auto& output : others_)
     if (output->acquire(slot, vsync)) {  // one that is hidden or being rebuilt misses this frame
       renderer.recordOutput(cmd, output->destination(acquireStage), fade);
-      drawn.push_back(output->semaphores(slot));
+      output->drawn(cmd, &renderer.timer(), shown);
+      if (const auto semaphores = output->semaphores(slot); semaphores.first || semaphores.second)
+        drawn.push_back(semaphores);
     }
   return drawn;
+}
+
+std::vector<Output::Health> GalleryOutputs::health() const {
+  std::vector<Output::Health> all;
+  for (const auto& output : others_) all.push_back(output->health());
+  return all;
 }
 
 void GalleryOutputs::present() {

@@ -73,12 +73,14 @@ class GalleryOutputs {
   // (its card built); the caller says it on the console.
   std::optional<std::string_view> setupNewlyShown(bool ready);
 
-  // Once a frame, after the main window's present pass: the frame onto every other output that takes
-  // one now, mixed with `fade`, through its own warp. Returns the semaphores the submission waits for
-  // and signals for them.
+  // Once a frame, after the main window's present pass: the frame `shown` onto every other output that
+  // takes one now, mixed with `fade`, through its own warp. Returns the semaphores the submission waits
+  // for and signals for them (an output drawn into an image of its own has none).
   std::vector<std::pair<VkSemaphore, VkSemaphore>> record(VkCommandBuffer cmd, uint32_t slot, SceneRenderer& renderer,
                                                           const Crossfade& fade, bool vsync,
-                                                          VkPipelineStageFlags2 acquireStage);
+                                                          VkPipelineStageFlags2 acquireStage, const FrameInput& shown);
+  // How each output besides the main window fares (Output::health), in order.
+  std::vector<Output::Health> health() const;
   void present();  // after the submission
 
  private:

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <optional>
 #include <system_error>
 
 #include "core/atomic_file.h"
@@ -21,6 +23,7 @@
 #include "host/user_presets.h"
 #include "host/modes.h"
 #include "host/offline/offscreen.h"
+#include "host/present/readback_output.h"
 #include "params/settings_file.h"
 
 namespace vitrine::host {
@@ -43,12 +46,28 @@ params::KeyValues benchParameters(const Options& options, const std::string& sce
   return values;
 }
 
+// bench --publish: frames read back as a published output's are, then let go, as by a consumer that
+// takes every frame; what is timed is the GPU's part (the publish passes), with no daemon needed.
+class DiscardingSink final : public FrameSink {
+ public:
+  void frame(const PublishedFrame&) override { ++frames_; }
+  Output::Health health() const override { return {.kind = "bench", .line = "discarded", .frames = frames_}; }
+
+ private:
+  uint64_t frames_ = 0;
+};
+
 Json benchScene(const gpu::Device& device, const Options& options, const std::string& scene, bool everyScene) {
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, scene, true), benchParameters(options, scene, everyScene)};
   config.flashGuard = flashGuardOn(options);
   config.presetFiles = presetFilesFor(options, scene);
   Offscreen offscreen(device, config);
+  std::optional<ReadbackOutput> published;
+  if (options.publish) {
+    published.emplace(device, "publish", maths::OutputWarp{}, config.size, std::make_unique<DiscardingSink>());
+    offscreen.addOutput(*published);
+  }
   // Warm-up: pipeline compilation, clocks ramping, caches; not counted.
   for (uint32_t i = 0; i < options.warmup; ++i) offscreen.renderFrame();
   std::vector<double> gpu, cpu;

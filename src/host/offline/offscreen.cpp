@@ -158,8 +158,14 @@ FrameTimes Offscreen::draw(std::chrono::steady_clock::time_point start) {
                    BlitDestination{output_.handle(), size_, output_.lastUse(), gpu::use::TransferSrc, output_.view(),
                                    false, warp_ ? &*warp_ : nullptr});
   output_.assumeUse(gpu::use::TransferSrc);
+  for (Output* other : others_)
+    if (other->acquire(0, false)) {
+      renderer_.recordOutput(cmd_, other->destination(VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT), {});
+      other->drawn(cmd_, &renderer_.timer(), input_);
+    }
   VK_CHECK(vkEndCommandBuffer(cmd_));
   const uint64_t serial = device_.submit({cmd_, {}, {}});
+  for (Output* other : others_) other->present();
   const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   device_.wait(serial);
   rendered_ = true;

@@ -6,6 +6,7 @@
 #include "image/image.h"
 #include "host/input_script.h"
 #include "host/live_link.h"
+#include "host/present/output.h"
 #include "host/scene_renderer.h"
 
 #include <chrono>
@@ -58,6 +59,9 @@ class Offscreen {
   // The last frame's input drawn again with no simulation step, as the gallery draws while paused.
   FrameTimes redrawFrame();
   ImageRgba readback();  // the output of the last frame
+  // Another output drawn after the main one each frame, through its own warp (a published node's, in a
+  // benchmark); it must outlive this run's frames.
+  void addOutput(Output& output) { others_.push_back(&output); }
   uint64_t frames() const { return input_.frame; }
   // False when an input script still holds events past the last rendered frame.
   bool inputFinished() const { return !player_ || player_->finished(); }
@@ -92,6 +96,7 @@ class Offscreen {
   SceneRenderer renderer_;
   VkExtent2D size_;
   gpu::Image output_;
+  std::vector<Output*> others_;
   gpu::Unique<VkCommandPool> pool_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   FrameInput input_;

@@ -4,6 +4,7 @@
 // a projector is one kind (host/present/output_window.h); another kind (a video node, a stream) implements the
 // same few calls, and the gallery's outputs (host/gallery/gallery_outputs.h) draw it and pin it with projector
 // setup like any other.
+#include "gpu/pass_timer.h"
 #include "host/scene_renderer.h"
 #include "maths/output_warp.h"
 
@@ -30,8 +31,12 @@ class Output {
   virtual bool acquire(uint32_t slot, bool vsync) = 0;
   // The acquired image as the present pass's destination, first used at `acquireStage`.
   virtual BlitDestination destination(VkPipelineStageFlags2 acquireStage) const = 0;
-  // What the frame's submission waits for before drawing to the image, and signals once it is drawn.
+  // What the frame's submission waits for before drawing to the image, and signals once it is drawn;
+  // none (null handles) for an image of the output's own that no presentation engine shares.
   virtual std::pair<VkSemaphore, VkSemaphore> semaphores(uint32_t slot) const = 0;
+  // After the present pass has drawn the frame `shown` to the image, in the same command buffer: an
+  // output that takes its frames back to the CPU records its copy here, timed by `timer`.
+  virtual void drawn(VkCommandBuffer /*cmd*/, gpu::PassTimer* /*timer*/, const FrameInput& /*shown*/) {}
   virtual void present() = 0;  // after the submission: shows what was drawn
 
   // How the output fares, for the menu, the remote page and the console: a window is always fine; a

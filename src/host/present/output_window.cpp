@@ -37,24 +37,37 @@ std::vector<OutputPlacement> readOutputs(const std::filesystem::path& file) {
       else if (key == "window" && value.is_array() && value.size() == 4 &&
                std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number_integer(); }))
         output.window = std::array<int, 4>{value[0], value[1], value[2], value[3]};
+      else if (key == "pipewire" && value.is_string() && !value.get<std::string>().empty())
+        output.pipewire = value.get<std::string>();
+      else if (key == "size" && value.is_array() && value.size() == 2 &&
+               std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number_integer(); }))
+        output.size = std::array<int, 2>{value[0], value[1]};
       else if (key == "warp")
         output.warp = outputWarpFromJson(value, where);
       else if (key == "name" && value.is_string() && !value.get<std::string>().empty())
         output.name = value.get<std::string>();
       else
         throw Error(fmt::format("{}: \"{}\" is not one of monitor (an index or a name), window ([x, y, width, "
-                                "height]), warp and name (a text)",
+                                "height]), pipewire (a node's name), size ([width, height]), warp and name (a text)",
                                 where, key));
     }
-    if (output.name.empty()) output.name = output.monitor.empty() ? fmt::format("output {}", i + 1) : output.monitor;
+    if (output.name.empty())
+      output.name = !output.monitor.empty()  ? output.monitor
+                    : !output.pipewire.empty() ? output.pipewire
+                                               : fmt::format("output {}", i + 1);
     if (output.name == "main") throw Error(fmt::format("{}: \"main\" is the main window's name", where));
     for (const OutputPlacement& other : outputs)
       if (other.name == output.name)
         throw Error(fmt::format("{}: another output is named \"{}\" (give each a \"name\")", where, output.name));
     if (output.window && ((*output.window)[2] <= 0 || (*output.window)[3] <= 0))
       throw Error(fmt::format("{}: a window has a width and a height above 0", where));
-    if (output.window && !output.monitor.empty())
-      throw Error(fmt::format("{}: an output is fullscreen on a monitor or a window at a place, not both", where));
+    if (int(output.window.has_value()) + int(!output.monitor.empty()) + int(!output.pipewire.empty()) > 1)
+      throw Error(fmt::format("{}: an output is fullscreen on a monitor, a window at a place or a PipeWire node, "
+                              "one of them", where));
+    if (output.size && output.pipewire.empty())
+      throw Error(fmt::format("{}: a size is a PipeWire node's; a window's is in \"window\"", where));
+    if (output.size && ((*output.size)[0] <= 0 || (*output.size)[1] <= 0))
+      throw Error(fmt::format("{}: a size has a width and a height above 0", where));
     outputs.push_back(std::move(output));
   }
   if (outputs.size() > 7) throw Error(fmt::format("{}: at most 7 outputs besides the main window", file.string()));

@@ -23,11 +23,15 @@ namespace vitrine::host {
 // Where an output goes and how it shows the frame: one entry of --outputs FILE.json,
 //   [{"monitor": "1", "warp": {"region": [0.5, 0, 1, 1]}}, {"window": [1280, 0, 640, 360], "name": "left"}]
 // "monitor" (an index or part of a name): fullscreen there; "window": [x, y, width, height] on the
-// desktop, without a frame. One of the two; "warp" as in --output-warp. "name": what the settings file
-// keeps this output's warp under (projector setup's pin): by default its monitor, else "output N".
+// desktop, without a frame; "pipewire": "NODE", a PipeWire video source of that name (rig/pipewire_source.h),
+// offered at "size": [width, height] (else the main window's). One of the three; "warp" as in
+// --output-warp. "name": what the settings file keeps this output's warp under (projector setup's pin):
+// by default its monitor or node, else "output N".
 struct OutputPlacement {
   std::string monitor;
   std::optional<std::array<int, 4>> window;
+  std::string pipewire;
+  std::optional<std::array<int, 2>> size;  // a published output's
   std::optional<maths::OutputWarp> warp;  // none given: the settings file's, else the identity
   std::string name;
 };

@@ -1,0 +1,407 @@
+#include "rig/pipewire_source.h"
+
+#include <fmt/format.h>
+#include <pipewire/pipewire.h>
+#include <spa/param/video/format-utils.h>
+#include <spa/pod/builder.h>
+#include <spa/utils/result.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+namespace vitrine::rig {
+namespace {
+
+constexpr uint32_t kLargest = 16384;  // the largest side offered: what the device draws is checked later
+
+// The formats offered, the consumer's choice first among equals: 8-bit, 4 bytes a pixel, so a frame is
+// copied row by row, swapping red and blue for the BGR ones.
+constexpr std::array<spa_video_format, 4> kFormats{SPA_VIDEO_FORMAT_BGRx, SPA_VIDEO_FORMAT_RGBx, SPA_VIDEO_FORMAT_BGRA,
+                                                   SPA_VIDEO_FORMAT_RGBA};
+
+const char* formatName(uint32_t format) {
+  switch (format) {
+    case SPA_VIDEO_FORMAT_BGRx: return "BGRx";
+    case SPA_VIDEO_FORMAT_RGBx: return "RGBx";
+    case SPA_VIDEO_FORMAT_BGRA: return "BGRA";
+    case SPA_VIDEO_FORMAT_RGBA: return "RGBA";
+    default: return "?";
+  }
+}
+
+// One frame held between the frame thread and the loop.
+struct Held {
+  std::vector<std::byte> bytes;  // RGBA, rows `width * 4` apart
+  uint32_t width = 0, height = 0;
+  uint64_t index = 0;
+  double time = 0.0;
+};
+
+// Said once a process, whatever the number of nodes: there is no daemon.
+std::atomic<bool> saidNoDaemon{false};
+
+// PipeWire is initialised once a process and never deinitialised: a later source starts it again.
+void initPipeWire() {
+  static std::once_flag once;
+  std::call_once(once, [] { pw_init(nullptr, nullptr); });
+}
+
+}  // namespace
+
+struct PipeWireSource::Impl {
+  Impl(std::string nodeName, VkExtent2D extent, uint32_t fps) : node(std::move(nodeName)), offered(extent), rate(fps) {}
+
+  const std::string node;
+  const VkExtent2D offered;
+  const uint32_t rate;
+
+  pw_thread_loop* loop = nullptr;
+  pw_context* context = nullptr;
+  pw_core* core = nullptr;
+  pw_stream* stream = nullptr;
+  spa_hook coreListener{};
+  spa_hook streamListener{};
+  spa_source* wake = nullptr;   // signalled by the frame thread: a new frame is in the mailbox
+  spa_source* retry = nullptr;  // the timer that reaches the daemon again
+  bool saidMissing = false;     // the console has heard there is no daemon
+
+  // The mailbox: the frame thread fills `back` and swaps it with `newest`; the loop swaps `newest` with
+  // `front` and copies from there. The lock is held for the swaps only.
+  std::mutex mailbox;
+  Held back, newest, front;
+  bool fresh = false;  // `newest` holds a frame the loop has not taken
+
+  // What the loop negotiated, for the frame thread and the menu.
+  mutable std::mutex stateLock;
+  bool connected = false;  // to a daemon
+  bool streaming = false;  // a consumer is linked and the stream runs
+  spa_video_info_raw format{};
+  bool negotiated = false;
+  std::string problem;  // why there is no node now
+  std::atomic<uint64_t> handed{0}, dropped{0};
+
+  // Loop-thread side (the loop's lock held).
+  void connect();
+  void disconnect();
+  void process();
+  void negotiate(const spa_pod* param);
+  void setProblem(std::string why) {
+    std::lock_guard lock(stateLock);
+    problem = std::move(why);
+    connected = streaming = negotiated = false;
+  }
+};
+
+namespace {
+
+const pw_stream_events kStreamEvents = [] {
+  pw_stream_events events{};
+  events.version = PW_VERSION_STREAM_EVENTS;
+  events.state_changed = [](void* data, pw_stream_state, pw_stream_state state, const char* error) {
+    auto* impl = static_cast<PipeWireSource::Impl*>(data);
+    std::lock_guard lock(impl->stateLock);
+    impl->streaming = state == PW_STREAM_STATE_STREAMING;
+    if (state == PW_STREAM_STATE_ERROR) impl->problem = fmt::format("the stream failed: {}", error ? error : "?");
+  };
+  events.param_changed = [](void* data, uint32_t id, const spa_pod* param) {
+    if (id == SPA_PARAM_Format) static_cast<PipeWireSource::Impl*>(data)->negotiate(param);
+  };
+  events.process = [](void* data) { static_cast<PipeWireSource::Impl*>(data)->process(); };
+  return events;
+}();
+
+const pw_core_events kCoreEvents = [] {
+  pw_core_events events{};
+  events.version = PW_VERSION_CORE_EVENTS;
+  events.error = [](void* data, uint32_t id, int, int res, const char* message) {
+    auto* impl = static_cast<PipeWireSource::Impl*>(data);
+    if (id != PW_ID_CORE) return;
+    // The daemon went away (or refused us): tear down from the timer, outside the core's own callback.
+    impl->setProblem(fmt::format("PipeWire: {} ({})", message ? message : "error", spa_strerror(res)));
+    timespec soon{0, 1}, every{PipeWireSource::kRetry.count(), 0};
+    pw_loop_update_timer(pw_thread_loop_get_loop(impl->loop), impl->retry, &soon, &every, false);
+  };
+  return events;
+}();
+
+}  // namespace
+
+void PipeWireSource::Impl::connect() {
+  if (core) return;
+  core = pw_context_connect(context, nullptr, 0);
+  if (!core) {
+    const std::string why = fmt::format("no PipeWire daemon ({})", std::strerror(errno));
+    if (!saidMissing && !saidNoDaemon.exchange(true))
+      std::fprintf(stderr, "vitrine: pipewire: %s: node %s not published; trying again every %lld s\n", why.c_str(),
+                   node.c_str(), (long long)kRetry.count());
+    saidMissing = true;
+    setProblem(why + fmt::format(", trying again every {} s", kRetry.count()));
+    return;
+  }
+  pw_core_add_listener(core, &coreListener, &kCoreEvents, this);
+  pw_properties* props = pw_properties_new(PW_KEY_MEDIA_TYPE, "Video", PW_KEY_MEDIA_CATEGORY, "Source", PW_KEY_MEDIA_CLASS,
+                                           "Video/Source", PW_KEY_NODE_NAME, node.c_str(), nullptr);
+  pw_properties_setf(props, PW_KEY_NODE_DESCRIPTION, "Vitrine: %s", node.c_str());
+  stream = pw_stream_new(core, node.c_str(), props);
+  if (!stream) {
+    setProblem(fmt::format("cannot make a stream: {}", std::strerror(errno)));
+    disconnect();
+    return;
+  }
+  pw_stream_add_listener(stream, &streamListener, &kStreamEvents, this);
+
+  std::array<uint8_t, 1024> storage;
+  spa_pod_builder builder = SPA_POD_BUILDER_INIT(storage.data(), uint32_t(storage.size()));
+  spa_pod_frame object;
+  spa_pod_builder_push_object(&builder, &object, SPA_TYPE_OBJECT_Format, SPA_PARAM_EnumFormat);
+  spa_pod_builder_add(&builder, SPA_FORMAT_mediaType, SPA_POD_Id(SPA_MEDIA_TYPE_video), SPA_FORMAT_mediaSubtype,
+                      SPA_POD_Id(SPA_MEDIA_SUBTYPE_raw), 0);
+  spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_format,
+                      SPA_POD_CHOICE_ENUM_Id(5, kFormats[0], kFormats[0], kFormats[1], kFormats[2], kFormats[3]), 0);
+  const spa_rectangle size{offered.width, offered.height}, smallest{1, 1}, largest{kLargest, kLargest};
+  spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_size, SPA_POD_CHOICE_RANGE_Rectangle(&size, &smallest, &largest), 0);
+  const spa_fraction rateOffered{rate, 1}, slowest{0, 1}, fastest{1000, 1};
+  spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_framerate,
+                      SPA_POD_CHOICE_RANGE_Fraction(&rateOffered, &slowest, &fastest), 0);
+  const spa_pod* params[] = {static_cast<const spa_pod*>(spa_pod_builder_pop(&builder, &object))};
+  const int result = pw_stream_connect(stream, PW_DIRECTION_OUTPUT, PW_ID_ANY,
+                                       pw_stream_flags(PW_STREAM_FLAG_DRIVER | PW_STREAM_FLAG_MAP_BUFFERS), params, 1);
+  if (result < 0) {
+    setProblem(fmt::format("cannot publish the node: {}", spa_strerror(result)));
+    disconnect();
+    return;
+  }
+  if (saidMissing) std::fprintf(stderr, "vitrine: pipewire: daemon found: publishing node %s\n", node.c_str());
+  saidMissing = false;
+  saidNoDaemon = false;
+  std::lock_guard lock(stateLock);
+  problem.clear();
+  connected = true;
+}
+
+void PipeWireSource::Impl::disconnect() {
+  if (stream) {
+    spa_hook_remove(&streamListener);
+    pw_stream_destroy(stream);
+    stream = nullptr;
+  }
+  if (core) {
+    spa_hook_remove(&coreListener);
+    pw_core_disconnect(core);
+    core = nullptr;
+  }
+  std::lock_guard lock(stateLock);
+  connected = streaming = negotiated = false;
+}
+
+void PipeWireSource::Impl::negotiate(const spa_pod* param) {
+  if (!param) {  // the format was cleared: no consumer
+    std::lock_guard lock(stateLock);
+    negotiated = false;
+    return;
+  }
+  spa_video_info_raw info{};
+  if (spa_format_video_raw_parse(param, &info) < 0 || info.size.width == 0 || info.size.height == 0) return;
+  {
+    std::lock_guard lock(stateLock);
+    format = info;
+    negotiated = true;
+  }
+  const uint32_t stride = info.size.width * 4;
+  std::array<uint8_t, 1024> storage;
+  spa_pod_builder builder = SPA_POD_BUILDER_INIT(storage.data(), uint32_t(storage.size()));
+  const spa_pod* params[2];
+  params[0] = static_cast<const spa_pod*>(spa_pod_builder_add_object(
+      &builder, SPA_TYPE_OBJECT_ParamBuffers, SPA_PARAM_Buffers, SPA_PARAM_BUFFERS_buffers, SPA_POD_CHOICE_RANGE_Int(4, 2, 8),
+      SPA_PARAM_BUFFERS_blocks, SPA_POD_Int(1), SPA_PARAM_BUFFERS_size, SPA_POD_Int(int32_t(stride * info.size.height)),
+      SPA_PARAM_BUFFERS_stride, SPA_POD_Int(int32_t(stride)), SPA_PARAM_BUFFERS_dataType,
+      SPA_POD_CHOICE_FLAGS_Int((1 << SPA_DATA_MemFd) | (1 << SPA_DATA_MemPtr))));
+  params[1] = static_cast<const spa_pod*>(spa_pod_builder_add_object(
+      &builder, SPA_TYPE_OBJECT_ParamMeta, SPA_PARAM_Meta, SPA_PARAM_META_type, SPA_POD_Id(SPA_META_Header),
+      SPA_PARAM_META_size, SPA_POD_Int(int32_t(sizeof(spa_meta_header)))));
+  pw_stream_update_params(stream, params, 2);
+}
+
+// The newest frame into a buffer the consumer gave back, converted to the negotiated format.
+void PipeWireSource::Impl::process() {
+  {
+    std::lock_guard lock(mailbox);
+    if (!fresh) return;
+    std::swap(front, newest);
+    fresh = false;
+  }
+  spa_video_info_raw info;
+  {
+    std::lock_guard lock(stateLock);
+    info = format;
+  }
+  // A frame of the size before the consumer's (the output follows it a frame or two later).
+  if (front.width != info.size.width || front.height != info.size.height) {
+    ++dropped;
+    return;
+  }
+  pw_buffer* buffer = pw_stream_dequeue_buffer(stream);
+  if (!buffer) {  // the consumer still holds every buffer: this frame is dropped, not waited for
+    ++dropped;
+    return;
+  }
+  spa_data& data = buffer->buffer->datas[0];
+  auto* out = static_cast<uint8_t*>(data.data);
+  const uint32_t stride = data.chunk->stride > 0 ? uint32_t(data.chunk->stride) : front.width * 4;
+  const uint32_t rowBytes = front.width * 4;
+  if (!out || data.maxsize < stride * (front.height - 1) + rowBytes) {
+    data.chunk->size = 0;
+    pw_stream_queue_buffer(stream, buffer);
+    ++dropped;
+    return;
+  }
+  const bool swapRedBlue = info.format == SPA_VIDEO_FORMAT_BGRx || info.format == SPA_VIDEO_FORMAT_BGRA;
+  const auto* in = reinterpret_cast<const uint8_t*>(front.bytes.data());
+  for (uint32_t y = 0; y < front.height; ++y) {
+    const uint8_t* from = in + size_t(y) * rowBytes;
+    uint8_t* to = out + size_t(y) * stride;
+    if (!swapRedBlue) {
+      std::memcpy(to, from, rowBytes);
+      continue;
+    }
+    for (uint32_t x = 0; x < rowBytes; x += 4) {
+      to[x] = from[x + 2];
+      to[x + 1] = from[x + 1];
+      to[x + 2] = from[x];
+      to[x + 3] = from[x + 3];
+    }
+  }
+  data.chunk->offset = 0;
+  data.chunk->stride = int32_t(stride);
+  data.chunk->size = stride * front.height;
+  if (auto* header = static_cast<spa_meta_header*>(spa_buffer_find_meta_data(buffer->buffer, SPA_META_Header, sizeof(spa_meta_header)))) {
+    header->flags = 0;
+    header->offset = 0;
+    header->pts = int64_t(front.time * 1e9);
+    header->dts_offset = 0;
+    header->seq = front.index;
+  }
+  pw_stream_queue_buffer(stream, buffer);
+  ++handed;
+}
+
+PipeWireSource::PipeWireSource(std::string node, VkExtent2D extent, uint32_t fps)
+    : impl_(std::make_unique<Impl>(std::move(node), extent, fps)) {
+  initPipeWire();
+  Impl& state = *impl_;
+  state.loop = pw_thread_loop_new("vitrine-pipewire", nullptr);
+  if (!state.loop) {
+    state.setProblem("cannot start PipeWire's thread");
+    std::fprintf(stderr, "vitrine: pipewire: cannot start PipeWire's thread: node %s not published\n", state.node.c_str());
+    return;
+  }
+  pw_loop* loop = pw_thread_loop_get_loop(state.loop);
+  state.context = pw_context_new(loop, nullptr, 0);
+  state.wake = pw_loop_add_event(
+      loop,
+      [](void* data, uint64_t) {
+        auto* impl = static_cast<Impl*>(data);
+        if (impl->stream && pw_stream_get_state(impl->stream, nullptr) == PW_STREAM_STATE_STREAMING)
+          pw_stream_trigger_process(impl->stream);
+      },
+      &state);
+  state.retry = pw_loop_add_timer(
+      loop,
+      [](void* data, uint64_t) {
+        auto* impl = static_cast<Impl*>(data);
+        bool lost;
+        {
+          std::lock_guard lock(impl->stateLock);
+          lost = !impl->connected;
+        }
+        if (lost) impl->disconnect(), impl->connect();
+      },
+      &state);
+  pw_thread_loop_lock(state.loop);  // before the thread runs: the first try says at once if there is no daemon
+  if (state.context) state.connect();
+  else state.setProblem("cannot make a PipeWire context");
+  timespec every{kRetry.count(), 0};
+  pw_loop_update_timer(loop, state.retry, &every, &every, false);
+  pw_thread_loop_unlock(state.loop);
+  pw_thread_loop_start(state.loop);
+}
+
+PipeWireSource::~PipeWireSource() {
+  Impl& state = *impl_;
+  if (!state.loop) return;
+  pw_thread_loop_stop(state.loop);  // the thread has ended: its objects are this thread's now
+  state.disconnect();
+  pw_loop* loop = pw_thread_loop_get_loop(state.loop);
+  if (state.wake) pw_loop_destroy_source(loop, state.wake);
+  if (state.retry) pw_loop_destroy_source(loop, state.retry);
+  if (state.context) pw_context_destroy(state.context);
+  pw_thread_loop_destroy(state.loop);
+}
+
+void PipeWireSource::frame(const host::PublishedFrame& frame) {
+  Impl& impl = *impl_;
+  if (!impl.loop || !taking()) return;
+  // Copied outside the lock, into the frame thread's own buffer; then handed over by a swap.
+  Held& back = impl.back;
+  back.bytes.resize(size_t(frame.width) * frame.height * 4);
+  for (uint32_t y = 0; y < frame.height; ++y)
+    std::memcpy(back.bytes.data() + size_t(y) * frame.width * 4, frame.bytes.data() + size_t(y) * frame.stride,
+                size_t(frame.width) * 4);
+  back.width = frame.width;
+  back.height = frame.height;
+  back.index = frame.index;
+  back.time = frame.time;
+  bool replaced;
+  {
+    std::lock_guard lock(impl.mailbox);
+    std::swap(impl.back, impl.newest);
+    replaced = std::exchange(impl.fresh, true);
+  }
+  if (replaced) ++impl.dropped;  // the loop never took the one before
+  pw_loop_signal_event(pw_thread_loop_get_loop(impl.loop), impl.wake);
+}
+
+std::optional<VkExtent2D> PipeWireSource::wantedExtent() const {
+  std::lock_guard lock(impl_->stateLock);
+  if (!impl_->negotiated) return std::nullopt;
+  return VkExtent2D{impl_->format.size.width, impl_->format.size.height};
+}
+
+bool PipeWireSource::taking() const {
+  std::lock_guard lock(impl_->stateLock);
+  return impl_->streaming && impl_->negotiated;
+}
+
+host::Output::Health PipeWireSource::health() const {
+  const Impl& impl = *impl_;
+  host::Output::Health health;
+  health.kind = "pipewire";
+  health.frames = impl.handed.load();
+  health.dropped = impl.dropped.load();
+  std::lock_guard lock(impl.stateLock);
+  health.connected = impl.streaming && impl.negotiated;
+  if (!impl.problem.empty())
+    health.line = fmt::format("node {}: {}", impl.node, impl.problem);
+  else if (!impl.connected)
+    health.line = fmt::format("node {}: connecting", impl.node);
+  else if (!health.connected)
+    health.line = fmt::format("node {}: published, waiting for a consumer", impl.node);
+  else
+    health.line = fmt::format("node {}: {}x{} {} to a consumer", impl.node, impl.format.size.width,
+                              impl.format.size.height, formatName(impl.format.format));
+  return health;
+}
+
+std::unique_ptr<host::Output> makePipeWireOutput(const gpu::Device& device, std::string name, std::string node,
+                                                 const maths::OutputWarp& warp, VkExtent2D extent) {
+  auto source = std::make_unique<PipeWireSource>(std::move(node), extent, 60);
+  return std::make_unique<host::ReadbackOutput>(device, std::move(name), warp, extent, std::move(source));
+}
+
+}  // namespace vitrine::rig

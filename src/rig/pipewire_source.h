@@ -1,0 +1,46 @@
+#pragma once
+// A PipeWire video source: the frames of a published output (host/present/readback_output.h) offered as
+// a named node (media.class Video/Source) that other programs take: OBS, a GStreamer pipewiresrc, a
+// browser through the portal. The consumer negotiates the format (BGRx, RGBx, BGRA or RGBA), the size
+// (the output's by default; the output follows another) and the rate; buffers are shared memory.
+//
+// Threads: PipeWire's run on a thread loop of their own. The frame thread copies the newest frame into
+// a mailbox and signals the loop; the loop's process callback copies it into a buffer it dequeued. A
+// frame the consumer had no buffer for, or one a newer frame replaced before the loop took it, is
+// dropped and counted: nothing on the frame thread waits for PipeWire, a consumer or the daemon.
+// Without a daemon the source says so once on the console and tries again every few seconds.
+#include "host/present/readback_output.h"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace vitrine::rig {
+
+class PipeWireSource final : public host::FrameSink {
+ public:
+  static constexpr std::chrono::seconds kRetry{5};  // between tries to reach a daemon that is not there
+
+  // `node`: the node's name (node.name); `extent`: the size it offers first; `fps`: the rate it offers.
+  PipeWireSource(std::string node, VkExtent2D extent, uint32_t fps);
+  ~PipeWireSource() override;
+
+  void frame(const host::PublishedFrame& frame) override;
+  std::optional<VkExtent2D> wantedExtent() const override;
+  bool taking() const override;
+  host::Output::Health health() const override;
+
+  struct Impl;  // PipeWire's objects and callbacks: only this file's source includes PipeWire
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// The gallery's output that publishes its frames as the PipeWire node `node`, shown through `warp` at
+// `extent` until a consumer asks another size; `name` is what the settings keep its warp under.
+std::unique_ptr<host::Output> makePipeWireOutput(const gpu::Device& device, std::string name, std::string node,
+                                                 const maths::OutputWarp& warp, VkExtent2D extent);
+
+}  // namespace vitrine::rig
