@@ -60,7 +60,8 @@ int runHeadless(const Options& options) {
     std::optional<HeadlessStream> stream;
     if (!options.stream.empty()) {
       // Streamed live: frames are paced at 60 a second, and SIGTERM or Ctrl-C ends the run early.
-      stream.emplace(options, offscreen.size(), *sound, live.get(), options.frames);
+      stream.emplace(device, options, offscreen.size(), config.warp, *sound, live.get(), options.frames);
+      offscreen.addOutput(stream->output());
       stop.emplace();
     }
     if (options.remote) {
@@ -89,7 +90,6 @@ int runHeadless(const Options& options) {
       }
       if (remote || stream) std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
       offscreen.renderFrame();
-      if (stream) stream->frame(offscreen, rendered);
     }
     if (stream) stream->finish(rendered);
     image = offscreen.readback();

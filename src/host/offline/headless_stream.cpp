@@ -1,44 +1,50 @@
 #include "host/offline/headless_stream.h"
 
-#include "image/image_io.h"
+#include "host/offline/record_shared.h"
+#include "host/present/stream_sink.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cstdio>
 #include <vector>
 
 namespace vitrine::host {
 namespace {
 
-constexpr double kFps = 60.0;
+// The run's sound, rendered offline as a film's: a stretch reaches kLag behind the frames, since a
+// scene stamps a sound with the time its cause happened, which it may learn a few frames later
+// (FilmSound says more); the last stretch reaches the end.
+class RunSound final : public StreamSound {
+ public:
+  RunSound(const audio::OfflineAudio& sound, const LiveLink* live, double start, double seconds)
+      : film_(sound, live, start, seconds), seconds_(seconds) {}
+  void until(double seconds, std::vector<float>& out) override {
+    static constexpr double kLag = 0.1;
+    const double reach = seconds >= seconds_ ? seconds_ : seconds - kLag;
+    const std::span<const float> next = film_.next(std::max<int64_t>(0, audio::toSamples(reach)));
+    out.insert(out.end(), next.begin(), next.end());
+  }
 
-film::StreamSettings streamSettings(const Options& options, VkExtent2D size) {
-  film::StreamSettings settings;
-  settings.url = options.stream;
-  settings.width = size.width;
-  settings.height = size.height;
-  settings.fps = kFps;
-  settings.bitrate = options.streamBitrate;
-  settings.latencyMs = int(options.streamLatencyMs);
-  return settings;
-}
+ private:
+  FilmSound film_;
+  double seconds_;
+};
 
 }  // namespace
 
-HeadlessStream::HeadlessStream(const Options& options, VkExtent2D size, const audio::OfflineAudio& sound,
-                               const LiveLink* live, uint32_t frames)
-    : sender_(streamSettings(options, size)), sound_(sound, live, options.time, double(frames) / kFps) {}
-
-void HeadlessStream::frame(Offscreen& offscreen, uint32_t index) {
-  const std::vector<uint8_t> rgba = srgb8(offscreen.readback());
-  sender_.pushFrame(rgba, double(index) / kFps);
-  sender_.pushSound(sound_.next(std::max<int64_t>(0, audio::toSamples(double(index + 1) / kFps - kSoundLag))));
+HeadlessStream::HeadlessStream(const gpu::Device& device, const Options& options, VkExtent2D size,
+                               const std::optional<maths::OutputWarp>& warp, const audio::OfflineAudio& sound,
+                               const LiveLink* live, uint32_t frames) {
+  const double seconds = double(frames) / kStreamFps;
+  auto sink = std::make_unique<StreamSink>(options, size, std::make_unique<RunSound>(sound, live, options.time, seconds),
+                                           StreamSink::Clock::Steps);
+  sink_ = sink.get();
+  output_ = std::make_unique<ReadbackOutput>(device, "stream", warp.value_or(maths::OutputWarp{}), size, std::move(sink));
 }
 
+HeadlessStream::~HeadlessStream() = default;
+
 void HeadlessStream::finish(uint32_t rendered) {
-  sender_.pushSound(sound_.next(audio::toSamples(double(rendered) / kFps)));
-  sender_.close();
-  const film::StreamHealth health = sender_.health();
+  const film::StreamHealth health = sink_->finish(double(rendered) / kStreamFps);
   std::printf("stream: %llu frames sent, %llu dropped (the encoder behind), %llu while not connected, %llu "
               "reconnections; %s\n",
               static_cast<unsigned long long>(health.sent), static_cast<unsigned long long>(health.dropped),
