@@ -187,8 +187,10 @@ struct StreamSender::Worker {
     AVFormatContext& out = *c.output;
     out.interrupt_callback = {&Worker::interrupted, this};
     // The muxer holds a stream's packets at most this long waiting for the other's, so the picture
-    // is not held back by a sound that comes late.
-    out.max_interleave_delta = int64_t(std::max(100, settings.latencyMs)) * 1000;
+    // is not held back by a sound that comes late. MPEG-TS takes a sound packet older than the picture
+    // already written; FLV and RTP refuse it (and the connection with it), so they wait up to a second.
+    const bool strict = muxer != "mpegts";
+    out.max_interleave_delta = (strict ? 1000 : std::max(100, settings.latencyMs)) * int64_t(1000);
 
     EncoderRequest request;
     request.width = settings.width;
@@ -196,7 +198,9 @@ struct StreamSender::Worker {
     request.fps = settings.fps;
     request.bitrate = settings.bitrate;
     request.lowLatency = true;
-    request.globalHeader = (out.oformat->flags & AVFMT_GLOBALHEADER) != 0;
+    // FLV carries the parameter sets once, in its header; MPEG-TS (and RTP's) in the stream, before every
+    // keyframe, so a receiver that joins late (or an RTP muxer that would keep them apart) can decode.
+    request.globalHeader = muxer == "flv";
     request.announce = !announced;
     announced = true;
     c.video = std::make_unique<HardwareEncoder>(request, url);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# stream.sh VITRINE OUTDIR: --stream from a headless run to a real ffmpeg listener on loopback. SRT and
-# UDP MPEG-TS arrive as h264 at the run's size and 60 fps with AAC 48 kHz stereo sound; an SRT listener
-# killed mid-run is seen lost (SRT's peer idle timeout: 5 s) and one started again is reconnected and
-# receives frames; a port nobody answers on, a malformed URL and an unknown scheme each give one clear
-# message and the run goes on to its last frame, ending promptly even while connecting.
+# stream.sh VITRINE OUTDIR: --stream from a headless run to a real ffmpeg listener on loopback. MPEG-TS
+# over SRT, UDP and RTP, and FLV over RTMP, arrive as h264 at the run's size and 60 fps with AAC 48 kHz
+# stereo sound; an SRT listener killed mid-run is seen lost (SRT's peer idle timeout: 5 s) and one
+# started again is reconnected and receives frames; a port nobody answers on, a malformed URL and an
+# unknown scheme each give one clear message and the run goes on to its last frame, ending promptly even
+# while connecting. The gallery and the kiosk stream too.
 set -euo pipefail
 vitrine=$1; out=$2
 rm -rf "$out"; mkdir -p "$out"
@@ -32,8 +33,9 @@ await() {  # await FILE PATTERN COUNT SECONDS: until FILE has COUNT lines matchi
     sleep 0.1
   done
 }
-listen() {  # listen NAME URL: an ffmpeg listener copying what comes to NAME.ts; its pid in $listener
-  ffmpeg -v fatal -y -i "$2" -c copy -f mpegts "$out/$1.ts" &
+listen() {  # listen NAME URL [OPTIONS]: an ffmpeg listener copying what comes to NAME.ts; its pid in $listener
+  local name=$1 url=$2; shift 2
+  ffmpeg -v fatal -y "$@" -i "$url" -c copy -f mpegts "$out/$name.ts" &
   listener=$!; pids+=($listener)
   sleep 0.5
 }
@@ -75,6 +77,20 @@ listen udp "udp://127.0.0.1:$p?timeout=4000000"
 run udp calibrate 90 "udp://127.0.0.1:$p"
 ends $listener "UDP listener"
 probe "$out/udp.ts" 80
+
+# RTMP (FLV) to ffmpeg's own RTMP listener; RTP (MPEG-TS over RTP), its parameter sets in the stream
+# before every keyframe (a reader that joins late can decode).
+p=$(port)
+listen rtmp "rtmp://127.0.0.1:$p/live/key" -listen 1
+run rtmp calibrate 90 "rtmp://127.0.0.1:$p/live/key"
+ends $listener "RTMP listener"
+probe "$out/rtmp.ts" 60
+p=$(port)
+listen rtp "rtp://127.0.0.1:$p"
+run rtp calibrate 90 "rtp://127.0.0.1:$p"
+sleep 1; kill -INT $listener  # RTP's reader has no timeout of its own
+ends $listener "RTP listener"
+probe "$out/rtp.ts" 20  # ffmpeg's RTP reader starts at the first keyframe after it has probed (1 s apart)
 
 # 3. The SRT listener killed once the stream runs, and a new one started on the same port once the
 # stream says it was lost: it connects again and the new listener receives frames.
