@@ -115,6 +115,20 @@ constexpr Flag kFlags[] = {
              "(docs/INSTALLATIONS.md).",
      .store = text<&Options::outputWarp>},
 
+    {.name = "--stream", .modes = kGallery | kHeadless, .metavar = "URL", .value = Value::Text,
+     .help = "Streams the picture and its sound live, h264 and AAC at 60 frames a second: srt://HOST:PORT and "
+             "udp:// or rtp:// as MPEG-TS, rtmp://HOST/APP/KEY as FLV. A connection that fails or drops is tried "
+             "again; the run goes on meanwhile (docs/RIG.md).",
+     .store = text<&Options::stream>},
+    {.name = "--stream-bitrate", .modes = kGallery | kHeadless, .metavar = "N[k|M]", .value = Value::Text,
+     .help = "The stream's video bit rate (6M), at most that much in any second.",
+     .store = [](Options& o, std::string_view, const std::string& v) { o.streamBitrate = film::parseBitrate(v); }},
+    {.name = "--stream-latency", .modes = kGallery | kHeadless, .metavar = "MS", .value = Value::Text,
+     .help = "The stream's latency in milliseconds (200), 20 to 10000: SRT's receive buffer, and how many frames "
+             "may wait for the encoder before one is dropped.",
+     .store =
+         [](Options& o, std::string_view flag, const std::string& v) { o.streamLatencyMs = parseWhole(flag, v, 20, 10000); }},
+
     // The gallery.
     {.name = "--fullscreen", .modes = kGallery, .value = Value::None, .help = "Starts fullscreen (F11 toggles).",
      .store = on<&Options::fullscreen>},

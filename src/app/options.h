@@ -7,6 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -87,6 +88,10 @@ struct Options {
   std::string audioIn;               // --audio-in FILE: a sound file drives the audio sources
   std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
   std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time
+  // A live stream of the picture and its sound (gallery, headless): film/stream_sender.h.
+  std::string stream;                // --stream URL: srt://, rtmp://, rtp://, udp://
+  int64_t streamBitrate = 6'000'000; // --stream-bitrate N[k|M]: the video's bits a second
+  uint32_t streamLatencyMs = 200;    // --stream-latency MS: SRT's latency, the stream's queue
 };
 
 // Whether frames go through the flash guard (docs/INSTALLATIONS.md): as --flash-guard says, else on in

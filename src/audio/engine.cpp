@@ -111,8 +111,10 @@ size_t Synth::ringing() const {
 
 namespace {
 
-int playCallback(void* output, void*, unsigned int frames, double, RtAudioStreamStatus, void* synth) {
-  static_cast<Synth*>(synth)->render(static_cast<float*>(output), frames);
+int playCallback(void* output, void*, unsigned int frames, double, RtAudioStreamStatus, void* playing) {
+  auto& p = *static_cast<AudioOutput::Playing*>(playing);
+  p.synth->render(static_cast<float*>(output), frames);
+  if (SoundTap* tap = p.tap.load(std::memory_order_acquire)) tap->write(static_cast<const float*>(output), frames);
   return 0;
 }
 
@@ -157,7 +159,8 @@ std::string AudioOutput::open(const Options& options) {
     RtAudio::StreamOptions streamOptions;
     streamOptions.streamName = "Vitrine";
     unsigned int frames = options.bufferFrames;
-    device->openStream(&output, nullptr, RTAUDIO_FLOAT32, kSampleRate, &frames, &playCallback, synth.get(),
+    playing_.synth = synth.get();
+    device->openStream(&output, nullptr, RTAUDIO_FLOAT32, kSampleRate, &frames, &playCallback, &playing_,
                        &streamOptions, &streamError);
     if (std::string why = startStream(*device); !why.empty()) return why;
     synth_ = std::move(synth);
@@ -191,6 +194,22 @@ void AudioOutput::resume() {
   } catch (const RtAudioError& e) {
     streamError(RtAudioError::SYSTEM_ERROR, e.getMessage());
   }
+}
+
+SoundTap& AudioOutput::tap() {
+  if (tap_) return *tap_;
+  tap_ = std::make_unique<SoundTap>();
+  if (device_) {
+    playing_.tap.store(tap_.get(), std::memory_order_release);
+  } else if (!synth_) {
+    synth_ = std::make_unique<Synth>();
+    if (!music_.empty()) synth_->setMusic(&music_);
+  }
+  return *tap_;
+}
+
+void AudioOutput::renderUnheard(float* stereo, size_t frames) {
+  if (!device_ && synth_) synth_->render(stereo, frames);
 }
 
 void AudioOutput::setMuted(bool muted) {

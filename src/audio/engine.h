@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "audio/audio_sink.h"
+#include "audio/sound_tap.h"
 #include "audio/spsc_queue.h"
 #include "audio/synth.h"
 
@@ -122,12 +123,29 @@ class AudioOutput final : public AudioSink {
   // the analysis of the file is, so the picture follows what is heard.
   double musicSeconds() const;
 
+  // A copy of what the device plays from the first call on, for a live stream, read by the caller.
+  // Without a device, the synth is made at the first call and plays to nobody: renderUnheard renders
+  // it on the caller's clock instead, and the tap stays empty.
+  SoundTap& tap();
+  // Without a device, after tap(): the synth's next `frames` interleaved stereo frames. Nothing with
+  // a device (its callback renders them into the tap).
+  void renderUnheard(float* stereo, size_t frames);
+
+  // What the device's callback reads: the synth it renders, and where it copies what it played.
+  struct Playing {
+    Synth* synth = nullptr;
+    std::atomic<SoundTap*> tap{nullptr};
+  };
+
  private:
   std::string open(const Options& options);  // the reason it failed, or empty
   void post(Command::Kind kind, float value);
 
-  // Member order matters: the device's callback renders the synth, so the device goes first.
+  // Member order matters: the device's callback renders the synth and writes the tap, so the device
+  // goes first.
   std::unique_ptr<Synth> synth_;
+  std::unique_ptr<SoundTap> tap_;
+  Playing playing_;
   std::unique_ptr<RtAudio> device_;
   bool paused_ = false, muted_ = false;
   std::vector<float> music_;

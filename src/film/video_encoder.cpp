@@ -15,18 +15,6 @@
 namespace vitrine::film {
 namespace {
 
-// The film's tags, on the encoder (into H.264's and HEVC's VUI) and through it on the stream (the
-// container's colour boxes). The frames are BT.709 primaries with the sRGB transfer curve (iec61966-2-1),
-// since what is encoded are exactly the PNG's sRGB-encoded values, not values re-encoded on BT.709's
-// curve; the matrix is BT.709's (or none: RGB). ProRes's frame header has no code for the sRGB curve
-// (prores_ks writes "unknown" there), so a ProRes film says it in its 'colr' box only.
-void tagColour(AVCodecContext& codec, const FilmFormat& format) {
-  codec.color_primaries = AVCOL_PRI_BT709;
-  codec.color_trc = AVCOL_TRC_IEC61966_2_1;
-  codec.colorspace = format.rgb ? AVCOL_SPC_RGB : AVCOL_SPC_BT709;
-  codec.color_range = format.fullRange ? AVCOL_RANGE_JPEG : AVCOL_RANGE_MPEG;
-}
-
 // The encoder's own settings, set on its private options (AVCodecContext has a "profile" of its own that
 // would take ProRes's otherwise) and checked: quality for h264 and hevc, the profile for ProRes.
 void setEncoderOptions(AVCodecContext& codec, const FilmFormat& format, const std::string& target) {
@@ -74,7 +62,9 @@ struct VideoEncoder::State {
     codec->framerate = av_d2q(fps, 1'000'000);
     codec->time_base = av_inv_q(codec->framerate);
     codec->thread_count = 0;  // as many as the encoder finds useful
-    tagColour(*codec, format);
+    // ProRes's frame header has no code for the sRGB curve (prores_ks writes "unknown" there): a ProRes
+    // film says it in its 'colr' box only.
+    tagColour(*codec, format.rgb, format.fullRange);
     if (output->oformat->flags & AVFMT_GLOBALHEADER) codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     setEncoderOptions(*codec, format, target);
     const int opened = avcodec_open2(codec.get(), &encoder, nullptr);
@@ -95,16 +85,9 @@ struct VideoEncoder::State {
     frame->width = codec->width;
     frame->height = codec->height;
     checkAv(av_frame_get_buffer(frame.get(), 0), target, "allocating a frame");
-    if (!format.rgb) {
-      // BT.709's matrix from full-range RGB into limited (tv) or full (pc) range Y'CbCr; chroma
-      // subsampled from every input pixel (full chroma input), rounded accurately.
-      const AVPixelFormat source = format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24;
-      scaler.reset(sws_getContext(int(width), int(height), source, int(width), int(height), codec->pix_fmt,
-                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
-      if (!scaler) throw Error(fmt::format("Cannot write {}: swscale cannot convert RGB to {}.", target, format.pixelFormat));
-      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-      sws_setColorspaceDetails(scaler.get(), bt709, 1, bt709, format.fullRange ? 1 : 0, 0, 1 << 16, 1 << 16);
-    }
+    if (!format.rgb)
+      scaler = rgbToYuv(width, height, format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24, codec->pix_fmt,
+                        format.fullRange, target);
   }
 
   // The header, once every stream is there: before the first packet of either.

@@ -28,6 +28,7 @@
 
 #include "audio/audio_sink.h"
 #include "audio/engine.h"
+#include "audio/sound_tap.h"
 #include "audio/spsc_queue.h"
 #include "audio/synth.h"
 #include "audio/wav.h"
@@ -615,6 +616,44 @@ TEST_F(AudioWav, RefusesHalfFramesAndUnwritablePaths) {
 }
 
 // --- Output device ---
+
+// A stream's copy of the sound: read in order, and what the reader leaves when the ring is full is
+// dropped and counted, never waited for.
+TEST(SoundTap, KeepsOrderAndDropsWhatFindsItFull) {
+  SoundTap tap;
+  std::vector<float> stereo(2 * (SoundTap::kFrames + 100));
+  for (size_t i = 0; i < stereo.size(); ++i) stereo[i] = float(i);
+  tap.write(stereo.data(), 10);
+  std::vector<float> got;
+  tap.read(got);
+  ASSERT_EQ(got.size(), 20u);
+  EXPECT_EQ(got[19], 19.0f);
+  tap.write(stereo.data(), SoundTap::kFrames + 100);
+  EXPECT_EQ(tap.dropped(), 100u);
+  got.clear();
+  tap.read(got);
+  EXPECT_EQ(got.size(), 2 * SoundTap::kFrames);
+}
+
+// Without a device, a stream's tap makes the synth, which then renders on the caller's clock: a bell
+// posted after it sounds; before the tap, nothing is rendered.
+TEST(AudioOutputDevice, WithoutADeviceTheTapRendersOnTheCallersClock) {
+  testing::internal::CaptureStderr();
+  AudioOutput output(AudioOutput::Options{.useDevice = false});
+  testing::internal::GetCapturedStderr();
+  std::vector<float> block(2 * 4800, 0.0f);
+  output.bell(0.0, kE4);
+  output.renderUnheard(block.data(), 4800);
+  EXPECT_EQ(*std::max_element(block.begin(), block.end()), 0.0f);
+  output.tap();
+  output.bell(0.0, kE4);
+  output.renderUnheard(block.data(), 4800);
+  EXPECT_GT(*std::max_element(block.begin(), block.end()), 0.01f);
+  std::vector<float> tapped;
+  output.tap().read(tapped);
+  EXPECT_TRUE(tapped.empty());  // nothing is played, so nothing is copied
+}
+
 
 TEST(AudioOutputDevice, WithoutADeviceWarnsOnceAndRunsSilent) {
   testing::internal::CaptureStderr();

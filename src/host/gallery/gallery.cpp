@@ -13,6 +13,7 @@
 #include "gpu/check.h"
 #include "host/gallery/gallery_app.h"
 #include "host/present/output_warp_file.h"
+#include "host/present/stream_sink.h"
 #include "rig/pipewire_source.h"
 #include "scenes/adaptive_quality.h"
 
@@ -100,6 +101,8 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     outputs_.add(rig::makePipeWireOutput(device_, options.pipewire, options.pipewire, maths::OutputWarp{}, size),
                  /*warpGiven=*/true, "--pipewire");
   }
+  if (!options.stream.empty())  // the whole frame, at the main window's starting size
+    outputs_.add(makeStreamOutput(device_, options, window_.framebufferSize(), audio_), /*warpGiven=*/true, "--stream");
   input_.seed = options.seed;
   input_.reducedMotion = options.reducedMotion;
   for (const auto& line : missingAssets_) std::fprintf(stderr, "vitrine: missing asset: %s\n", line.c_str());

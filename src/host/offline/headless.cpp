@@ -10,6 +10,7 @@
 #include "host/input_script.h"
 #include "host/live_link.h"
 #include "host/modes.h"
+#include "host/offline/headless_stream.h"
 #include "host/offline/offscreen.h"
 #include "host/present/output_warp_file.h"
 #include "host/scene_renderer.h"
@@ -48,21 +49,28 @@ int runHeadless(const Options& options) {
   const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
   config.live = live.get();
   std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
-  if (!options.audioOut.empty()) config.audio = &sound.emplace(options.time);
+  if (!options.audioOut.empty() || !options.stream.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
   uint32_t rendered = 0;  // fewer than --frames when SIGTERM ends a --remote run early
-  std::optional<StopOnSignal> stop;  // a --remote run's, caught until the run has written its last frame
+  std::optional<StopOnSignal> stop;  // a --remote or --stream run's, caught until the run has written its last frame
   {
     Offscreen offscreen(device, config);
     std::optional<RemoteLink> remote;
     std::optional<params::PresetStore> presets;  // a client may save, apply and delete presets
+    std::optional<HeadlessStream> stream;
+    if (!options.stream.empty()) {
+      // Streamed live: frames are paced at 60 a second, and SIGTERM or Ctrl-C ends the run early.
+      stream.emplace(device, options, offscreen.size(), config.warp, *sound, live.get(), options.frames);
+      offscreen.addOutput(stream->output());
+      stop.emplace();
+    }
     if (options.remote) {
       // Driven by phones or a browser test: frames are paced at 60 a second, like a window's, and
       // SIGTERM ends the run early (the last frame is still written).
       remote.emplace(options.remoteBind, options.remoteAllow);
       remote->setPresets(&presets.emplace(openUserPresets()));
       if (live) remote->setMappings(live->mappingLines());
-      stop.emplace();
+      if (!stop) stop.emplace();
     }
     auto due = std::chrono::steady_clock::now();
     // Device memory after the first fifth of the frames (the soak's warm-up) and at the end; resident
@@ -79,10 +87,11 @@ int runHeadless(const Options& options) {
         if (live) for (const auto& [source, value] : applied.sources) live->sources().set(source, value);
         offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
         remote->publish(offscreen.renderer());
-        std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
       }
+      if (remote || stream) std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
       offscreen.renderFrame();
     }
+    if (stream) stream->finish(rendered);
     image = offscreen.readback();
     if (!options.savePreset.empty()) saveRunPreset(options, offscreen.parameters());  // the values it ended with
     const gpu::MemoryTally end = gpu::liveDeviceMemory();
@@ -97,7 +106,7 @@ int runHeadless(const Options& options) {
   }
   writeImage(out, image);
   if (events) events->close();
-  if (sound) audio::writeWav(options.audioOut, sound->render(double(rendered) / 60.0));
+  if (sound && !options.audioOut.empty()) audio::writeWav(options.audioOut, sound->render(double(rendered) / 60.0));
   std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,
               image.height, options.scene.c_str(), rendered, options.time, options.seed,
               device.properties().deviceName);
