@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -10,10 +11,14 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "film/libav.h"
+#include "film/parallel_scaler.h"
 #include "film/sound_track.h"
 
 namespace vitrine::film {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double>(to - from).count(); }
 
 // The film's tags, on the encoder (into H.264's and HEVC's VUI) and through it on the stream (the
 // container's colour boxes). The frames are BT.709 primaries with the sRGB transfer curve (iec61966-2-1),
@@ -52,20 +57,23 @@ struct VideoEncoder::State {
   OutputPtr output;
   CodecPtr codec;
   AVStream* stream = nullptr;
-  ScalerPtr scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
+  std::optional<ParallelScaler> scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
   FramePtr frame = makeFrame();
   PacketPtr packet = makePacket();
-  std::vector<uint8_t> rgb24;     // one frame's packed RGB, the scaler's input
+  std::vector<uint8_t> packed;    // a PNG's RGBA in layout's bytes: packed RGB, or B, G, R, 0
   std::vector<uint16_t> rgb48;    // the same at 16 bits a channel, for a 10-bit film
+  DisplayLayout layout;           // what addDisplay takes
   std::vector<uint16_t> widened;  // a PNG's RGBA at 16 bits, for a 10-bit film
   std::optional<SoundTrack> sound;
   uint32_t frames = 0;
   bool started = false;  // the header written: no stream can be added
   bool finished = false;
+  StageTimes times;
 
   State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
         const AVCodec& encoder)
       : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), pending(path),
+        layout(displayLayout(filmFormat)),
         output(openOutput(format.muxer, pending.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
     if (!codec) throw std::bad_alloc();
     codec->width = int(width);
@@ -95,16 +103,9 @@ struct VideoEncoder::State {
     frame->width = codec->width;
     frame->height = codec->height;
     checkAv(av_frame_get_buffer(frame.get(), 0), target, "allocating a frame");
-    if (!format.rgb) {
-      // BT.709's matrix from full-range RGB into limited (tv) or full (pc) range Y'CbCr; chroma
-      // subsampled from every input pixel (full chroma input), rounded accurately.
-      const AVPixelFormat source = format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24;
-      scaler.reset(sws_getContext(int(width), int(height), source, int(width), int(height), codec->pix_fmt,
-                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
-      if (!scaler) throw Error(fmt::format("Cannot write {}: swscale cannot convert RGB to {}.", target, format.pixelFormat));
-      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-      sws_setColorspaceDetails(scaler.get(), bt709, 1, bt709, format.fullRange ? 1 : 0, 0, 1 << 16, 1 << 16);
-    }
+    if (!format.rgb)
+      scaler.emplace(format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24, codec->pix_fmt, width, height, format.fullRange,
+                     target);
   }
 
   // The header, once every stream is there: before the first packet of either.
@@ -123,12 +124,29 @@ struct VideoEncoder::State {
   void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
 
   void send() {
+    const auto converted = Clock::now();
     start();
     frame->pts = frames++;
     encode(frame.get());
     // Onto the disk frame by frame: FFmpeg's file writer otherwise holds 256 KiB, which a small or
     // still film takes minutes to fill.
     avio_flush(output->pb);
+    times.encode += seconds(converted, Clock::now());
+  }
+
+  // Display values in `layout` into the frame, and on to the encoder.
+  void addDisplay(const uint8_t* bytes) {
+    const auto begun = Clock::now();
+    writable();
+    const size_t stride = size_t(width) * bytesPerPixel(layout);
+    if (layout == DisplayLayout::Bgr0) {  // copied, not converted, so the bytes come back as they went in
+      for (uint32_t y = 0; y < height; ++y)
+        std::memcpy(frame->data[0] + size_t(y) * size_t(frame->linesize[0]), bytes + y * stride, stride);
+    } else {
+      scaler->scale(bytes, stride, *frame);
+    }
+    times.convert += seconds(begun, Clock::now());
+    send();
   }
 
   // Display values, RGBA at 8 bits a channel, into the frame.
@@ -138,31 +156,22 @@ struct VideoEncoder::State {
       for (size_t i = 0; i < widened.size(); ++i) widened[i] = uint16_t(rgba[i] * 257);
       return addRgba16(widened.data());
     }
-    writable();
-    if (format.rgb) {  // bgr0: copied, not converted, so the bytes come back as they went in
-      for (uint32_t y = 0; y < height; ++y) {
-        uint8_t* row = frame->data[0] + size_t(y) * size_t(frame->linesize[0]);
-        const uint8_t* in = rgba + size_t(y) * width * 4;
-        for (uint32_t x = 0; x < width; ++x, in += 4, row += 4) row[0] = in[2], row[1] = in[1], row[2] = in[0], row[3] = 0;
-      }
-      return send();
+    const size_t pixels = size_t(width) * height;
+    if (format.rgb) {  // bgr0
+      packed.resize(pixels * 4);
+      for (size_t p = 0; p < pixels; ++p)
+        packed[p * 4] = rgba[p * 4 + 2], packed[p * 4 + 1] = rgba[p * 4 + 1], packed[p * 4 + 2] = rgba[p * 4], packed[p * 4 + 3] = 0;
+    } else {
+      packed.resize(pixels * 3);
+      for (size_t p = 0; p < pixels; ++p) std::memcpy(&packed[p * 3], rgba + p * 4, 3);
     }
-    rgb24.resize(size_t(width) * height * 3);
-    for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb24[p * 3], rgba + p * 4, 3);
-    const uint8_t* planes[1] = {rgb24.data()};
-    const int strides[1] = {int(width) * 3};
-    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
-    send();
+    addDisplay(packed.data());
   }
 
   void addRgba16(const uint16_t* rgba) {
-    writable();
     rgb48.resize(size_t(width) * height * 3);
     for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb48[p * 3], rgba + p * 4, 3 * sizeof(uint16_t));
-    const uint8_t* planes[1] = {reinterpret_cast<const uint8_t*>(rgb48.data())};
-    const int strides[1] = {int(width) * 6};
-    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
-    send();
+    addDisplay(reinterpret_cast<const uint8_t*>(rgb48.data()));
   }
 
   void checkSize(uint32_t w, uint32_t h) const {
@@ -206,6 +215,20 @@ void VideoEncoder::addFrame(const Picture& srgb) {
   state_->addRgba8(srgb.rgba.data());
 }
 
+void VideoEncoder::addDisplay(std::span<const std::byte> bytes) {
+  State& s = *state_;
+  s.checkSize(s.width, s.height);
+  const size_t expected = size_t(s.width) * s.height * bytesPerPixel(s.layout);
+  if (bytes.size() < expected)
+    throw Error(fmt::format("Cannot add a frame of {} bytes to {}: a {}x{} frame is {}.", bytes.size(), s.target,
+                            s.width, s.height, expected));
+  s.addDisplay(reinterpret_cast<const uint8_t*>(bytes.data()));
+}
+
+DisplayLayout VideoEncoder::layout() const { return state_->layout; }
+
+VideoEncoder::StageTimes VideoEncoder::times() const { return state_->times; }
+
 uint32_t VideoEncoder::frames() const { return state_->frames; }
 
 void VideoEncoder::addSoundTrack() {
@@ -221,8 +244,10 @@ void VideoEncoder::addSound(std::span<const float> stereo48k) {
   State& s = *state_;
   if (!s.sound) throw Error(fmt::format("Cannot add sound to {}: it has no sound track.", s.target));
   if (s.finished) throw Error(fmt::format("Cannot add sound to {}: the film is finished.", s.target));
+  const auto begun = Clock::now();
   s.start();
   s.sound->add(stereo48k);
+  s.times.sound += seconds(begun, Clock::now());
 }
 
 void VideoEncoder::finish() {

@@ -4,6 +4,7 @@
 // come, so memory stays flat however long the film. Only once the film is finished does the target's
 // name appear, by a rename. A film that is never finished (an error, Ctrl-C, a destructor reached
 // first) leaves its target as it was and no temporary behind.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -35,6 +36,11 @@ class VideoEncoder {
   void addFrame(const ImageRgba& linear);
   // The next frame, as display values already (a PNG read back): its bytes as they are.
   void addFrame(const Picture& srgb);
+  // The next frame, as display values already laid out as layout() says (shaders/host/film_pack.comp
+  // packs them on the GPU): converted and encoded with no other copy. The bytes are read only during
+  // the call.
+  void addDisplay(std::span<const std::byte> bytes);
+  DisplayLayout layout() const;
   uint32_t frames() const;
 
   // The sound's next stretch, interleaved stereo at 48 kHz, following the last: given as the film goes
@@ -45,6 +51,13 @@ class VideoEncoder {
   // silence to exactly round(frames / fps x 48000) frames, so both streams end together. Throws
   // vitrine::Error, the target left as it was.
   void finish();
+
+  // Seconds spent so far in each stage: the conversion into the encoder's pixel format, the video
+  // encoder and muxer, the sound encoder.
+  struct StageTimes {
+    double convert = 0.0, encode = 0.0, sound = 0.0;
+  };
+  StageTimes times() const;
 
  private:
   struct State;

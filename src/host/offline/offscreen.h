@@ -58,6 +58,9 @@ class Offscreen {
   // The last frame's input drawn again with no simulation step, as the gallery draws while paused.
   FrameTimes redrawFrame();
   ImageRgba readback();  // the output of the last frame
+  // The last frame's output on the GPU, for a pass submitted after renderFrame that reads it (a film's
+  // frames packed into its encoder's bytes); the next renderFrame overwrites it.
+  gpu::Image& output() { return output_; }
   uint64_t frames() const { return input_.frame; }
   // False when an input script still holds events past the last rendered frame.
   bool inputFinished() const { return !player_ || player_->finished(); }
