@@ -8,6 +8,10 @@
 
 #include "film/parallel_scaler.h"
 
+extern "C" {
+#include <libavutil/imgutils.h>
+}
+
 namespace vitrine::film {
 namespace {
 
@@ -26,7 +30,7 @@ int differingRows(const AVFrame& a, const AVFrame& b, AVPixelFormat format) {
   const AVPixFmtDescriptor* desc = av_pix_fmt_desc_get(format);
   for (int p = 0; p < av_pix_fmt_count_planes(format); ++p) {
     const int height = (p == 1 || p == 2) ? AV_CEIL_RSHIFT(a.height, desc->log2_chroma_h) : a.height;
-    const int bytes = std::min(a.linesize[p], b.linesize[p]);
+    const int bytes = av_image_get_linesize(format, a.width, p);  // the padding after is not the picture
     for (int y = 0; y < height; ++y)
       rows += std::memcmp(a.data[p] + y * a.linesize[p], b.data[p] + y * b.linesize[p], size_t(bytes)) != 0;
   }
