@@ -28,6 +28,9 @@ void main() {
   if (pc.packing == FILM_PACK_BGR0) {
     uvec3 c = display(i, false);
     words[i] = c.b | (c.g << 8u) | (c.r << 16u);
+  } else if (pc.packing == FILM_PACK_RGB0) {
+    uvec3 c = display(i, false);
+    words[i] = c.r | (c.g << 8u) | (c.b << 16u);
   } else if (pc.packing == FILM_PACK_RGB24) {
     uvec3 a = display(i * 4u, false), b = display(i * 4u + 1u, false);
     uvec3 c = display(i * 4u + 2u, false), d = display(i * 4u + 3u, false);

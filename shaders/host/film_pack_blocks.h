@@ -9,6 +9,7 @@ VITRINE_SHARED_BEGIN
 #define FILM_PACK_RGB24 0u  // R, G, B at 8 bits: four pixels into three words
 #define FILM_PACK_BGR0 1u   // B, G, R, 0 at 8 bits: a pixel a word
 #define FILM_PACK_RGB48 2u  // R, G, B at 16 bits: two pixels into three words
+#define FILM_PACK_RGB0 3u   // R, G, B, 0 at 8 bits: a pixel a word
 
 struct HostFilmPackPush {
   uint width;

@@ -202,7 +202,8 @@ DisplayLayout displayLayout(const FilmFormat& format) {
 uint32_t bytesPerPixel(DisplayLayout layout) {
   switch (layout) {
     case DisplayLayout::Rgb24: return 3;
-    case DisplayLayout::Bgr0: return 4;
+    case DisplayLayout::Bgr0:
+    case DisplayLayout::Rgb0: return 4;
     case DisplayLayout::Rgb48: return 6;
   }
   return 0;

@@ -41,9 +41,10 @@ struct FilmFormat {
 };
 
 // How a frame's display values lie when they reach the encoder: packed RGB at 8 bits (the Y'CbCr
-// films' converter input), B, G, R, 0 at 8 bits (an RGB film's own layout), or packed RGB at 16 bits
-// (a 10-bit film's converter input). Values as shaders/host/film_pack_blocks.h's FILM_PACK_*.
-enum class DisplayLayout : uint32_t { Rgb24 = 0, Bgr0 = 1, Rgb48 = 2 };
+// films' converter input), B, G, R, 0 at 8 bits (an RGB film's own layout), packed RGB at 16 bits
+// (a 10-bit film's converter input), or R, G, B, 0 at 8 bits (a hardware encoder's input). Values as
+// shaders/host/film_pack_blocks.h's FILM_PACK_*; displayLayout is a software encoder's.
+enum class DisplayLayout : uint32_t { Rgb24 = 0, Bgr0 = 1, Rgb48 = 2, Rgb0 = 3 };
 DisplayLayout displayLayout(const FilmFormat& format);
 uint32_t bytesPerPixel(DisplayLayout layout);
 

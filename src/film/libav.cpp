@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdarg>
+#include <cstdio>
 #include <new>
 
 #include "core/error.h"
@@ -62,6 +64,55 @@ AVDictionary* muxerOptions(const FilmFormat& format) {
   return options;
 }
 
-void quietLibav() { av_log_set_level(AV_LOG_ERROR); }
+namespace {
+
+thread_local LibavMessages* capturing = nullptr;
+
+void logOrKeep(void* object, int level, const char* format, va_list args) {
+  if (!capturing || level > av_log_get_level()) return av_log_default_callback(object, level, format, args);
+  char line[512];
+  std::vsnprintf(line, sizeof line, format, args);
+  capturing->keep(line);
+}
+
+}  // namespace
+
+void quietLibav() {
+  av_log_set_level(AV_LOG_ERROR);
+  av_log_set_callback(logOrKeep);
+}
+
+LibavMessages::LibavMessages() : outer_(capturing) {
+  quietLibav();
+  capturing = this;
+}
+
+LibavMessages::~LibavMessages() { capturing = outer_; }
+
+void LibavMessages::keep(std::string_view line) {
+  while (!line.empty() && (line.back() == '\n' || line.back() == ' ' || line.back() == '.')) line.remove_suffix(1);
+  if (line.empty()) return;
+  if (!text_.empty()) text_ += "; ";
+  text_ += line;
+}
+
+void tagColour(AVCodecContext& codec, bool rgb, bool fullRange) {
+  codec.color_primaries = AVCOL_PRI_BT709;
+  codec.color_trc = AVCOL_TRC_IEC61966_2_1;
+  codec.colorspace = rgb ? AVCOL_SPC_RGB : AVCOL_SPC_BT709;
+  codec.color_range = fullRange ? AVCOL_RANGE_JPEG : AVCOL_RANGE_MPEG;
+}
+
+ScalerPtr rgbToYuv(uint32_t width, uint32_t height, AVPixelFormat source, AVPixelFormat yuv, bool fullRange,
+                   const std::string& target) {
+  ScalerPtr scaler(sws_getContext(int(width), int(height), source, int(width), int(height), yuv,
+                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
+  if (!scaler)
+    throw Error(fmt::format("Cannot write {}: swscale cannot convert {} to {}.", target, av_get_pix_fmt_name(source),
+                            av_get_pix_fmt_name(yuv)));
+  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+  sws_setColorspaceDetails(scaler.get(), bt709, 1, bt709, fullRange ? 1 : 0, 0, 1 << 16, 1 << 16);
+  return scaler;
+}
 
 }  // namespace vitrine::film

@@ -5,6 +5,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/hwcontext.h>
 #include <libavutil/opt.h>
 #include <libavutil/pixdesc.h>
 #include <libswresample/swresample.h>
@@ -25,6 +26,9 @@ struct FreeFrame {
 };
 struct FreePacket {
   void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+struct FreeBuffer {
+  void operator()(AVBufferRef* b) const { av_buffer_unref(&b); }
 };
 struct FreeScaler {
   void operator()(SwsContext* s) const { sws_freeContext(s); }
@@ -48,6 +52,7 @@ struct CloseOutput {
 using CodecPtr = std::unique_ptr<AVCodecContext, FreeCodec>;
 using FramePtr = std::unique_ptr<AVFrame, FreeFrame>;
 using PacketPtr = std::unique_ptr<AVPacket, FreePacket>;
+using BufferPtr = std::unique_ptr<AVBufferRef, FreeBuffer>;
 using ScalerPtr = std::unique_ptr<SwsContext, FreeScaler>;
 using ResamplerPtr = std::unique_ptr<SwrContext, FreeResampler>;
 using InputPtr = std::unique_ptr<AVFormatContext, CloseInput>;
@@ -73,5 +78,33 @@ struct FilmFormat;
 AVDictionary* muxerOptions(const FilmFormat& format);
 // FFmpeg logs only what is wrong, on stderr: errors, not its banner of warnings for every stream.
 void quietLibav();
+
+// What FFmpeg logs on this thread while one is alive, kept rather than printed: why an encoder would
+// not open ("Cannot load libcuda.so.1") is then part of the sentence that says so. Other threads log
+// as before.
+class LibavMessages {
+ public:
+  LibavMessages();
+  ~LibavMessages();
+  LibavMessages(const LibavMessages&) = delete;
+  LibavMessages& operator=(const LibavMessages&) = delete;
+  // The messages so far, trimmed, joined by "; "; empty when there were none.
+  std::string text() const { return text_; }
+  void keep(std::string_view line);
+
+ private:
+  std::string text_;
+  LibavMessages* outer_;
+};
+
+// The film's and the stream's colour tags, on the encoder (into H.264's and HEVC's VUI) and through it
+// on the stream: BT.709 primaries with the sRGB transfer curve (iec61966-2-1), since what is encoded
+// are exactly the sRGB-encoded display values; the matrix BT.709's, or none for RGB.
+void tagColour(AVCodecContext& codec, bool rgb, bool fullRange);
+// The scaler from packed RGB (`source`: RGB24, RGBA, RGB48) to Y'CbCr as `yuv`, with BT.709's matrix,
+// into limited (tv) or full (pc) range, chroma subsampled from every input pixel, rounded accurately.
+// Throws vitrine::Error naming `target`.
+ScalerPtr rgbToYuv(uint32_t width, uint32_t height, AVPixelFormat source, AVPixelFormat yuv, bool fullRange,
+                   const std::string& target);
 
 }  // namespace vitrine::film

@@ -19,19 +19,6 @@ constexpr uint32_t kAlign = 16;    // band edges: the chroma rows' 2:1 and the o
 constexpr uint32_t kMargin = 32;   // rows read beyond a band's own: wider than bicubic's 2:1 chroma filter
 constexpr uint32_t kMinRows = 64;  // narrower bands cost more in margins than they save
 
-ScalerPtr makeScaler(AVPixelFormat source, AVPixelFormat target, uint32_t width, uint32_t height, bool fullRange,
-                     const std::string& film) {
-  // BT.709's matrix from full-range RGB into limited (tv) or full (pc) range Y'CbCr; chroma subsampled
-  // from every input pixel (full chroma input), rounded accurately.
-  ScalerPtr scaler(sws_getContext(int(width), int(height), source, int(width), int(height), target,
-                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
-  if (!scaler)
-    throw Error(fmt::format("Cannot write {}: swscale cannot convert RGB to {}.", film, av_get_pix_fmt_name(target)));
-  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-  sws_setColorspaceDetails(scaler.get(), bt709, 1, bt709, fullRange ? 1 : 0, 0, 1 << 16, 1 << 16);
-  return scaler;
-}
-
 }  // namespace
 
 ParallelScaler::ParallelScaler(AVPixelFormat source, AVPixelFormat target, uint32_t width, uint32_t height,
@@ -46,7 +33,7 @@ ParallelScaler::ParallelScaler(AVPixelFormat source, AVPixelFormat target, uint3
     band.rows = std::min(step, height - first);
     band.from = first >= kMargin ? first - kMargin : 0;
     band.height = std::min(height, first + band.rows + kMargin) - band.from;
-    band.scaler = makeScaler(source, target, width, band.height, fullRange, film);
+    band.scaler = rgbToYuv(width, band.height, source, target, fullRange, film);
     bands_.push_back(std::move(band));
   }
   if (bands_.size() == 1) return;

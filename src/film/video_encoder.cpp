@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "film/hardware_encoder.h"
 #include "film/libav.h"
 #include "film/parallel_scaler.h"
 #include "film/sound_track.h"
@@ -20,16 +21,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double>(to - from).count(); }
 
-// The film's tags, on the encoder (into H.264's and HEVC's VUI) and through it on the stream (the
-// container's colour boxes). The frames are BT.709 primaries with the sRGB transfer curve (iec61966-2-1),
-// since what is encoded are exactly the PNG's sRGB-encoded values, not values re-encoded on BT.709's
-// curve; the matrix is BT.709's (or none: RGB). ProRes's frame header has no code for the sRGB curve
-// (prores_ks writes "unknown" there), so a ProRes film says it in its 'colr' box only.
-void tagColour(AVCodecContext& codec, const FilmFormat& format) {
-  codec.color_primaries = AVCOL_PRI_BT709;
-  codec.color_trc = AVCOL_TRC_IEC61966_2_1;
-  codec.colorspace = format.rgb ? AVCOL_SPC_RGB : AVCOL_SPC_BT709;
-  codec.color_range = format.fullRange ? AVCOL_RANGE_JPEG : AVCOL_RANGE_MPEG;
+// Whether a hardware encoder may take the film: h264 or hevc as yuv420p in limited range, what NVENC and
+// VAAPI give (HardwareEncoder); a film it cannot take, or none opens, is encoded in software as always.
+bool hardwareMayEncode(const FilmFormat& format) {
+  return (format.codec == Codec::H264 || format.codec == Codec::Hevc) && format.pixelFormat == "yuv420p" &&
+         !format.fullRange;
 }
 
 // The encoder's own settings, set on its private options (AVCodecContext has a "profile" of its own that
@@ -56,6 +52,10 @@ struct VideoEncoder::State {
   PendingFile pending;
   OutputPtr output;
   CodecPtr codec;
+  std::optional<HardwareEncoder> hardware;  // NVENC or VAAPI, where one opened: it owns the codec then
+  AVCodecContext* context = nullptr;        // the encoder's: codec's or hardware's
+  std::string choice;                       // which encoder, and why not the hardware ones
+  std::string hardwareRefusals;             // "; h264_nvenc: REASON; h264_vaapi: REASON", when none opened
   AVStream* stream = nullptr;
   std::optional<ParallelScaler> scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
   FramePtr frame = makeFrame();
@@ -73,32 +73,70 @@ struct VideoEncoder::State {
   State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
         const AVCodec& encoder)
       : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), pending(path),
-        layout(displayLayout(filmFormat)),
-        output(openOutput(format.muxer, pending.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
+        output(openOutput(format.muxer, pending.path().string(), target)) {
+    layout = displayLayout(format);
+    choice = format.encoder;
+    if (hardwareMayEncode(format)) openHardware();
+    if (hardware) {
+      context = &hardware->codec();
+      layout = DisplayLayout::Rgb0;
+      choice = hardware->choice();
+    } else {
+      openSoftware(encoder);
+    }
+
+    stream = avformat_new_stream(output.get(), nullptr);
+    if (!stream) throw std::bad_alloc();
+    checkAv(avcodec_parameters_from_context(stream->codecpar, context), target, "describing the video stream");
+    // Apple's players play HEVC in MP4 and QuickTime only under the 'hvc1' tag (FFmpeg's default is 'hev1').
+    if (format.codec == Codec::Hevc && format.container != Container::Mkv)
+      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
+    stream->time_base = context->time_base;
+    stream->avg_frame_rate = context->framerate;
+  }
+
+  // NVENC, then VAAPI, each opened for real; none is no error: the film is encoded in software.
+  void openHardware() {
+    EncoderRequest request;
+    request.codec = format.codec;
+    request.width = width;
+    request.height = height;
+    request.fps = fps;
+    request.bitrate = format.bitrate;
+    request.crf = format.crf;
+    request.globalHeader = (output->oformat->flags & AVFMT_GLOBALHEADER) != 0;
+    request.order = {EncoderKind::Nvenc, EncoderKind::Vaapi};
+    request.announce = false;
+    try {
+      hardware.emplace(request, target);
+    } catch (const Error& none) {
+      std::string why = none.what();
+      if (why.ends_with('.')) why.pop_back();
+      const size_t reasons = why.find("; ");
+      hardwareRefusals = reasons == std::string::npos ? why : why.substr(reasons);
+    }
+  }
+
+  void openSoftware(const AVCodec& encoder) {
+    codec.reset(avcodec_alloc_context3(&encoder));
     if (!codec) throw std::bad_alloc();
+    context = codec.get();
+    if (!hardwareRefusals.empty()) choice = fmt::format("{}{}", format.encoder, hardwareRefusals);
     codec->width = int(width);
     codec->height = int(height);
     codec->pix_fmt = av_get_pix_fmt(format.pixelFormat.c_str());
     codec->framerate = av_d2q(fps, 1'000'000);
     codec->time_base = av_inv_q(codec->framerate);
     codec->thread_count = 0;  // as many as the encoder finds useful
-    tagColour(*codec, format);
+    // ProRes's frame header has no code for the sRGB curve (prores_ks writes "unknown" there): a ProRes
+    // film says it in its 'colr' box only.
+    tagColour(*codec, format.rgb, format.fullRange);
     if (output->oformat->flags & AVFMT_GLOBALHEADER) codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     setEncoderOptions(*codec, format, target);
     const int opened = avcodec_open2(codec.get(), &encoder, nullptr);
     if (opened < 0)
       throw Error(fmt::format("Cannot write {}: {} would not start for {} {}x{} at {:g} fps: {}.", target, format.encoder,
                               format.pixelFormat, width, height, fps, avErrorText(opened)));
-
-    stream = avformat_new_stream(output.get(), nullptr);
-    if (!stream) throw std::bad_alloc();
-    checkAv(avcodec_parameters_from_context(stream->codecpar, codec.get()), target, "describing the video stream");
-    // Apple's players play HEVC in MP4 and QuickTime only under the 'hvc1' tag (FFmpeg's default is 'hev1').
-    if (format.codec == Codec::Hevc && format.container != Container::Mkv)
-      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
-    stream->time_base = codec->time_base;
-    stream->avg_frame_rate = codec->framerate;
-
     frame->format = codec->pix_fmt;
     frame->width = codec->width;
     frame->height = codec->height;
@@ -118,16 +156,22 @@ struct VideoEncoder::State {
     checkAv(header, target, "writing the header");
   }
 
-  void encode(const AVFrame* next) { encodeInto(*codec, next, *output, *stream, *packet, target, "the video"); }
+  void encode(const AVFrame* next) { encodeInto(*context, next, *output, *stream, *packet, target, "the video"); }
 
   // The frame buffer may still be referenced by the encoder (frame threads, lookahead): a fresh one then.
   void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
 
   void send() {
+    frame->pts = frames;
+    send(*frame);
+  }
+
+  // `next`, its pts set to the next frame's, into the encoder.
+  void send(const AVFrame& next) {
     const auto converted = Clock::now();
     start();
-    frame->pts = frames++;
-    encode(frame.get());
+    ++frames;
+    encode(&next);
     // Onto the disk frame by frame: FFmpeg's file writer otherwise holds 256 KiB, which a small or
     // still film takes minutes to fill.
     avio_flush(output->pb);
@@ -137,6 +181,11 @@ struct VideoEncoder::State {
   // Display values in `layout` into the frame, and on to the encoder.
   void addDisplay(const uint8_t* bytes) {
     const auto begun = Clock::now();
+    if (hardware) {  // RGB0: the hardware encoder's own input
+      const AVFrame& next = hardware->frame(bytes, frames);
+      times.convert += seconds(begun, Clock::now());
+      return send(next);
+    }
     writable();
     const size_t stride = size_t(width) * bytesPerPixel(layout);
     if (layout == DisplayLayout::Bgr0) {  // copied, not converted, so the bytes come back as they went in
@@ -156,6 +205,7 @@ struct VideoEncoder::State {
       for (size_t i = 0; i < widened.size(); ++i) widened[i] = uint16_t(rgba[i] * 257);
       return addRgba16(widened.data());
     }
+    if (hardware) return addDisplay(rgba);  // RGBA is RGB0, the alpha byte ignored
     const size_t pixels = size_t(width) * height;
     if (format.rgb) {  // bgr0
       packed.resize(pixels * 4);
@@ -226,6 +276,8 @@ void VideoEncoder::addDisplay(std::span<const std::byte> bytes) {
 }
 
 DisplayLayout VideoEncoder::layout() const { return state_->layout; }
+
+const std::string& VideoEncoder::encoderChoice() const { return state_->choice; }
 
 VideoEncoder::StageTimes VideoEncoder::times() const { return state_->times; }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <string>
 
 #include "film/film_format.h"
 #include "image/image.h"
@@ -41,6 +42,10 @@ class VideoEncoder {
   // the call.
   void addDisplay(std::span<const std::byte> bytes);
   DisplayLayout layout() const;
+  // The encoder that took the film, and why the hardware ones before it did not ("libx264; h264_nvenc:
+  // Cannot load libcuda.so.1; h264_vaapi: no render node in /dev/dri"). An h264 or hevc film in yuv420p
+  // and limited range takes NVENC, then VAAPI, where one opens, and the software encoder otherwise.
+  const std::string& encoderChoice() const;
   uint32_t frames() const;
 
   // The sound's next stretch, interleaved stereo at 48 kHz, following the last: given as the film goes

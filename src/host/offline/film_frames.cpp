@@ -37,7 +37,8 @@ std::vector<uint32_t> displayTable() {
 uint32_t pixelsPerInvocation(film::DisplayLayout layout) {
   switch (layout) {
     case film::DisplayLayout::Rgb24: return 4;
-    case film::DisplayLayout::Bgr0: return 1;
+    case film::DisplayLayout::Bgr0:
+    case film::DisplayLayout::Rgb0: return 1;
     case film::DisplayLayout::Rgb48: return 2;
   }
   return 1;
@@ -48,7 +49,7 @@ uint32_t pixelsPerInvocation(film::DisplayLayout layout) {
 FilmFrames::FilmFrames(const gpu::Device& device, VkExtent2D size, film::DisplayLayout layout, uint32_t slots)
     : device_(device), size_(size), layout_(layout),
       groups_(uint32_t((uint64_t(size.width) * size.height + pixelsPerInvocation(layout) - 1) / pixelsPerInvocation(layout))),
-      byteCount_(size_t(groups_) * (layout == film::DisplayLayout::Bgr0 ? 4 : 12)),
+      byteCount_(size_t(groups_) * (pixelsPerInvocation(layout) == 1 ? 4 : 12)),
       programs_(device), program_(programs_, "host/film_pack.comp"),
       table_(device, 65536 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
              gpu::MemoryUse::Device, "film display table"),

@@ -53,15 +53,15 @@ struct FilmStages {
     return env && std::string(env) == "1";
   }
   void print(uint32_t frames, double wall, const film::VideoEncoder::StageTimes& encoder, const FilmFrames* packed,
-             double postWaits) const {
+             double postWaits, const std::string& choice) const {
     const double n = std::max(1u, frames) / 1000.0;
     std::printf("film stages (ms a frame): render %.2f, pack %.2f, sound %.2f, waiting for a slot %.2f, waiting for the "
                 "encoder's queue %.2f | encoder thread: waiting for the copy %.2f, convert %.2f, encode %.2f, sound "
-                "encode %.2f | %u frames in %.2f s (%.1f frames/s), %s\n",
+                "encode %.2f | %u frames in %.2f s (%.1f frames/s), %s, encoded with %s\n",
                 render / n, pack / n, sound / n, packed ? packed->slotWaits() / n : 0.0, postWaits / n,
                 packed ? packed->copyWaits() / n : 0.0, encoder.convert / n, encoder.encode / n, encoder.sound / n,
                 frames, wall, wall > 0 ? frames / wall : 0.0,
-                gpuPacked ? "packed on the GPU" : "averaged and packed on the CPU");
+                gpuPacked ? "packed on the GPU" : "averaged and packed on the CPU", choice.c_str());
   }
 };
 
@@ -158,7 +158,9 @@ int runRecordFilm(const Options& options) {
     std::fprintf(stderr, "vitrine: %zu of %s's sounds came over %.1f s after their time and play late\n",
                  sound->late(), options.scene.c_str(), FilmSound::kSoundLag);
   encoder.finish();
-  if (FilmStages::wanted()) stages.print(frames, secondsSince(started), encoder.times(), packedFrames ? &*packedFrames : nullptr, postWaits);
+  if (FilmStages::wanted())
+    stages.print(frames, secondsSince(started), encoder.times(), packedFrames ? &*packedFrames : nullptr, postWaits,
+                 encoder.encoderChoice());
   packedFrames.reset();
   if (const std::string line = resident.line(); !line.empty()) std::printf("%s\n", line.c_str());
   std::printf("recorded %u frames into %s (%ux%u, %s %s in %s, %.6g fps, %u samples a frame, %s, scene %s) on %s\n",
