@@ -194,4 +194,19 @@ FilmFormat resolveFilm(const std::filesystem::path& target, const FilmRequest& r
   return format;
 }
 
+DisplayLayout displayLayout(const FilmFormat& format) {
+  if (format.deep) return DisplayLayout::Rgb48;
+  return format.rgb ? DisplayLayout::Bgr0 : DisplayLayout::Rgb24;
+}
+
+uint32_t bytesPerPixel(DisplayLayout layout) {
+  switch (layout) {
+    case DisplayLayout::Rgb24: return 3;
+    case DisplayLayout::Bgr0:
+    case DisplayLayout::Rgb0: return 4;
+    case DisplayLayout::Rgb48: return 6;
+  }
+  return 0;
+}
+
 }  // namespace vitrine::film

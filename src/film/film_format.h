@@ -40,6 +40,14 @@ struct FilmFormat {
   std::string audioEncoder;   // "aac" beside h264 and hevc; "pcm_s24le" beside prores and ffv1
 };
 
+// How a frame's display values lie when they reach the encoder: packed RGB at 8 bits (the Y'CbCr
+// films' converter input), B, G, R, 0 at 8 bits (an RGB film's own layout), packed RGB at 16 bits
+// (a 10-bit film's converter input), or R, G, B, 0 at 8 bits (a hardware encoder's input). Values as
+// shaders/host/film_pack_blocks.h's FILM_PACK_*; displayLayout is a software encoder's.
+enum class DisplayLayout : uint32_t { Rgb24 = 0, Bgr0 = 1, Rgb48 = 2, Rgb0 = 3 };
+DisplayLayout displayLayout(const FilmFormat& format);
+uint32_t bytesPerPixel(DisplayLayout layout);
+
 // The container a film's name asks for, from its extension in any case; nothing for any other name.
 std::optional<Container> containerFromName(const std::filesystem::path& path);
 bool isFilmName(const std::filesystem::path& path);

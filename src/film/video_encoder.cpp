@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -9,11 +10,23 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "film/hardware_encoder.h"
 #include "film/libav.h"
+#include "film/parallel_scaler.h"
 #include "film/sound_track.h"
 
 namespace vitrine::film {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double>(to - from).count(); }
+
+// Whether a hardware encoder may take the film: h264 or hevc as yuv420p in limited range, what NVENC and
+// VAAPI give (HardwareEncoder); a film it cannot take, or none opens, is encoded in software as always.
+bool hardwareMayEncode(const FilmFormat& format) {
+  return (format.codec == Codec::H264 || format.codec == Codec::Hevc) && format.pixelFormat == "yuv420p" &&
+         !format.fullRange;
+}
 
 // The encoder's own settings, set on its private options (AVCodecContext has a "profile" of its own that
 // would take ProRes's otherwise) and checked: quality for h264 and hevc, the profile for ProRes.
@@ -39,23 +52,76 @@ struct VideoEncoder::State {
   PendingFile pending;
   OutputPtr output;
   CodecPtr codec;
+  std::optional<HardwareEncoder> hardware;  // NVENC or VAAPI, where one opened: it owns the codec then
+  AVCodecContext* context = nullptr;        // the encoder's: codec's or hardware's
+  std::string choice;                       // which encoder, and why not the hardware ones
+  std::string hardwareRefusals;             // "; h264_nvenc: REASON; h264_vaapi: REASON", when none opened
   AVStream* stream = nullptr;
-  ScalerPtr scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
+  std::optional<ParallelScaler> scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
   FramePtr frame = makeFrame();
   PacketPtr packet = makePacket();
-  std::vector<uint8_t> rgb24;     // one frame's packed RGB, the scaler's input
+  std::vector<uint8_t> packed;    // a PNG's RGBA in layout's bytes: packed RGB, or B, G, R, 0
   std::vector<uint16_t> rgb48;    // the same at 16 bits a channel, for a 10-bit film
+  DisplayLayout layout;           // what addDisplay takes
   std::vector<uint16_t> widened;  // a PNG's RGBA at 16 bits, for a 10-bit film
   std::optional<SoundTrack> sound;
   uint32_t frames = 0;
   bool started = false;  // the header written: no stream can be added
   bool finished = false;
+  StageTimes times;
 
   State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
         const AVCodec& encoder)
       : target(path.string()), format(filmFormat), width(w), height(h), fps(rate), pending(path),
-        output(openOutput(format.muxer, pending.path().string(), target)), codec(avcodec_alloc_context3(&encoder)) {
+        output(openOutput(format.muxer, pending.path().string(), target)) {
+    layout = displayLayout(format);
+    choice = format.encoder;
+    if (hardwareMayEncode(format)) openHardware();
+    if (hardware) {
+      context = &hardware->codec();
+      layout = DisplayLayout::Rgb0;
+      choice = hardware->choice();
+    } else {
+      openSoftware(encoder);
+    }
+
+    stream = avformat_new_stream(output.get(), nullptr);
+    if (!stream) throw std::bad_alloc();
+    checkAv(avcodec_parameters_from_context(stream->codecpar, context), target, "describing the video stream");
+    // Apple's players play HEVC in MP4 and QuickTime only under the 'hvc1' tag (FFmpeg's default is 'hev1').
+    if (format.codec == Codec::Hevc && format.container != Container::Mkv)
+      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
+    stream->time_base = context->time_base;
+    stream->avg_frame_rate = context->framerate;
+  }
+
+  // NVENC, then VAAPI, each opened for real; none is no error: the film is encoded in software.
+  void openHardware() {
+    EncoderRequest request;
+    request.codec = format.codec;
+    request.width = width;
+    request.height = height;
+    request.fps = fps;
+    request.bitrate = format.bitrate;
+    request.crf = format.crf;
+    request.globalHeader = (output->oformat->flags & AVFMT_GLOBALHEADER) != 0;
+    request.order = {EncoderKind::Nvenc, EncoderKind::Vaapi};
+    request.announce = false;
+    try {
+      hardware.emplace(request, target);
+    } catch (const Error& none) {
+      std::string why = none.what();
+      if (why.ends_with('.')) why.pop_back();
+      const size_t reasons = why.find("; ");
+      hardwareRefusals = reasons == std::string::npos ? why : why.substr(reasons);
+    }
+  }
+
+  void openSoftware(const AVCodec& encoder) {
+    codec.reset(avcodec_alloc_context3(&encoder));
     if (!codec) throw std::bad_alloc();
+    context = codec.get();
+    if (!hardwareRefusals.empty()) choice = fmt::format("{}{}", format.encoder, hardwareRefusals);
     codec->width = int(width);
     codec->height = int(height);
     codec->pix_fmt = av_get_pix_fmt(format.pixelFormat.c_str());
@@ -71,23 +137,13 @@ struct VideoEncoder::State {
     if (opened < 0)
       throw Error(fmt::format("Cannot write {}: {} would not start for {} {}x{} at {:g} fps: {}.", target, format.encoder,
                               format.pixelFormat, width, height, fps, avErrorText(opened)));
-
-    stream = avformat_new_stream(output.get(), nullptr);
-    if (!stream) throw std::bad_alloc();
-    checkAv(avcodec_parameters_from_context(stream->codecpar, codec.get()), target, "describing the video stream");
-    // Apple's players play HEVC in MP4 and QuickTime only under the 'hvc1' tag (FFmpeg's default is 'hev1').
-    if (format.codec == Codec::Hevc && format.container != Container::Mkv)
-      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
-    stream->time_base = codec->time_base;
-    stream->avg_frame_rate = codec->framerate;
-
     frame->format = codec->pix_fmt;
     frame->width = codec->width;
     frame->height = codec->height;
     checkAv(av_frame_get_buffer(frame.get(), 0), target, "allocating a frame");
     if (!format.rgb)
-      scaler = rgbToYuv(width, height, format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24, codec->pix_fmt,
-                        format.fullRange, target);
+      scaler.emplace(format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24, codec->pix_fmt, width, height, format.fullRange,
+                     target);
   }
 
   // The header, once every stream is there: before the first packet of either.
@@ -100,18 +156,46 @@ struct VideoEncoder::State {
     checkAv(header, target, "writing the header");
   }
 
-  void encode(const AVFrame* next) { encodeInto(*codec, next, *output, *stream, *packet, target, "the video"); }
+  void encode(const AVFrame* next) { encodeInto(*context, next, *output, *stream, *packet, target, "the video"); }
 
   // The frame buffer may still be referenced by the encoder (frame threads, lookahead): a fresh one then.
   void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
 
   void send() {
+    frame->pts = frames;
+    send(*frame);
+  }
+
+  // `next`, its pts set to the next frame's, into the encoder.
+  void send(const AVFrame& next) {
+    const auto converted = Clock::now();
     start();
-    frame->pts = frames++;
-    encode(frame.get());
+    ++frames;
+    encode(&next);
     // Onto the disk frame by frame: FFmpeg's file writer otherwise holds 256 KiB, which a small or
     // still film takes minutes to fill.
     avio_flush(output->pb);
+    times.encode += seconds(converted, Clock::now());
+  }
+
+  // Display values in `layout` into the frame, and on to the encoder.
+  void addDisplay(const uint8_t* bytes) {
+    const auto begun = Clock::now();
+    if (hardware) {  // RGB0: the hardware encoder's own input
+      const AVFrame& next = hardware->frame(bytes, frames);
+      times.convert += seconds(begun, Clock::now());
+      return send(next);
+    }
+    writable();
+    const size_t stride = size_t(width) * bytesPerPixel(layout);
+    if (layout == DisplayLayout::Bgr0) {  // copied, not converted, so the bytes come back as they went in
+      for (uint32_t y = 0; y < height; ++y)
+        std::memcpy(frame->data[0] + size_t(y) * size_t(frame->linesize[0]), bytes + y * stride, stride);
+    } else {
+      scaler->scale(bytes, stride, *frame);
+    }
+    times.convert += seconds(begun, Clock::now());
+    send();
   }
 
   // Display values, RGBA at 8 bits a channel, into the frame.
@@ -121,31 +205,23 @@ struct VideoEncoder::State {
       for (size_t i = 0; i < widened.size(); ++i) widened[i] = uint16_t(rgba[i] * 257);
       return addRgba16(widened.data());
     }
-    writable();
-    if (format.rgb) {  // bgr0: copied, not converted, so the bytes come back as they went in
-      for (uint32_t y = 0; y < height; ++y) {
-        uint8_t* row = frame->data[0] + size_t(y) * size_t(frame->linesize[0]);
-        const uint8_t* in = rgba + size_t(y) * width * 4;
-        for (uint32_t x = 0; x < width; ++x, in += 4, row += 4) row[0] = in[2], row[1] = in[1], row[2] = in[0], row[3] = 0;
-      }
-      return send();
+    if (hardware) return addDisplay(rgba);  // RGBA is RGB0, the alpha byte ignored
+    const size_t pixels = size_t(width) * height;
+    if (format.rgb) {  // bgr0
+      packed.resize(pixels * 4);
+      for (size_t p = 0; p < pixels; ++p)
+        packed[p * 4] = rgba[p * 4 + 2], packed[p * 4 + 1] = rgba[p * 4 + 1], packed[p * 4 + 2] = rgba[p * 4], packed[p * 4 + 3] = 0;
+    } else {
+      packed.resize(pixels * 3);
+      for (size_t p = 0; p < pixels; ++p) std::memcpy(&packed[p * 3], rgba + p * 4, 3);
     }
-    rgb24.resize(size_t(width) * height * 3);
-    for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb24[p * 3], rgba + p * 4, 3);
-    const uint8_t* planes[1] = {rgb24.data()};
-    const int strides[1] = {int(width) * 3};
-    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
-    send();
+    addDisplay(packed.data());
   }
 
   void addRgba16(const uint16_t* rgba) {
-    writable();
     rgb48.resize(size_t(width) * height * 3);
     for (size_t p = 0; p < size_t(width) * height; ++p) std::memcpy(&rgb48[p * 3], rgba + p * 4, 3 * sizeof(uint16_t));
-    const uint8_t* planes[1] = {reinterpret_cast<const uint8_t*>(rgb48.data())};
-    const int strides[1] = {int(width) * 6};
-    sws_scale(scaler.get(), planes, strides, 0, int(height), frame->data, frame->linesize);
-    send();
+    addDisplay(reinterpret_cast<const uint8_t*>(rgb48.data()));
   }
 
   void checkSize(uint32_t w, uint32_t h) const {
@@ -189,6 +265,22 @@ void VideoEncoder::addFrame(const Picture& srgb) {
   state_->addRgba8(srgb.rgba.data());
 }
 
+void VideoEncoder::addDisplay(std::span<const std::byte> bytes) {
+  State& s = *state_;
+  s.checkSize(s.width, s.height);
+  const size_t expected = size_t(s.width) * s.height * bytesPerPixel(s.layout);
+  if (bytes.size() < expected)
+    throw Error(fmt::format("Cannot add a frame of {} bytes to {}: a {}x{} frame is {}.", bytes.size(), s.target,
+                            s.width, s.height, expected));
+  s.addDisplay(reinterpret_cast<const uint8_t*>(bytes.data()));
+}
+
+DisplayLayout VideoEncoder::layout() const { return state_->layout; }
+
+const std::string& VideoEncoder::encoderChoice() const { return state_->choice; }
+
+VideoEncoder::StageTimes VideoEncoder::times() const { return state_->times; }
+
 uint32_t VideoEncoder::frames() const { return state_->frames; }
 
 void VideoEncoder::addSoundTrack() {
@@ -204,8 +296,10 @@ void VideoEncoder::addSound(std::span<const float> stereo48k) {
   State& s = *state_;
   if (!s.sound) throw Error(fmt::format("Cannot add sound to {}: it has no sound track.", s.target));
   if (s.finished) throw Error(fmt::format("Cannot add sound to {}: the film is finished.", s.target));
+  const auto begun = Clock::now();
   s.start();
   s.sound->add(stereo48k);
+  s.times.sound += seconds(begun, Clock::now());
 }
 
 void VideoEncoder::finish() {

@@ -4,10 +4,12 @@
 // come, so memory stays flat however long the film. Only once the film is finished does the target's
 // name appear, by a rename. A film that is never finished (an error, Ctrl-C, a destructor reached
 // first) leaves its target as it was and no temporary behind.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <string>
 
 #include "film/film_format.h"
 #include "image/image.h"
@@ -35,6 +37,15 @@ class VideoEncoder {
   void addFrame(const ImageRgba& linear);
   // The next frame, as display values already (a PNG read back): its bytes as they are.
   void addFrame(const Picture& srgb);
+  // The next frame, as display values already laid out as layout() says (shaders/host/film_pack.comp
+  // packs them on the GPU): converted and encoded with no other copy. The bytes are read only during
+  // the call.
+  void addDisplay(std::span<const std::byte> bytes);
+  DisplayLayout layout() const;
+  // The encoder that took the film, and why the hardware ones before it did not ("libx264; h264_nvenc:
+  // Cannot load libcuda.so.1; h264_vaapi: no render node in /dev/dri"). An h264 or hevc film in yuv420p
+  // and limited range takes NVENC, then VAAPI, where one opens, and the software encoder otherwise.
+  const std::string& encoderChoice() const;
   uint32_t frames() const;
 
   // The sound's next stretch, interleaved stereo at 48 kHz, following the last: given as the film goes
@@ -45,6 +56,13 @@ class VideoEncoder {
   // silence to exactly round(frames / fps x 48000) frames, so both streams end together. Throws
   // vitrine::Error, the target left as it was.
   void finish();
+
+  // Seconds spent so far in each stage: the conversion into the encoder's pixel format, the video
+  // encoder and muxer, the sound encoder.
+  struct StageTimes {
+    double convert = 0.0, encode = 0.0, sound = 0.0;
+  };
+  StageTimes times() const;
 
  private:
   struct State;

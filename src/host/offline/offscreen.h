@@ -62,6 +62,9 @@ class Offscreen {
   // Another output drawn after the main one each frame, through its own warp (a published node's, in a
   // benchmark); it must outlive this run's frames.
   void addOutput(Output& output) { others_.push_back(&output); }
+  // The last frame's output on the GPU, for a pass submitted after renderFrame that reads it (a film's
+  // frames packed into its encoder's bytes); the next renderFrame overwrites it.
+  gpu::Image& output() { return output_; }
   uint64_t frames() const { return input_.frame; }
   // False when an input script still holds events past the last rendered frame.
   bool inputFinished() const { return !player_ || player_->finished(); }

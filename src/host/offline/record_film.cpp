@@ -4,6 +4,12 @@
 // second behind the frames (FilmSound), so the film streams to disk and memory stays flat however long
 // it is. Nothing named like the target exists until the film is whole: an error or Ctrl-C leaves the
 // target as it was and no temporary.
+//
+// The frames go through a pipeline: the GPU packs each rendered frame into the encoder's bytes and
+// copies them into one of a few slots (FilmFrames), and the encoder converts and encodes them on its
+// own thread (EncoderThread) while the next frames render. A film of several samples a frame averages
+// them on the CPU as before and hands the average to the same thread. VITRINE_FILM_STAGES=1 prints
+// where the time went, stage by stage.
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/output_path.h"
@@ -11,18 +17,55 @@
 #include "film/video_encoder.h"
 #include "host/event_log.h"
 #include "host/modes.h"
+#include "host/offline/encoder_thread.h"
+#include "host/offline/film_frames.h"
 #include "host/offline/record_shared.h"
 #include "core/stop_signal.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string>
 
 namespace vitrine::host {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+constexpr uint32_t kSlots = 4;    // frames between the GPU and the encoder (film_frames.h)
+constexpr size_t kQueued = 8;     // jobs waiting for the encoder's thread: a slot's frame, a stretch of sound
+
+// Where a film's time went, for VITRINE_FILM_STAGES=1: milliseconds a frame in each stage.
+struct FilmStages {
+  double render = 0.0;  // simulation, recording, the GPU's frame, waited for
+  double pack = 0.0;    // recording and submitting the packing pass and copy
+  double sound = 0.0;   // the scene's sound rendered
+  bool gpuPacked = false;
+
+  static bool wanted() {
+    const char* env = std::getenv("VITRINE_FILM_STAGES");
+    return env && std::string(env) == "1";
+  }
+  void print(uint32_t frames, double wall, const film::VideoEncoder::StageTimes& encoder, const FilmFrames* packed,
+             double postWaits, const std::string& choice) const {
+    const double n = std::max(1u, frames) / 1000.0;
+    std::printf("film stages (ms a frame): render %.2f, pack %.2f, sound %.2f, waiting for a slot %.2f, waiting for the "
+                "encoder's queue %.2f | encoder thread: waiting for the copy %.2f, convert %.2f, encode %.2f, sound "
+                "encode %.2f | %u frames in %.2f s (%.1f frames/s), %s, encoded with %s\n",
+                render / n, pack / n, sound / n, packed ? packed->slotWaits() / n : 0.0, postWaits / n,
+                packed ? packed->copyWaits() / n : 0.0, encoder.convert / n, encoder.encode / n, encoder.sound / n,
+                frames, wall, wall > 0 ? frames / wall : 0.0,
+                gpuPacked ? "packed on the GPU" : "averaged and packed on the CPU", choice.c_str());
+  }
+};
+
+}  // namespace
 
 int runRecordFilm(const Options& options) {
   const std::filesystem::path target = options.out;
@@ -45,24 +88,65 @@ int runRecordFilm(const Options& options) {
   RecordInputs inputs(options, config);
   std::optional<FilmSound> sound;
   ResidentByFrames resident(frames);
+  FilmStages stages;
+  const auto started = Clock::now();
+  double postWaits = 0.0;
+  std::optional<FilmFrames> packedFrames;
   {
     Offscreen offscreen(device, config);
+    // One sample a frame: packed on the GPU. Several: averaged in floats on the CPU, as a folder's are.
+    stages.gpuPacked = options.spp == 1;
+    if (stages.gpuPacked) packedFrames.emplace(device, config.size, encoder.layout(), kSlots);
+    EncoderThread encoding(encoder, kQueued);
     RecordProgress progress(frames);
     for (uint32_t frame = 0; frame < frames; ++frame) {
       stop.check(fmt::format("after {} of {} frames; no film written, {} left as it was.", frame, frames,
                              target.string()));
       resident.before(frame);
-      const ImageRgba picture = renderFrame(offscreen, options.spp);
-      // The streams are all there before the first packet: the film has sound when its scene made some
-      // in its first frame (bloom's drone starts with it) or music plays.
-      if (frame == 0 && FilmSound::any(inputs.sound, inputs.live.get())) {
-        encoder.addSoundTrack();
-        sound.emplace(inputs.sound, inputs.live.get(), options.time, seconds);
+      auto start = Clock::now();
+      if (stages.gpuPacked) {
+        offscreen.renderFrame();
+        stages.render += secondsSince(start);
+        start = Clock::now();
+        const uint32_t slot = packedFrames->pack(offscreen.output());
+        stages.pack += secondsSince(start);
+        // The streams are all there before the first packet: the film has sound when its scene made
+        // some in its first frame (bloom's drone starts with it) or music plays.
+        if (frame == 0 && FilmSound::any(inputs.sound, inputs.live.get())) {
+          encoder.addSoundTrack();  // the encoder's thread has had no job yet
+          sound.emplace(inputs.sound, inputs.live.get(), options.time, seconds);
+        }
+        encoding.post([&frames = *packedFrames, slot](film::VideoEncoder* into) {
+          struct Release {
+            FilmFrames& frames;
+            uint32_t slot;
+            ~Release() { frames.release(slot); }
+          } release{frames, slot};
+          if (into) into->addDisplay(frames.bytes(slot));
+        });
+      } else {
+        ImageRgba picture = renderFrame(offscreen, options.spp);
+        stages.render += secondsSince(start);
+        if (frame == 0 && FilmSound::any(inputs.sound, inputs.live.get())) {
+          encoder.addSoundTrack();
+          sound.emplace(inputs.sound, inputs.live.get(), options.time, seconds);
+        }
+        encoding.post([picture = std::move(picture)](film::VideoEncoder* into) {
+          if (into) into->addFrame(picture);
+        });
       }
-      encoder.addFrame(picture);
-      if (sound) encoder.addSound(sound->next(FilmSound::behind(double(frame + 1) / options.fps)));
+      if (sound) {
+        start = Clock::now();
+        const std::span<const float> stretch = sound->next(FilmSound::behind(double(frame + 1) / options.fps));
+        stages.sound += secondsSince(start);
+        encoding.post([samples = std::vector<float>(stretch.begin(), stretch.end())](film::VideoEncoder* into) {
+          if (into) into->addSound(samples);
+        });
+      }
       progress.update(frame + 1, frame + 1);
     }
+    encoding.drain();
+    postWaits = encoding.postWaits();
   }  // the scene is gone: its last sounds (bloom's drone stopping) are posted
   if (inputs.events) inputs.events->close();
   stop.check(fmt::format("before the film was written; {} left as it was.", target.string()));
@@ -74,6 +158,10 @@ int runRecordFilm(const Options& options) {
     std::fprintf(stderr, "vitrine: %zu of %s's sounds came over %.1f s after their time and play late\n",
                  sound->late(), options.scene.c_str(), FilmSound::kSoundLag);
   encoder.finish();
+  if (FilmStages::wanted())
+    stages.print(frames, secondsSince(started), encoder.times(), packedFrames ? &*packedFrames : nullptr, postWaits,
+                 encoder.encoderChoice());
+  packedFrames.reset();
   if (const std::string line = resident.line(); !line.empty()) std::printf("%s\n", line.c_str());
   std::printf("recorded %u frames into %s (%ux%u, %s %s in %s, %.6g fps, %u samples a frame, %s, scene %s) on %s\n",
               frames, target.c_str(), config.size.width, config.size.height, std::string(film::codecName(format.codec)).c_str(),
