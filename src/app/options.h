@@ -84,6 +84,11 @@ struct Options {
   std::string audioIn;               // --audio-in FILE: a sound file drives the audio sources
   std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
   std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time
+  // Ableton Link (gallery; docs/RIG.md): any of these flags joins the session.
+  bool link = false;                 // --link: the link.* sources
+  double linkQuantum = 4.0;          // --link-quantum BEATS: beats a bar
+  std::optional<double> linkTempo;   // --link-tempo BPM: the tempo the gallery leads with
+  bool linkWaitBar = false;          // --link-wait-bar: scene switches wait for the next bar
 };
 
 // Whether frames go through the flash guard (docs/INSTALLATIONS.md): as --flash-guard says, else on in
