@@ -43,8 +43,12 @@ inner='
     >"$out/vitrine.log" 2>&1 &
   vpid=$!
   log=$out/vitrine.log
-  waitfor() {  # waitfor FILE REGEX TENTHS
-    for _ in $(seq "$3"); do grep -qE "$2" "$1" && return 0; sleep 0.1; done
+  waitfor() {  # waitfor FILE REGEX TENTHS; gives up at once when the kiosk has ended
+    for _ in $(seq "$3"); do
+      grep -qE "$2" "$1" && return 0
+      kill -0 "$vpid" 2>/dev/null || { echo "vitrine ended while waiting for /$2/"; return 1; }
+      sleep 0.1
+    done
     echo "timed out waiting for /$2/ in $1"; return 1
   }
   switches() { grep -c "kiosk: .* comes in" "$log"; }
@@ -53,7 +57,7 @@ inner='
     echo "no bar-quantised switch within 10 s"; return 1
   }
   ok=1
-  waitfor "$log" "vitrine: showing" 600 || ok=0
+  waitfor "$log" "vitrine: showing" 600 || { kill "$peerpid"; exit 1; }
   waitfor "$out/peer.log" "^tempo-seen [0-9]+ 13(3\.0|2\.99)" 100 || ok=0    # the kiosk led: 133 BPM
   echo "tempo 96" >&3
   waitfor "$log" "link: tempo 96\.00 BPM" 100 || ok=0                 # the peer set 96 BPM
