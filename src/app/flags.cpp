@@ -3,6 +3,7 @@
 
 #include "app/values.h"
 #include "core/error.h"
+#include "rig/link_clock.h"
 #include "scenes/catalogue.h"
 
 #include <fmt/format.h>
@@ -164,14 +165,14 @@ constexpr Flag kFlags[] = {
      .help = "Beats a bar in the Link session (4), from 1 to 64; joins it.",
      .store =
          [](Options& o, std::string_view flag, const std::string& v) {
-           o.linkQuantum = parseNumberIn(flag, v, 1.0, 64.0);
+           o.linkQuantum = parseNumberIn(flag, v, rig::LinkClock::kMinQuantum, rig::LinkClock::kMaxQuantum);
            o.link = true;
          }},
     {.name = "--link-tempo", .modes = kGallery, .metavar = "BPM", .value = Value::Text,
      .help = "Leads the Link session at this tempo, from 20 to 999 beats a minute; joins it.",
      .store =
          [](Options& o, std::string_view flag, const std::string& v) {
-           o.linkTempo = parseNumberIn(flag, v, 20.0, 999.0);
+           o.linkTempo = parseNumberIn(flag, v, rig::LinkClock::kMinBpm, rig::LinkClock::kMaxBpm);
            o.link = true;
          }},
     {.name = "--link-wait-bar", .modes = kGallery, .value = Value::None,

@@ -23,6 +23,7 @@ std::optional<int64_t> BarGate::observe(double beat, double quantum) {
   const int64_t bar = barOf(beat, quantum);
   const std::optional<int64_t> was = bar_;
   bar_ = bar;
+  beat_ = beat;
   if (!was || bar <= *was) return std::nullopt;  // the first look, the same bar, or a jump back
   return bar;
 }

@@ -29,9 +29,13 @@ Micros nextBarTime(Micros now, double beat, double bpm, double quantum);
 class BarGate {
  public:
   std::optional<int64_t> observe(double beat, double quantum);
+  // The beat of the last observation that counted (none before the first): where the frame before a
+  // bar line was, to show that a switch came on the bar's first frame.
+  std::optional<double> lastBeat() const { return beat_; }
 
  private:
   std::optional<int64_t> bar_;
+  std::optional<double> beat_;
 };
 
 }  // namespace vitrine::rig

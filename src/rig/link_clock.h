@@ -8,12 +8,11 @@
 // session's timeline under Link's lock, which its thread holds only to copy a state. Alone (no peers yet, or every peer gone) the timeline simply runs
 // on at its last tempo from the host's clock: beat and phase go on without a jump, and status() says
 // the gallery keeps its own time.
-#include "rig/bar_timing.h"
 #include "rig/clock_status.h"
+#include "rig/link_watch.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,18 +28,6 @@ namespace vitrine::rig {
 struct LinkSettings {
   double quantum = 4.0;             // --link-quantum: beats a bar
   std::optional<double> leadTempo;  // --link-tempo: starts the gallery's session, proposed to each one it joins
-};
-
-// The session as one step sees it.
-struct LinkReading {
-  Micros hostTime{0};   // the host clock the reading is for (Link's: CLOCK_MONOTONIC_RAW)
-  double bpm = 120.0;
-  double beat = 0.0;    // the session's beat, counted from its start
-  double phase = 0.0;   // 0 <= phase < quantum
-  int64_t bar = 0;
-  bool playing = false;
-  bool beatBegan = false;  // a new beat began since the previous reading
-  size_t peers = 0;
 };
 
 class LinkClock {
@@ -64,29 +51,16 @@ class LinkClock {
   void setEnabled(bool on);
   bool enabled() const;
 
-  // Whether a peer is there, the tempo, the jitter and a one-line note ("2 peers", "alone: own clock").
+  // Whether a peer is there, the tempo, the jitter and a note (LinkWatch), and the console's lines.
   ClockStatus status() const;
-  // Lines for the console since the last call: peers coming and going, the transport, tempo changes (at
-  // most one line a second, counting the changes in between, so a peer flooding changes stays a trickle).
   std::vector<std::string> takeNews();
 
-  // A tempo changing on this many readings of one second is called a flood in the status.
-  static constexpr size_t kFloodChanges = 10;
-
  private:
-  void watch(const LinkReading& reading);
   LinkSettings settings_;
+  LinkWatch watch_;
   std::unique_ptr<ableton::Link> link_;
   std::optional<LinkReading> last_;
-  bool joined_ = false;                 // a peer was there at the last reading
-  std::optional<Micros> lostAt_;        // when the last peer left
-  double jitterMs_ = 0.0;
-  std::deque<std::pair<Micros, double>> misses_;  // per reading over the last seconds: ms off the straight line
-  // The console's tempo news, at most one line a second.
-  Micros toldAt_{0};
-  int changes_ = 0;                     // tempo changes seen since the last line about them
-  std::deque<Micros> changeTimes_;      // readings in the last second that saw a new tempo
-  std::vector<std::string> news_;
+  bool joined_ = false;  // a peer was there at the last reading
 };
 
 }  // namespace vitrine::rig

@@ -46,6 +46,7 @@ TEST(LinkBars, TheGateOpensOnceABarBegins) {
   EXPECT_FALSE(gate.observe(6.0, 4.0));
   EXPECT_FALSE(gate.observe(7.99, 4.0));
   EXPECT_EQ(gate.observe(8.01, 4.0), 2);  // bar 2 began between the looks
+  EXPECT_EQ(gate.lastBeat(), 8.01);
   EXPECT_FALSE(gate.observe(8.5, 4.0));   // once per bar
   EXPECT_EQ(gate.observe(17.0, 4.0), 4);  // a long frame over two bar lines: the bar now
 }

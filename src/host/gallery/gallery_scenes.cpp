@@ -112,9 +112,11 @@ bool Gallery::barLine() {
   rig::LinkClock* link = live_->link().linkClock();
   if (!waitForBar_ || !link) return true;
   const rig::LinkReading now = link->look();
+  const double before = barGate_.lastBeat().value_or(now.beat);
   const auto bar = barGate_.observe(now.beat, link->quantum());
   if (!bar) return false;
-  barNote_ = fmt::format("bar {} (beat {:.4f}, link clock {:.6f} s)", *bar, now.beat, double(now.hostTime.count()) * 1e-6);
+  barNote_ = fmt::format("bar {} (beat {:.4f}, link clock {:.6f} s; the frame before at beat {:.4f})", *bar, now.beat,
+                         double(now.hostTime.count()) * 1e-6, before);
   return true;
 }
 
