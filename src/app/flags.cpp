@@ -3,6 +3,7 @@
 
 #include "app/values.h"
 #include "core/error.h"
+#include "rig/link_clock.h"
 #include "scenes/catalogue.h"
 
 #include <fmt/format.h>
@@ -185,6 +186,33 @@ constexpr Flag kFlags[] = {
     {.name = "--audio-in-device", .modes = kGallery, .metavar = "NAME|INDEX|default", .value = Value::Text,
      .help = "Feeds the audio sources from a capture device, as --audio-in does from a file (not both).",
      .store = text<&Options::audioInDevice>},
+
+    {.name = "--link", .modes = kGallery, .value = Value::None,
+     .help = "Joins the Ableton Link session on the network: its tempo, beat, phase and bar become the link.* "
+             "sources; alone, the gallery keeps its own tempo.",
+     .store = on<&Options::link>},
+    {.name = "--link-quantum", .modes = kGallery, .metavar = "BEATS", .value = Value::Text,
+     .help = "Beats a bar in the Link session (4), from 1 to 64; joins it.",
+     .store =
+         [](Options& o, std::string_view flag, const std::string& v) {
+           o.linkQuantum = parseNumberIn(flag, v, rig::LinkClock::kMinQuantum, rig::LinkClock::kMaxQuantum);
+           o.link = true;
+         }},
+    {.name = "--link-tempo", .modes = kGallery, .metavar = "BPM", .value = Value::Text,
+     .help = "Leads the Link session at this tempo, from 20 to 999 beats a minute; joins it.",
+     .store =
+         [](Options& o, std::string_view flag, const std::string& v) {
+           o.linkTempo = parseNumberIn(flag, v, rig::LinkClock::kMinBpm, rig::LinkClock::kMaxBpm);
+           o.link = true;
+         }},
+    {.name = "--link-wait-bar", .modes = kGallery, .value = Value::None,
+     .help = "Scene switches (the kiosk's next line with its preset, a number key, a remote) wait for the next "
+             "bar of the Link session; joins it.",
+     .store =
+         [](Options& o, std::string_view, const std::string&) {
+           o.linkWaitBar = true;
+           o.link = true;
+         }},
 
     // Headless runs.
     {.name = "--headless", .modes = kHeadless, .value = Value::None, .requiredIn = kHeadless,

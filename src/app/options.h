@@ -92,6 +92,11 @@ struct Options {
   std::string stream;                // --stream URL: srt://, rtmp://, rtp://, udp://
   int64_t streamBitrate = 6'000'000; // --stream-bitrate N[k|M]: the video's bits a second
   uint32_t streamLatencyMs = 200;    // --stream-latency MS: SRT's latency, the stream's queue
+  // Ableton Link (gallery; docs/RIG.md): any of these flags joins the session.
+  bool link = false;                 // --link: the link.* sources
+  double linkQuantum = 4.0;          // --link-quantum BEATS: beats a bar
+  std::optional<double> linkTempo;   // --link-tempo BPM: the tempo the gallery leads with
+  bool linkWaitBar = false;          // --link-wait-bar: scene switches wait for the next bar
 };
 
 // Whether frames go through the flash guard (docs/INSTALLATIONS.md): as --flash-guard says, else on in

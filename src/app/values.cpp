@@ -39,12 +39,16 @@ double parsePositive(std::string_view flag, std::string_view text, double max) {
   return value;
 }
 
-double parseMetric(std::string_view flag, const std::string& text, double lo, double hi) {
+double parseNumberIn(std::string_view flag, const std::string& text, double lo, double hi) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end || !(v >= lo && v <= hi))
-    throw Error(fmt::format("compare {} takes a number from {:g} to {:g}, not '{}'.", flag, lo, hi, text));
+    throw Error(fmt::format("{} takes a number from {:g} to {:g}, not '{}'.", flag, lo, hi, text));
   return v;
+}
+
+double parseMetric(std::string_view flag, const std::string& text, double lo, double hi) {
+  return parseNumberIn(fmt::format("compare {}", flag), text, lo, hi);
 }
 
 std::pair<uint32_t, uint32_t> parseRange(std::string_view text) {

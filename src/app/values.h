@@ -20,6 +20,8 @@ uint32_t parseWhole(std::string_view flag, std::string_view text, uint32_t min, 
 double parseSeconds(std::string_view flag, std::string_view text);  // any finite number
 // A finite number above 0 and at most max (frames a second, a film's seconds).
 double parsePositive(std::string_view flag, std::string_view text, double max);
+// A number in [lo, hi]: "--link-tempo takes a number from 20 to 999, not 'fast'."
+double parseNumberIn(std::string_view flag, const std::string& text, double lo, double hi);
 // A number in [lo, hi], as compare's metric takes it: "compare --lowpass takes a number from 0 to 4096".
 double parseMetric(std::string_view flag, const std::string& text, double lo, double hi);
 std::pair<uint32_t, uint32_t> parseRange(std::string_view text);  // "A:B": frames A up to, not including, B

@@ -34,6 +34,19 @@ void applyMidi(const live::MidiMessage& message, live::SourceBank& sources) {
   }
 }
 
+}  // namespace
+
+void setLinkSources(const rig::LinkReading& now, std::optional<int64_t> lastBar, double quantum, live::SourceBank& sources) {
+  sources.set("link.tempo", float(now.bpm / 240.0));  // 0..1 spans 0..240 beats a minute, as audio.tempo
+  sources.set("link.beat", float(now.beat - std::floor(now.beat)));  // rising through each beat
+  sources.set("link.phase", float(now.phase / quantum));             // rising through each bar
+  sources.set("link.bar", lastBar && now.bar > *lastBar ? 1.0f : 0.0f);  // 1 for the step a bar begins on
+  sources.set("link.pulse", now.beatBegan ? 1.0f : 0.0f);            // 1 for the step a beat begins on
+  sources.set("link.playing", now.playing ? 1.0f : 0.0f);
+}
+
+namespace {
+
 // --map's argument: a line when it holds '=' (a file name seldom does), else a mapping file.
 std::vector<live::Mapping> mappingsOf(const LiveConfig& config) {
   std::vector<live::Mapping> mappings;
@@ -63,6 +76,7 @@ LiveLink::LiveLink(LiveConfig config) : config_(std::move(config)), commandLine_
   if (config_.captureAudio) setAudioCapture(true, config_.audioDevice);
   if (!config_.midiFile.empty()) midiFile_ = std::make_unique<live::SmfPlayer>(live::readSmf(config_.midiFile));
   if (config_.midiPorts) midiPorts_ = std::make_unique<live::MidiInput>();
+  if (config_.link) linkClock_ = std::make_unique<rig::LinkClock>(*config_.link);
 }
 
 LiveLink::~LiveLink() = default;
@@ -131,6 +145,12 @@ void LiveLink::readInputs(double time) {
   if (midiPorts_) {
     midiPorts_->poll();
     for (const live::MidiMessage& message : midiPorts_->drain()) applyMidi(message, sources_);
+  }
+  if (linkClock_) {
+    const rig::LinkReading now = linkClock_->read();
+    setLinkSources(now, linkReading_ ? std::optional(linkReading_->bar) : std::nullopt, linkClock_->quantum(), sources_);
+    linkReading_ = now;
+    for (const std::string& line : linkClock_->takeNews()) std::fprintf(stderr, "vitrine: link: %s\n", line.c_str());
   }
   // MIDI learn watches the controls a person moves: MIDI and gamepads.
   for (const auto& [name, value] : sources_.values()) {
@@ -240,6 +260,10 @@ std::vector<std::string> LiveLink::status() const {
   else lines.push_back("audio in: off");
   if (midiFile_) lines.push_back("MIDI in: " + config_.midiFile);
   if (midiPorts_) lines.push_back(midiPorts_->status());
+  if (linkClock_) {
+    const rig::ClockStatus link = linkClock_->status();
+    lines.push_back(fmt::format("Link: {}, {:.1f} BPM, jitter {:.2f} ms", link.note, link.bpm.value_or(0.0), link.jitterMs));
+  }
   return lines;
 }
 
@@ -267,6 +291,10 @@ std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::st
                                                .midiFile = options.midiIn});
 }
 
-std::vector<rig::ClockStatus> LiveLink::clocks() const { return {}; }
+std::vector<rig::ClockStatus> LiveLink::clocks() const {
+  std::vector<rig::ClockStatus> clocks;
+  if (linkClock_) clocks.push_back(linkClock_->status());
+  return clocks;
+}
 
 }  // namespace vitrine::host

@@ -8,6 +8,7 @@
 #include "live/modulator.h"
 #include "live/source_bank.h"
 #include "rig/clock_status.h"
+#include "rig/link_clock.h"
 
 #include <functional>
 #include <map>
@@ -47,6 +48,7 @@ struct LiveConfig {
   std::string audioDevice;        // empty: the default output's monitor, where there is one
   std::string midiFile;           // --midi-in
   bool midiPorts = false;         // the gallery: every MIDI port, hot-plugged
+  std::optional<rig::LinkSettings> link;  // --link: the Ableton Link session (the gallery)
 };
 
 class LiveLink {
@@ -85,6 +87,9 @@ class LiveLink {
   std::vector<std::string> status() const;  // one line per input, for the panel
   // The show's clocks this run follows (Link, MIDI clock, timecode), each as it stands now.
   std::vector<rig::ClockStatus> clocks() const;
+  // The Link session the link.* sources read (null without --link), and its reading at the last step.
+  rig::LinkClock* linkClock() { return linkClock_.get(); }
+  const std::optional<rig::LinkReading>& linkReading() const { return linkReading_; }
   // The --audio-in file, for a film's sound track; null without one.
   const live::AudioClip* audioClip() const;
   // What feeds a run, for a recording's manifest: the mapping lines and the input files' bytes, hashed.
@@ -105,12 +110,19 @@ class LiveLink {
   std::unique_ptr<live::AudioCapture> capture_;
   std::unique_ptr<live::SmfPlayer> midiFile_;
   std::unique_ptr<live::MidiInput> midiPorts_;
+  std::unique_ptr<rig::LinkClock> linkClock_;
+  std::optional<rig::LinkReading> linkReading_;
   std::map<std::string, float, std::less<>> controlsSeen_;  // MIDI learn: the controls' last values
   std::optional<std::string> moved_;
   float movedBy_ = 0.0f;
   bool vetted_ = false;       // the mappings playing now have been judged against the live scene
   std::string lastRefusal_;   // while the scene refuses the mapped values: said once, when it begins
 };
+
+// The Link session's reading as the link.* sources (docs/LIVE.md), each 0..1: link.tempo (0..240 BPM),
+// link.beat and link.phase (rising through each beat and each bar), link.pulse and link.bar (1 for the
+// step a beat or a bar begins on; `lastBar`: the bar of the previous step's reading), link.playing.
+void setLinkSources(const rig::LinkReading& now, std::optional<int64_t> lastBar, double quantum, live::SourceBank& sources);
 
 // The offline runs' live input (headless, record): the --map, --audio-in and --midi-in files for
 // `scene`, frame-exact; null when the command line asks for none. Throws vitrine::Error for bad input.

@@ -19,6 +19,7 @@ constexpr size_t kMaxLines = 4096, kMaxLineLength = 1024, kMaxArgs = 8;
 constexpr std::array kCurves{"linear", "ease-in", "ease-out", "smooth", "log"};
 constexpr std::array kAudioSources{"bass", "mid", "high", "level", "onset", "beat", "tempo"};
 constexpr std::array kLfoShapes{"sine", "triangle", "saw", "square"};
+constexpr std::array kLinkSources{"tempo", "beat", "phase", "bar", "playing", "pulse"};
 
 std::vector<std::string_view> split(std::string_view text, char separator) {
   std::vector<std::string_view> parts;
@@ -52,8 +53,8 @@ template <size_t N> bool oneOf(std::string_view word, const std::array<const cha
 
 std::string sourceFamilies() {
   return "sources are audio.bass|mid|high|level|onset|beat|tempo, midi.cc.CHANNEL.NUMBER, "
-         "midi.note.CHANNEL.NUMBER, midi.gate.CHANNEL.NUMBER, pad.N.axis.K, pad.N.button.K, osc.NAME and "
-         "lfo.sine|triangle|saw|square.PERIOD";
+         "midi.note.CHANNEL.NUMBER, midi.gate.CHANNEL.NUMBER, pad.N.axis.K, pad.N.button.K, osc.NAME, "
+         "lfo.sine|triangle|saw|square.PERIOD and link.tempo|beat|phase|bar|playing|pulse";
 }
 
 }  // namespace
@@ -93,6 +94,10 @@ std::string checkSourceName(std::string_view name) {
         number(name.substr(shapeEnd + 1), 0.01f, 3600.0f, period))
       return {};
     return bad("LFOs are lfo.sine|triangle|saw|square.PERIOD, PERIOD in seconds from 0.01 to 3600");
+  }
+  if (family == "link") {
+    if (parts.size() == 2 && oneOf(parts[1], kLinkSources)) return {};
+    return bad("Ableton Link sources are link.tempo, .beat, .phase, .bar, .playing and .pulse");
   }
   return bad(sourceFamilies());
 }

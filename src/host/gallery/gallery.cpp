@@ -83,6 +83,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
                window_.framebufferSize()),
       steps_(input_.dt),
       vsync_(options.vsync),
+      waitForBar_(options.linkWaitBar),
       remote_(options.remoteSaves) {
   overlay_.attach(swapchain_);
   keepInIni(menuLayout_);
@@ -183,7 +184,12 @@ int Gallery::run() {
 }
 
 void Gallery::frame() {
-  if (nextScene_) switchScene(*std::exchange(nextScene_, nullptr));
+  onBar_ = barLine();
+  if (nextScene_ && onBar_) {
+    if (!barNote_.empty())
+      std::fprintf(stderr, "vitrine: link: %s: %s\n", barNote_.c_str(), std::string(nextScene_->name).c_str());
+    switchScene(*std::exchange(nextScene_, nullptr));
+  }
   if (const VkExtent2D size = window_.framebufferSize(); !swapchain_.fits(size, vsync_)) {
     swapchain_.recreate(size, vsync_);
     overlay_.attach(swapchain_);

@@ -79,6 +79,9 @@ class Gallery {
   bool managePresets(const PanelEdit& edit);
   std::string startScene(SceneRenderer& renderer, const SceneInfo& info);
   void kioskStep(double elapsed, bool touched);
+  // Once a frame: whether a scene switch may happen now. With --link-wait-bar only on the first frame of
+  // a bar of the Link session; else always.
+  bool barLine();
   void startEntryPreset(SceneRenderer& renderer, size_t entry);
   void finishFade();
   void nowShowing();
@@ -131,6 +134,10 @@ class Gallery {
   bool uiHidden_ = false;
   bool hasScene_ = false;
   const SceneInfo* nextScene_ = nullptr;
+  bool waitForBar_ = false;  // --link-wait-bar
+  rig::BarGate barGate_;
+  bool onBar_ = true;        // this frame may switch scenes (barLine())
+  std::string barNote_;      // the bar that began this frame, for the console
   Clock::time_point lastFrame_ = Clock::now();
   ShownTime shownTime_;  // from the first frame presented, minimised spells left out: the run's frame rate
   Clock::time_point lastShaderPoll_ = Clock::now();

@@ -23,7 +23,9 @@ GalleryLive::GalleryLive(const Options& options, GallerySettings& settings, audi
                                                 .audioFile = options.audioIn, .loopAudioFile = true,
                                                 .audioFileClock = [&output] { return output.musicSeconds(); },
                                                 .captureAudio = !audioFromFile_ && (named || settings.audioInput()),
-                                                .audioDevice = device, .midiPorts = true});
+                                                .audioDevice = device, .midiPorts = true,
+                                                .link = options.link ? std::optional(rig::LinkSettings{options.linkQuantum, options.linkTempo})
+                                                                     : std::nullopt});
   if (const live::AudioClip* clip = link_->audioClip()) output.playMusic(live::stereo48k(*clip, 0.0, clip->seconds()));
   devices_ = live::AudioCapture::inputDevices();
 }

@@ -88,9 +88,11 @@ void Gallery::startEntryPreset(SceneRenderer& renderer, size_t entry) {
 // Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
 // on, or ends (the renderers swap places).
 void Gallery::kioskStep(double elapsed, bool touched) {
-  const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched);
+  const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched, onBar_);
   if (plan.begin) {
     const SceneInfo& info = kiosk_->sceneOf(*plan.begin);
+    if (!barNote_.empty())
+      std::fprintf(stderr, "vitrine: link: %s: kiosk: %.*s comes in\n", barNote_.c_str(), int(info.name.size()), info.name.data());
     if (auto failed = startScene(crossfade_.incoming(), info); !failed.empty()) {
       std::fprintf(stderr, "vitrine: kiosk: skipping %.*s: %s\n", int(info.name.size()), info.name.data(),
                    failed.c_str());
@@ -103,6 +105,19 @@ void Gallery::kioskStep(double elapsed, bool touched) {
   }
   if (plan.finish) finishFade();
   crossfade_.setWeight(plan.fade.value_or(0.0f));
+}
+
+bool Gallery::barLine() {
+  barNote_.clear();
+  rig::LinkClock* link = live_->link().linkClock();
+  if (!waitForBar_ || !link) return true;
+  const rig::LinkReading now = link->look();
+  const double before = barGate_.lastBeat().value_or(now.beat);
+  const auto bar = barGate_.observe(now.beat, link->quantum());
+  if (!bar) return false;
+  barNote_ = fmt::format("bar {} (beat {:.4f}, link clock {:.6f} s; the frame before at beat {:.4f})", *bar, now.beat,
+                         double(now.hostTime.count()) * 1e-6, before);
+  return true;
 }
 
 void Gallery::finishFade() {

@@ -20,7 +20,7 @@ size_t KioskSchedule::nextAfter(size_t index) const {
   return index;
 }
 
-KioskSchedule::Plan KioskSchedule::advance(double elapsed, bool touched) {
+KioskSchedule::Plan KioskSchedule::advance(double elapsed, bool touched, bool mayBegin) {
   Plan plan;
   sinceTouch_ = touched ? 0.0 : sinceTouch_ + elapsed;
   if (incoming_) {
@@ -40,7 +40,7 @@ KioskSchedule::Plan KioskSchedule::advance(double elapsed, bool touched) {
   }
   shown_ += elapsed;
   const size_t next = nextAfter(current_);
-  if (shown_ >= dwells_[current_] && next != current_) {
+  if (shown_ >= dwells_[current_] && next != current_ && mayBegin) {
     incoming_ = next;
     fading_ = 0.0;
     plan.begin = next;

@@ -35,7 +35,8 @@ class KioskSchedule {
     bool finish = false;          // the fade is over: the incoming scene is now the current one
   };
   // After `elapsed` more seconds; `touched`: a person used a key, the mouse or a remote this frame.
-  Plan advance(double elapsed, bool touched);
+  // `mayBegin` false holds a fade that is due until a call where it is true (a bar line of Link's).
+  Plan advance(double elapsed, bool touched, bool mayBegin = true);
   // The entry at `index` failed (to start, or while running): it is skipped from now on, until every
   // scene has failed, when all are tried again. A failed incoming scene ends its fade.
   void failed(size_t index);

@@ -42,7 +42,9 @@ class KioskTimetable {
 
   // Once a frame, `elapsed` seconds on: whether a fade begins (the entry whose scene comes in), goes on
   // or finishes.
-  KioskSchedule::Plan advance(double elapsed, bool touched) { return schedule_.advance(elapsed, touched); }
+  KioskSchedule::Plan advance(double elapsed, bool touched, bool mayBegin = true) {
+    return schedule_.advance(elapsed, touched, mayBegin);
+  }
   // `entry` failed to start as the incoming scene: skipped from now on, its fade ended.
   void failed(size_t entry) { schedule_.failed(entry); }
   // `scene` failed to start where the gallery shows its scene: every entry of it is skipped. Returns the
