@@ -31,7 +31,8 @@ class MidiClock {
 
   std::optional<double> bpm() const;  // none until three pulses; kept while lost
   double jitterMs() const { return fit_.jitter() * 1000.0; }
-  bool running() const { return running_; }
+  // Started or continued, not stopped since; with no start, stop or continue ever seen, any pulse heard.
+  bool running() const { return running_ || (!transportSeen_ && heard()); }
   bool heard() const { return fit_.last().has_value(); }  // a pulse has come
   bool locked(double now) const;  // pulses arriving
   // Quarter notes since the song's start at `now`: between pulses, and while lost, it runs on at the

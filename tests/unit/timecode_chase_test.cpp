@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "host/gallery/kiosk.h"
 #include "host/gallery/playlist.h"
 #include "host/gallery/timecode_chase.h"
 #include "rig/ltc_reader.h"
@@ -113,6 +114,23 @@ TEST(TimecodeChase, ALocateCutsAndALostTimecodeFreeRuns) {
   step = chase.advance(at(25 * 25), true, 0.04);
   EXPECT_EQ(step.cue, 2u);
   EXPECT_TRUE(step.cut);
+}
+
+// The kiosk's schedule takes a cue whatever its dwell and a person's touch: the fade begins at once,
+// and a cue during a fade ends that fade first.
+TEST(TimecodeChase, TheScheduleFadesInACuedLine) {
+  KioskSchedule schedule(std::vector<double>{kMaxPlaylistDwell, kMaxPlaylistDwell, kMaxPlaylistDwell}, 0,
+                         {kMaxPlaylistDwell, 2.0, 30.0});
+  EXPECT_FALSE(schedule.advance(1.0, true).begin);
+  schedule.cue(2);
+  auto plan = schedule.advance(0.02, true);
+  EXPECT_EQ(plan.begin, 2u);
+  plan = schedule.advance(0.5, false);
+  EXPECT_FLOAT_EQ(*plan.fade, 0.25f);
+  schedule.cue(1);
+  EXPECT_TRUE(schedule.advance(0.02, false).finish);
+  EXPECT_EQ(schedule.current(), 2u);
+  EXPECT_EQ(schedule.advance(0.02, false).begin, 1u);
 }
 
 // LTC from libltc's encoder, played a 60 fps step at a time through the reader into the chase: each cue

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "host/gallery/gallery_app.h"
+#include "host/live_clocks.h"
+#include "live/midi_input.h"
 
 namespace vitrine::host {
 namespace {
@@ -88,6 +90,7 @@ void Gallery::startEntryPreset(SceneRenderer& renderer, size_t entry) {
 // Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
 // on, or ends (the renderers swap places).
 void Gallery::kioskStep(double elapsed, bool touched) {
+  if (chase_) chaseStep(elapsed);
   const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched);
   if (plan.begin) {
     const SceneInfo& info = kiosk_->sceneOf(*plan.begin);
@@ -103,6 +106,26 @@ void Gallery::kioskStep(double elapsed, bool touched) {
   }
   if (plan.finish) finishFade();
   crossfade_.setWeight(plan.fade.value_or(0.0f));
+}
+
+// A playlist chased by timecode, once a frame: the line whose frame has come is cued (faded in from
+// this frame's advance, or cut to from the next frame's switch); the chase's state is said when it
+// changes kind (following, free-running, waiting), not every frame.
+void Gallery::chaseStep(double elapsed) {
+  const LiveClocks::Timecode timecode = live_->link().clocks().timecode(live::MidiInput::clockSeconds());
+  const TimecodeChase::Step step = chase_->advance(timecode.position, timecode.locked, elapsed);
+  if (step.cue) {
+    kiosk_->cue(*step.cue, step.cut);
+    if (step.cut) nextScene_ = &kiosk_->sceneOf(*step.cue);
+  }
+  const std::string state = chase_->status();
+  const std::string kind = state.substr(0, state.find_first_of(" "));
+  if (kind != chaseSaid_) {
+    std::fprintf(stderr, "vitrine: kiosk: %s%s
+", timecode.source.empty() ? "" : (timecode.source + " ").c_str(),
+                 state.c_str());
+    chaseSaid_ = kind;
+  }
 }
 
 void Gallery::finishFade() {
