@@ -100,8 +100,8 @@ TEST(TimecodeChase, ALocateCutsAndALostTimecodeFreeRuns) {
   int64_t f = 2 * 25;
   for (; f <= 9 * 25 + 20; ++f) chase.advance(at(f), true, 0.04);
   EXPECT_EQ(chase.status(), "following 00:00:09:20 (25 fps), line 1 of 3");
-  int steps = 0;
-  while (!(step = chase.advance(at(f), false, 0.04)).cue) ++steps;
+  int steps = 0;  // the source holds the last frame it had
+  while (!(step = chase.advance(at(f - 1), false, 0.04)).cue && steps < 100) ++steps;
   EXPECT_EQ(steps, 4);  // :21 :22 :23 :24, then 10:00
   EXPECT_EQ(*step.cue, 1u);
   EXPECT_FALSE(step.cut);
@@ -114,6 +114,13 @@ TEST(TimecodeChase, ALocateCutsAndALostTimecodeFreeRuns) {
   step = chase.advance(at(25 * 25), true, 0.04);
   EXPECT_EQ(step.cue, 2u);
   EXPECT_TRUE(step.cut);
+  // Stopped, then located (a full frame): followed, cut, and parked there rather than free-run.
+  chase.advance(at(25 * 25), false, 0.04);
+  step = chase.advance(rig::TimecodePosition{12 * 25, rig::FrameRate::Fps25, 0.0, 0}, false, 0.04);
+  EXPECT_EQ(step.cue, 1u);
+  EXPECT_TRUE(step.cut);
+  for (int i = 0; i < 100; ++i) chase.advance(rig::TimecodePosition{12 * 25, rig::FrameRate::Fps25, 0.0, 0}, false, 0.04);
+  EXPECT_EQ(chase.status(), "parked at 00:00:12:00 (25 fps), line 2 of 3");
 }
 
 // The kiosk's schedule takes a cue whatever its dwell and a person's touch: the fade begins at once,

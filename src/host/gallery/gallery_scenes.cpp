@@ -121,8 +121,7 @@ void Gallery::chaseStep(double elapsed) {
   const std::string state = chase_->status();
   const std::string kind = state.substr(0, state.find_first_of(" "));
   if (kind != chaseSaid_) {
-    std::fprintf(stderr, "vitrine: kiosk: %s%s
-", timecode.source.empty() ? "" : (timecode.source + " ").c_str(),
+    std::fprintf(stderr, "vitrine: kiosk: %s%s\n", timecode.source.empty() ? "" : (timecode.source + " ").c_str(),
                  state.c_str());
     chaseSaid_ = kind;
   }

@@ -33,7 +33,11 @@ TimecodeChase::Step TimecodeChase::advance(const std::optional<rig::TimecodePosi
   if (!std::isfinite(elapsed) || elapsed < 0.0) elapsed = 0.0;
   Step step;
   bool jumped = false;
-  if (reading && locked) {
+  // A reading that moved while not locked is a locate on a stopped transport (MIDI timecode's full
+  // frame): followed, and held there rather than free-run.
+  const bool located = reading && !locked && lastReading_ &&
+                       (reading->frames != lastReading_->frames || reading->rate != lastReading_->rate);
+  if (reading && (locked || located || (!frames_ && !lastReading_))) {
     const double heard = double(reading->frames) + reading->fraction;
     if (frames_) {
       const double ran = *frames_ + (freeRunning_ ? elapsed * rig::realFps(rate_) : 0.0);
@@ -43,12 +47,14 @@ TimecodeChase::Step TimecodeChase::advance(const std::optional<rig::TimecodePosi
       jumped = true;  // the first timecode: straight to its line
     }
     frames_ = heard, rate_ = reading->rate, freeRunning_ = false, lostFor_ = 0.0;
-  } else if (frames_) {
+    parked_ = !locked;
+  } else if (frames_ && !parked_) {
     // Lost (or stopped without a word): the gallery's own clock carries the show on.
     freeRunning_ = true;
     lostFor_ += elapsed;
     *frames_ += elapsed * rig::realFps(rate_);
   }
+  lastReading_ = reading;
   if (!frames_) return step;
   const size_t line = lineAt(*frames_, rate_);
   if (line != current_) {  // a locate within the line showing changes nothing on the screen
@@ -63,6 +69,7 @@ std::string TimecodeChase::status() const {
   const std::string line = fmt::format("line {} of {}", current_ + 1, starts_.size());
   if (!frames_) return "waiting for timecode on " + line;
   const std::string at = rig::formatTimecode(rig::labelOf(int64_t(std::floor(*frames_)), rate_));
+  if (parked_) return fmt::format("parked at {} ({} fps), {}", at, rig::rateName(rate_), line);
   if (freeRunning_)
     return fmt::format("timecode lost {:.0f} s ago: free-running at {} ({} fps), {}", lostFor_, at, rig::rateName(rate_), line);
   return fmt::format("following {} ({} fps), {}", at, rig::rateName(rate_), line);

@@ -7,7 +7,8 @@
 // Losing the timecode in an installation must not stop the room: the chase free-runs on the
 // gallery's own clock from where the timecode was, the lines still starting on their frames, and says
 // so; the timecode coming back takes over again (cutting if it disagrees by more than half a second).
-// Before any timecode it waits on the first line. Pure logic: the gallery gives it the source's
+// A stopped transport that locates (MIDI timecode's full frame) is followed and parks there. Before any
+// timecode it waits on the first line. Pure logic: the gallery gives it the source's
 // reading and the seconds between frames.
 #include <cstddef>
 #include <optional>
@@ -52,6 +53,8 @@ class TimecodeChase {
   std::optional<double> frames_;  // where the chase is, frames since 00:00:00:00 (fraction included)
   rig::FrameRate rate_ = rig::FrameRate::Fps25;
   bool freeRunning_ = false;
+  bool parked_ = false;  // a located reading on a stopped transport: held, not free-run
+  std::optional<rig::TimecodePosition> lastReading_;
   double lostFor_ = 0.0;
 };
 
