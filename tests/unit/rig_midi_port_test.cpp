@@ -31,10 +31,11 @@ TEST(MidiClockPort, AVirtualClockOutReachesTheClocks) {
   // Two seconds of 120 BPM clock after a start, each pulse on its own deadline (no drift).
   const auto interval = std::chrono::microseconds(20833);
   auto next = std::chrono::steady_clock::now();
-  out.sendMessage(std::vector<unsigned char>{0xFA});
+  std::vector<unsigned char> start{0xFA}, pulse{0xF8};
+  out.sendMessage(&start);
   for (int i = 0; i < 96; ++i) {
     std::this_thread::sleep_until(next);
-    out.sendMessage(std::vector<unsigned char>{0xF8});
+    out.sendMessage(&pulse);
     next += interval;
     clocks.midiBytes(input.drainSystem());
   }

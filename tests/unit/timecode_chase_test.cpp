@@ -19,14 +19,14 @@
 namespace vitrine::host {
 namespace {
 
-const PlaylistChecks kChecks{[](std::string_view scene) { return scene == "kifs" || scene == "noodles"; },
+const PlaylistChecks kChaseChecks{[](std::string_view scene) { return scene == "kifs" || scene == "noodles"; },
                              [](std::string_view scene, std::string_view name) {
                                return scene == "kifs" && name == "sphere" ? std::string() : "no preset '" + std::string(name) + "'";
                              }};
 
-std::string refusal(const std::string& text) {
+std::string chaseRefusal(const std::string& text) {
   try {
-    parsePlaylist(text, "p.txt", kChecks);
+    parsePlaylist(text, "p.txt", kChaseChecks);
   } catch (const Error& error) {
     return error.what();
   }
@@ -34,33 +34,33 @@ std::string refusal(const std::string& text) {
 }
 
 TEST(ChasedPlaylist, AtLinesGiveTheirFrames) {
-  const auto entries = parsePlaylist("# the show\nat 00:00:00:00 kifs sphere\nat 00:01:30:12  noodles\n", "p.txt", kChecks);
+  const auto entries = parsePlaylist("# the show\nat 00:00:00:00 kifs sphere\nat 00:01:30:12  noodles\n", "p.txt", kChaseChecks);
   ASSERT_EQ(entries.size(), 2u);
   EXPECT_TRUE(chasedByTimecode(entries));
   EXPECT_EQ(entries[0].scene, "kifs");
   EXPECT_EQ(entries[0].preset, "sphere");
   EXPECT_EQ(entries[1].at, (rig::Timecode{0, 1, 30, 12}));
   EXPECT_EQ(entries[1].preset, "");
-  EXPECT_FALSE(chasedByTimecode(parsePlaylist("kifs 10\n", "p.txt", kChecks)));
+  EXPECT_FALSE(chasedByTimecode(parsePlaylist("kifs 10\n", "p.txt", kChaseChecks)));
 }
 
 TEST(ChasedPlaylist, RefusesWhatCannotBeChased) {
-  EXPECT_EQ(refusal("at 00:00:00:00 kifs\nnoodles 10\n"),
+  EXPECT_EQ(chaseRefusal("at 00:00:00:00 kifs\nnoodles 10\n"),
             "p.txt:2: a playlist is chased by timecode ('at HH:MM:SS:FF SCENE [PRESET]' on every line) or timed by "
             "dwells ('SCENE [PRESET] SECONDS' on every line), not both.");
-  EXPECT_EQ(refusal("at 00:01:00:00 kifs\nat 00:00:59:29 noodles\n"),
+  EXPECT_EQ(chaseRefusal("at 00:01:00:00 kifs\nat 00:00:59:29 noodles\n"),
             "p.txt:2: at 00:00:59:29 is not after the line before's 00:01:00:00; chased lines go in time order.");
-  EXPECT_EQ(refusal("at 25:00:00:00 kifs\n"), "p.txt:1: 'at 25:00:00:00': its hours are over 23.");
-  EXPECT_EQ(refusal("at 00:00:00:31 kifs\n"),
+  EXPECT_EQ(chaseRefusal("at 25:00:00:00 kifs\n"), "p.txt:1: 'at 25:00:00:00': its hours are over 23.");
+  EXPECT_EQ(chaseRefusal("at 00:00:00:31 kifs\n"),
             "p.txt:1: 'at 00:00:00:31': its frames are over 29 (no rate has more than 30 a second).");
-  EXPECT_EQ(refusal("at 1:30 kifs\n"),
+  EXPECT_EQ(chaseRefusal("at 1:30 kifs\n"),
             "p.txt:1: 'at 1:30': a timecode is HH:MM:SS:FF, two digits each (e.g. 00:01:30:00).");
-  EXPECT_EQ(refusal("at 00:00:10:00\n"),
+  EXPECT_EQ(chaseRefusal("at 00:00:10:00\n"),
             "p.txt:1: 'at TIMECODE' wants a scene after it (e.g. 'at 00:01:30:00 kifs sphere').");
-  EXPECT_EQ(refusal("at 00:00:10:00 kifs nothing\n"), "p.txt:1: no preset 'nothing'.");
+  EXPECT_EQ(chaseRefusal("at 00:00:10:00 kifs nothing\n"), "p.txt:1: no preset 'nothing'.");
 }
 
-rig::TimecodePosition at(int64_t frames, rig::FrameRate rate = rig::FrameRate::Fps25) { return {frames, rate, 0.0, 1}; }
+rig::TimecodePosition tc(int64_t frames, rig::FrameRate rate = rig::FrameRate::Fps25) { return {frames, rate, 0.0, 1}; }
 
 TEST(TimecodeChase, EachLineStartsOnItsFrame) {
   for (const rig::FrameRate rate : {rig::FrameRate::Fps24, rig::FrameRate::Fps25, rig::FrameRate::Fps2997Drop}) {
@@ -68,7 +68,7 @@ TEST(TimecodeChase, EachLineStartsOnItsFrame) {
     std::vector<std::pair<int64_t, size_t>> cues;
     const int64_t from = *rig::frameCount({0, 0, 0, 10}, rate), to = *rig::frameCount({0, 1, 1, 0}, rate);
     for (int64_t f = from; f <= to; ++f)
-      if (const auto step = chase.advance(at(f, rate), true, 1.0 / rig::realFps(rate)); step.cue) {
+      if (const auto step = chase.advance(tc(f, rate), true, 1.0 / rig::realFps(rate)); step.cue) {
         EXPECT_FALSE(step.cut) << rig::rateName(rate) << " frame " << f;
         cues.emplace_back(f, *step.cue);
       }
@@ -88,20 +88,20 @@ TEST(TimecodeChase, ALocateCutsAndALostTimecodeFreeRuns) {
   EXPECT_EQ(chase.status(), "waiting for timecode on line 1 of 3");
   EXPECT_FALSE(chase.advance(std::nullopt, false, 0.04).cue);
   // The first timecode lands in the middle of the show: a cut to its line.
-  auto step = chase.advance(at(15 * 25), true, 0.04);
+  auto step = chase.advance(tc(15 * 25), true, 0.04);
   ASSERT_TRUE(step.cue);
   EXPECT_EQ(*step.cue, 1u);
   EXPECT_TRUE(step.cut);
   // Located back to the top: a cut.
-  step = chase.advance(at(2 * 25), true, 0.04);
+  step = chase.advance(tc(2 * 25), true, 0.04);
   EXPECT_EQ(step.cue, 0u);
   EXPECT_TRUE(step.cut);
   // Running to 00:00:09:20, then lost: the chase runs on by itself and starts line 2 on 00:00:10:00.
   int64_t f = 2 * 25;
-  for (; f <= 9 * 25 + 20; ++f) chase.advance(at(f), true, 0.04);
+  for (; f <= 9 * 25 + 20; ++f) chase.advance(tc(f), true, 0.04);
   EXPECT_EQ(chase.status(), "following 00:00:09:20 (25 fps), line 1 of 3");
   int steps = 0;  // the source holds the last frame it had
-  while (!(step = chase.advance(at(f - 1), false, 0.04)).cue && steps < 100) ++steps;
+  while (!(step = chase.advance(tc(f - 1), false, 0.04)).cue && steps < 100) ++steps;
   EXPECT_EQ(steps, 4);  // :21 :22 :23 :24, then 10:00
   EXPECT_EQ(*step.cue, 1u);
   EXPECT_FALSE(step.cut);
@@ -109,13 +109,13 @@ TEST(TimecodeChase, ALocateCutsAndALostTimecodeFreeRuns) {
   EXPECT_EQ(chase.status().rfind("timecode lost 0 s ago: free-running at 00:00:10:00 (25 fps), line 2 of 3", 0), 0u)
       << chase.status();
   // The timecode comes back where the free-run is: no cut. Far from it: a cut.
-  EXPECT_FALSE(chase.advance(at(10 * 25 + 1), true, 0.04).cue);
+  EXPECT_FALSE(chase.advance(tc(10 * 25 + 1), true, 0.04).cue);
   EXPECT_FALSE(chase.freeRunning());
-  step = chase.advance(at(25 * 25), true, 0.04);
+  step = chase.advance(tc(25 * 25), true, 0.04);
   EXPECT_EQ(step.cue, 2u);
   EXPECT_TRUE(step.cut);
   // Stopped, then located (a full frame): followed, cut, and parked there rather than free-run.
-  chase.advance(at(25 * 25), false, 0.04);
+  chase.advance(tc(25 * 25), false, 0.04);
   step = chase.advance(rig::TimecodePosition{12 * 25, rig::FrameRate::Fps25, 0.0, 0}, false, 0.04);
   EXPECT_EQ(step.cue, 1u);
   EXPECT_TRUE(step.cut);
