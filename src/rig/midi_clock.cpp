@@ -51,8 +51,16 @@ void MidiClock::pulse(double time) {
   // A new tempo: refit from the pulses at the new pace rather than average the old one in for four beats.
   const auto fitted = fit_.interval();
   const auto recent = fit_.recentInterval(kPaceGaps);
-  if (fitted && recent && std::abs(*recent - *fitted) > kPaceChange * *fitted)
+  // Over 4 %, and over four standard errors of the recent mean given the pulses' own jitter, so that a
+  // shaky clock is averaged rather than taken for a new tempo at every other pulse.
+  const double threshold = fitted ? std::max(kPaceChange * *fitted, 4.0 * fit_.jitter() * std::sqrt(2.0) / kPaceGaps) : 0.0;
+  if (fitted && recent && std::abs(*recent - *fitted) > threshold) {
     fit_.keepNewest(std::max<size_t>(fit_.newestNearer(*recent, *fitted), 2) + 1);
+  }
+  // An old pace's last gap kept at the front by a refit (jitter made it look new) is dropped once the
+  // new pace is clear: one gap off by a few milliseconds would bias the line for four beats.
+  if (const auto interval = fit_.interval(); interval && fit_.size() > 6)
+    fit_.dropLeadingGapsOff(std::max(0.15 * *interval, 3.0 * std::sqrt(2.0) * fit_.jitter()));
   if (const auto interval = fit_.interval(); interval && *interval > 0.0) heldInterval_ = *interval;
 }
 

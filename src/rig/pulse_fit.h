@@ -31,6 +31,14 @@ class PulseFit {
     }
     return n;
   }
+  // Drops the oldest arrival while the gap after it is over `tolerance` seconds off the fitted interval.
+  void dropLeadingGapsOff(double tolerance) {
+    while (times_.size() > 4) {
+      const auto line = fit();
+      if (!line || std::abs((times_[1] - times_[0]) - line->slope) <= tolerance) return;
+      times_.pop_front();
+    }
+  }
   void clear() { times_.clear(); }
   size_t size() const { return times_.size(); }
   std::optional<double> last() const { return times_.empty() ? std::nullopt : std::optional(times_.back()); }
