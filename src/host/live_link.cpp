@@ -1,5 +1,7 @@
 #include "host/live_link.h"
 
+#include "rig/rig_report.h"
+
 #include "app/options.h"
 #include "core/bounded_file.h"
 #include "core/error.h"
@@ -17,7 +19,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <span>
 #include <utility>
+#include <vector>
 
 namespace vitrine::host {
 namespace {
@@ -128,8 +132,13 @@ void LiveLink::remap() {
 void LiveLink::readInputs(double time) {
   sources_.setTime(time);
   std::optional<live::AudioFeatures> audio;
-  if (audioFile_) audio = audioFile_->at(config_.audioFileClock ? config_.audioFileClock() : time);
-  else if (capture_) audio = capture_->take();
+  if (audioFile_) {
+    const double fileTime = config_.audioFileClock ? config_.audioFileClock() : time;
+    audio = audioFile_->at(fileTime);
+    readFileLtc(fileTime);
+  } else if (capture_) {
+    audio = capture_->take([&](std::span<const float> samples) { clocks_.ltcSamples(capture_->sampleRate(), samples); });
+  }
   if (audio) {
     sources_.set("audio.bass", audio->bass);
     sources_.set("audio.mid", audio->mid);
@@ -145,6 +154,7 @@ void LiveLink::readInputs(double time) {
   if (midiPorts_) {
     midiPorts_->poll();
     for (const live::MidiMessage& message : midiPorts_->drain()) applyMidi(message, sources_);
+    clocks_.midiBytes(midiPorts_->drainSystem());
   }
   if (linkClock_) {
     const rig::LinkReading now = linkClock_->read();
@@ -152,14 +162,41 @@ void LiveLink::readInputs(double time) {
     linkReading_ = now;
     for (const std::string& line : linkClock_->takeNews()) std::fprintf(stderr, "vitrine: link: %s\n", line.c_str());
   }
-  // MIDI learn watches the controls a person moves: MIDI and gamepads.
+  clocks_.write(sources_, live::MidiInput::clockSeconds());
+  // MIDI learn watches the controls a person moves: MIDI and gamepads (a clock moves by itself).
   for (const auto& [name, value] : sources_.values()) {
-    if (!name.starts_with("midi.") && !name.starts_with("pad.")) continue;
+    if ((!name.starts_with("midi.") && !name.starts_with("pad.")) || name.starts_with("midi.clock.")) continue;
     const auto seen = controlsSeen_.find(name);
     const float was = seen == controlsSeen_.end() ? (name.find(".axis.") != std::string::npos ? 0.5f : 0.0f) : seen->second;
     const float by = std::abs(value - was);
     if (by > 0.02f && by >= movedBy_) moved_ = name, movedBy_ = by;
     controlsSeen_[name] = value;
+  }
+}
+
+// LTC in the --audio-in file: the samples before `fileTime`, as the analysis hears them (looped when
+// the file loops). Going back (the gallery's loop started again) or far ahead (a run started late)
+// reads afresh from a little before the new time.
+void LiveLink::readFileLtc(double fileTime) {
+  const std::vector<float>& mono = audioFile_->mono();
+  const double rate = audioFile_->clip().sampleRate;
+  if (mono.empty() || !std::isfinite(fileTime) || fileTime <= 0.0) return;
+  const auto end = uint64_t(std::min(std::ceil(fileTime * rate - 1e-6), 9.0e18));
+  const auto lead = uint64_t(rate);  // a second: the reader knows the frame again within two
+  if (end < ltcFed_ || end - ltcFed_ > 2 * lead) {
+    clocks_.ltcRestart();
+    ltcFed_ = end > lead ? end - lead : 0;
+  }
+  std::vector<float> chunk;
+  while (ltcFed_ < end) {
+    const uint64_t n = std::min<uint64_t>(end - ltcFed_, 4096);
+    chunk.resize(size_t(n));
+    for (uint64_t i = 0; i < n; ++i) {
+      const uint64_t at = ltcFed_ + i;
+      chunk[size_t(i)] = config_.loopAudioFile ? mono[size_t(at % mono.size())] : (at < mono.size() ? mono[size_t(at)] : 0.0f);
+    }
+    clocks_.ltcSamples(rate, chunk);
+    ltcFed_ += n;
   }
 }
 
@@ -260,9 +297,9 @@ std::vector<std::string> LiveLink::status() const {
   else lines.push_back("audio in: off");
   if (midiFile_) lines.push_back("MIDI in: " + config_.midiFile);
   if (midiPorts_) lines.push_back(midiPorts_->status());
-  if (linkClock_) {
-    const rig::ClockStatus link = linkClock_->status();
-    lines.push_back(fmt::format("Link: {}, {:.1f} BPM, jitter {:.2f} ms", link.note, link.bpm.value_or(0.0), link.jitterMs));
+  for (const rig::ClockStatus& clock : clockStatuses()) {
+    const rig::RigLine line = rig::describeClock(clock);
+    lines.push_back(line.name + ": " + line.text);
   }
   return lines;
 }
@@ -291,10 +328,10 @@ std::unique_ptr<LiveLink> offlineLiveInput(const Options& options, const std::st
                                                .midiFile = options.midiIn});
 }
 
-std::vector<rig::ClockStatus> LiveLink::clocks() const {
-  std::vector<rig::ClockStatus> clocks;
-  if (linkClock_) clocks.push_back(linkClock_->status());
-  return clocks;
+std::vector<rig::ClockStatus> LiveLink::clockStatuses() const {
+  std::vector<rig::ClockStatus> statuses = clocks_.statuses(live::MidiInput::clockSeconds());
+  if (linkClock_) statuses.insert(statuses.begin(), linkClock_->status());
+  return statuses;
 }
 
 }  // namespace vitrine::host

@@ -5,6 +5,7 @@
 // the schema and the mapped actions added to the step's input. Shared by the gallery, headless and
 // record runs; headless and record take only files, so a run is frame-exact and reproducible.
 #include "frame/frame_input.h"
+#include "host/live_clocks.h"
 #include "live/modulator.h"
 #include "live/source_bank.h"
 #include "rig/clock_status.h"
@@ -86,10 +87,12 @@ class LiveLink {
   std::optional<std::string> takeMovedControl();
   std::vector<std::string> status() const;  // one line per input, for the panel
   // The show's clocks this run follows (Link, MIDI clock, timecode), each as it stands now.
-  std::vector<rig::ClockStatus> clocks() const;
+  std::vector<rig::ClockStatus> clockStatuses() const;
   // The Link session the link.* sources read (null without --link), and its reading at the last step.
   rig::LinkClock* linkClock() { return linkClock_.get(); }
   const std::optional<rig::LinkReading>& linkReading() const { return linkReading_; }
+  // The show's clocks heard (MIDI clock, MIDI timecode, LTC): their statuses, the timecode to chase.
+  const LiveClocks& clocks() const { return clocks_; }
   // The --audio-in file, for a film's sound track; null without one.
   const live::AudioClip* audioClip() const;
   // What feeds a run, for a recording's manifest: the mapping lines and the input files' bytes, hashed.
@@ -97,6 +100,7 @@ class LiveLink {
 
  private:
   void remap();
+  void readFileLtc(double fileTime);
   // Sets aside, with one line each, the mappings whose range the scene showing refuses (bloom's
   // thresholds must rise: amber mapped up to 1 is inside amber's own range, but not below rose).
   void vet(SceneRenderer& renderer);
@@ -112,6 +116,8 @@ class LiveLink {
   std::unique_ptr<live::MidiInput> midiPorts_;
   std::unique_ptr<rig::LinkClock> linkClock_;
   std::optional<rig::LinkReading> linkReading_;
+  LiveClocks clocks_;
+  uint64_t ltcFed_ = 0;  // samples of the --audio-in file given to the LTC reader
   std::map<std::string, float, std::less<>> controlsSeen_;  // MIDI learn: the controls' last values
   std::optional<std::string> moved_;
   float movedBy_ = 0.0f;

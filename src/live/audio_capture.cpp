@@ -201,12 +201,18 @@ bool AudioCapture::active() const { return device_ != nullptr; }
 
 std::string AudioCapture::status() const { return status_; }
 
-AudioFeatures AudioCapture::take() {
+AudioFeatures AudioCapture::take(const std::function<void(std::span<const float>)>& tap) {
   if (!device_) return {};
   Device& d = *device_;
-  while (const size_t n = d.ring.pop(d.scratch)) d.analyser->push(std::span<const float>(d.scratch.data(), n));
+  while (const size_t n = d.ring.pop(d.scratch)) {
+    const std::span<const float> samples(d.scratch.data(), n);
+    if (tap) tap(samples);
+    d.analyser->push(samples);
+  }
   return d.analyser->take();
 }
+
+double AudioCapture::sampleRate() const { return device_ ? double(device_->rate) : 0.0; }
 
 double AudioCapture::bufferMs() const { return device_ ? 1000.0 * device_->bufferFrames / device_->rate : 0.0; }
 

@@ -3,7 +3,9 @@
 // default what the computer itself is playing, so a gallery follows the music in the room's
 // speakers without a microphone.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,9 +37,11 @@ class AudioCapture {
   bool active() const;
   // "capturing NAME, 48000 Hz, 256-frame buffer" or "no audio input (REASON)".
   std::string status() const;
-  // Drains what the device captured since the last call into the analyser and returns its take().
-  // Inactive: all zero.
-  AudioFeatures take();
+  // Drains what the device captured since the last call into the analyser and returns its take();
+  // `tap`, when given, sees the same mono samples first (LTC is read from them). Inactive: all zero.
+  AudioFeatures take(const std::function<void(std::span<const float>)>& tap = {});
+  // The device's sample rate; 0 when inactive.
+  double sampleRate() const;
   // The capture buffer's length in ms (a part of the input's latency, with the analyser's); 0 when
   // inactive.
   double bufferMs() const;

@@ -32,6 +32,7 @@ class AudioFileInput {
   AudioFeatures at(double seconds);
 
   const AudioClip& clip() const { return clip_; }
+  const std::vector<float>& mono() const { return mono_; }  // the clip's channels averaged, as analysed
   // The analyser now running: after a jump, a fresh one (its times still count from file time 0).
   const AudioAnalyser& analyser() const { return analyser_; }
 

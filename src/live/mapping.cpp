@@ -20,6 +20,8 @@ constexpr std::array kCurves{"linear", "ease-in", "ease-out", "smooth", "log"};
 constexpr std::array kAudioSources{"bass", "mid", "high", "level", "onset", "beat", "tempo"};
 constexpr std::array kLfoShapes{"sine", "triangle", "saw", "square"};
 constexpr std::array kLinkSources{"tempo", "beat", "phase", "bar", "playing", "pulse"};
+constexpr std::array kClockSources{"tempo", "beat", "phase", "bar", "running"};
+constexpr std::array kTimecodeSources{"seconds", "minutes", "locked"};
 
 std::vector<std::string_view> split(std::string_view text, char separator) {
   std::vector<std::string_view> parts;
@@ -53,7 +55,8 @@ template <size_t N> bool oneOf(std::string_view word, const std::array<const cha
 
 std::string sourceFamilies() {
   return "sources are audio.bass|mid|high|level|onset|beat|tempo, midi.cc.CHANNEL.NUMBER, "
-         "midi.note.CHANNEL.NUMBER, midi.gate.CHANNEL.NUMBER, pad.N.axis.K, pad.N.button.K, osc.NAME, "
+         "midi.note.CHANNEL.NUMBER, midi.gate.CHANNEL.NUMBER, midi.clock.tempo|beat|phase|bar|running, "
+         "mtc.seconds|minutes|locked, ltc.seconds|minutes|locked, pad.N.axis.K, pad.N.button.K, osc.NAME, "
          "lfo.sine|triangle|saw|square.PERIOD and link.tempo|beat|phase|bar|playing|pulse";
 }
 
@@ -72,10 +75,18 @@ std::string checkSourceName(std::string_view name) {
     return bad("audio sources are audio.bass, .mid, .high, .level, .onset, .beat and .tempo");
   }
   if (family == "midi") {
+    if (parts.size() >= 2 && parts[1] == "clock") {
+      if (parts.size() == 3 && oneOf(parts[2], kClockSources)) return {};
+      return bad("MIDI clock sources are midi.clock.tempo, .beat, .phase, .bar and .running");
+    }
     if (parts.size() == 4 && (parts[1] == "cc" || parts[1] == "note" || parts[1] == "gate") &&
         wholeNumber(parts[2], 1, 16) && wholeNumber(parts[3], 0, 127))
       return {};
     return bad("MIDI sources are midi.cc|note|gate.CHANNEL.NUMBER, channel 1..16, number 0..127");
+  }
+  if (family == "mtc" || family == "ltc") {
+    if (parts.size() == 2 && oneOf(parts[1], kTimecodeSources)) return {};
+    return bad(fmt::format("timecode sources are {0}.seconds, {0}.minutes and {0}.locked", family));
   }
   if (family == "pad") {
     if (parts.size() == 4 && wholeNumber(parts[1], 0, 15) &&

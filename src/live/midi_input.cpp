@@ -36,6 +36,7 @@ struct MidiInput::Impl {
   // Declared before the ports, so destroyed after them: RtMidi's threads reach these until a port closes.
   std::mutex queueMutex;
   std::vector<MidiMessage> queue;
+  std::vector<TimedByte> system;  // under queueMutex too
   std::mutex errorMutex;
   std::string lastError;  // RtMidi's last complaint, the reason when an open fails
 
@@ -57,10 +58,20 @@ struct MidiInput::Impl {
   void connect(const std::string& name);
   std::string takeError();
 
-  // On RtMidi's input thread: keeps complete channel voice messages, drops the rest.
+  // On RtMidi's input thread: keeps complete channel voice messages, and system messages' bytes for
+  // the clocks; drops the rest.
   static void onMessage(double, std::vector<unsigned char>* bytes, void* user) {
     if (!bytes || bytes->empty()) return;
     const uint8_t status = (*bytes)[0];
+    if (status >= 0xF0) {
+      if (bytes->size() > kMaxSystemMessage) return;
+      const double now = steadySeconds();
+      auto* self = static_cast<Impl*>(user);
+      const std::lock_guard lock(self->queueMutex);
+      if (self->system.size() + bytes->size() > kQueueLimit) return;
+      for (const unsigned char byte : *bytes) self->system.push_back({now, byte});
+      return;
+    }
     const int data = midiDataBytes(status);
     if (data == 0 || bytes->size() < size_t(1 + data)) return;
     const MidiMessage message{steadySeconds(), status, (*bytes)[1], data == 2 ? (*bytes)[2] : uint8_t(0)};
@@ -147,7 +158,8 @@ void MidiInput::Impl::connect(const std::string& name) {
   unsigned index = 0;
   while (index < count && client->getPortName(index) != name) ++index;
   if (index == count) return;  // gone already; the next scan will say nothing about it
-  client->ignoreTypes(/*midiSysex=*/true, /*midiTime=*/true, /*midiSense=*/true);
+  // Timing messages (clock, MIDI timecode) and SysEx (MTC's full frames) are the show's clocks.
+  client->ignoreTypes(/*midiSysex=*/false, /*midiTime=*/false, /*midiSense=*/true);
   client->setCallback(&onMessage, this);
   client->openPort(index, "Vitrine in");
   if (!client->isPortOpen()) {
@@ -187,6 +199,13 @@ std::vector<MidiMessage> MidiInput::drain() {
   const std::lock_guard lock(impl_->queueMutex);
   messages.swap(impl_->queue);
   return messages;
+}
+
+std::vector<MidiInput::TimedByte> MidiInput::drainSystem() {
+  std::vector<TimedByte> bytes;
+  const std::lock_guard lock(impl_->queueMutex);
+  bytes.swap(impl_->system);
+  return bytes;
 }
 
 std::vector<std::string> MidiInput::ports() const {

@@ -38,8 +38,17 @@ class MidiInput {
   void poll();
 
   // Channel messages received since the last drain, in arrival order, timed in steady clock seconds
-  // at arrival. Sysex, clock, active sensing and other system messages are ignored.
+  // at arrival. System messages go to drainSystem(); active sensing is ignored.
   std::vector<MidiMessage> drain();
+  // The bytes of the system messages received since the last drain (clock, start/stop, song
+  // position, MIDI timecode, SysEx of at most kMaxSystemMessage bytes), each with its message's arrival
+  // time, in arrival order: what rig::MidiTiming reads.
+  struct TimedByte {
+    double time = 0.0;
+    uint8_t byte = 0;
+  };
+  static constexpr size_t kMaxSystemMessage = 1024;
+  std::vector<TimedByte> drainSystem();
 
   std::vector<std::string> ports() const;  // names of the open ports, as ALSA gives them ("CLIENT:PORT C:P")
   bool active() const;                     // a MIDI system is there (even with no port yet)

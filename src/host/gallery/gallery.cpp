@@ -138,6 +138,11 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   }
   live_ = std::make_unique<GalleryLive>(options, settings_, audio_, firstScene.name);
   if (options.kiosk) {
+    if (chasedByTimecode(playlist)) {
+      std::vector<rig::Timecode> starts;
+      for (const PlaylistEntry& entry : playlist) starts.push_back(*entry.at);
+      chase_.emplace(std::move(starts));
+    }
     kiosk_.emplace(std::move(playlist), firstScene, options.dwell);
     kiosk_->rest(window_.takePointer());  // where the cursor rests is not a touch
   }

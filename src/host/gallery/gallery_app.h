@@ -25,6 +25,7 @@
 #include "host/gallery/gallery_settings.h"
 #include "host/gallery/kiosk_crossfade.h"
 #include "host/gallery/kiosk_timetable.h"
+#include "host/gallery/timecode_chase.h"
 #include "host/gallery/live_capture.h"
 #include "host/ui/menu.h"
 #include "host/modes.h"
@@ -82,6 +83,7 @@ class Gallery {
   // Once a frame: whether a scene switch may happen now. With --link-wait-bar only on the first frame of
   // a bar of the Link session; else always.
   bool barLine();
+  void chaseStep(double elapsed);
   void startEntryPreset(SceneRenderer& renderer, size_t entry);
   void finishFade();
   void nowShowing();
@@ -159,6 +161,8 @@ class Gallery {
   std::string costlyWhy_;
 
   std::optional<KioskTimetable> kiosk_;  // --kiosk (and --playlist): what shows when
+  std::optional<TimecodeChase> chase_;   // a playlist chased by timecode: which line the show is on
+  std::string chaseSaid_;                // the chase's state as last said on the console
   RemoteSession remote_;  // --remote: the clients, and the values they set
   std::vector<rig::RigLine> rig_;  // this frame's rigLines(), for the menu and the remote page
   std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings

@@ -150,7 +150,7 @@ void Gallery::showMenu() {
 
 std::vector<rig::RigLine> Gallery::rigLines() const {
   std::vector<rig::RigLine> lines;
-  for (const rig::ClockStatus& clock : live_->link().clocks()) lines.push_back(rig::describeClock(clock));
+  for (const rig::ClockStatus& clock : live_->link().clockStatuses()) lines.push_back(rig::describeClock(clock));
   for (const rig::OutputReport& output : outputs_.reports()) lines.push_back(rig::describeOutput(output));
   return lines;
 }

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "host/gallery/gallery_app.h"
+#include "host/live_clocks.h"
+#include "live/midi_input.h"
 
 namespace vitrine::host {
 namespace {
@@ -88,6 +90,7 @@ void Gallery::startEntryPreset(SceneRenderer& renderer, size_t entry) {
 // Kiosk mode, once a frame: a fade begins (the incoming scene starts in the second renderer), goes
 // on, or ends (the renderers swap places).
 void Gallery::kioskStep(double elapsed, bool touched) {
+  if (chase_) chaseStep(elapsed);
   const KioskSchedule::Plan plan = kiosk_->advance(elapsed, touched, onBar_);
   if (plan.begin) {
     const SceneInfo& info = kiosk_->sceneOf(*plan.begin);
@@ -118,6 +121,25 @@ bool Gallery::barLine() {
   barNote_ = fmt::format("bar {} (beat {:.4f}, link clock {:.6f} s; the frame before at beat {:.4f})", *bar, now.beat,
                          double(now.hostTime.count()) * 1e-6, before);
   return true;
+}
+
+// A playlist chased by timecode, once a frame: the line whose frame has come is cued (faded in from
+// this frame's advance, or cut to from the next frame's switch); the chase's state is said when it
+// changes kind (following, free-running, waiting), not every frame.
+void Gallery::chaseStep(double elapsed) {
+  const LiveClocks::Timecode timecode = live_->link().clocks().timecode(live::MidiInput::clockSeconds());
+  const TimecodeChase::Step step = chase_->advance(timecode.position, timecode.locked, elapsed);
+  if (step.cue) {
+    kiosk_->cue(*step.cue, step.cut);
+    if (step.cut) nextScene_ = &kiosk_->sceneOf(*step.cue);
+  }
+  const std::string state = chase_->status();
+  const std::string kind = state.substr(0, state.find_first_of(" "));
+  if (kind != chaseSaid_) {
+    std::fprintf(stderr, "vitrine: kiosk: %s%s\n", timecode.source.empty() ? "" : (timecode.source + " ").c_str(),
+                 state.c_str());
+    chaseSaid_ = kind;
+  }
 }
 
 void Gallery::finishFade() {

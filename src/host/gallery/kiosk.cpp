@@ -25,12 +25,22 @@ KioskSchedule::Plan KioskSchedule::advance(double elapsed, bool touched, bool ma
   sinceTouch_ = touched ? 0.0 : sinceTouch_ + elapsed;
   if (incoming_) {
     fading_ += elapsed;
-    if (touched || fading_ >= timing_.fade) {  // a touch lands on the scene coming in
+    if (touched || fading_ >= timing_.fade || cued_) {  // a touch lands on the scene coming in
       current_ = *std::exchange(incoming_, std::nullopt);
       shown_ = 0.0;
       plan.finish = true;
     } else {
       plan.fade = float(fading_ / timing_.fade);
+    }
+    return plan;
+  }
+  if (cued_) {
+    const size_t next = *std::exchange(cued_, std::nullopt);
+    if (next != current_) {
+      incoming_ = next;
+      fading_ = 0.0;
+      plan.begin = next;
+      plan.fade = 0.0f;
     }
     return plan;
   }
@@ -64,6 +74,7 @@ void KioskSchedule::failed(size_t index) {
 void KioskSchedule::jumpTo(size_t index) {
   if (index >= failed_.size()) return;
   incoming_.reset();
+  cued_.reset();
   current_ = index;
   shown_ = 0.0;
 }

@@ -44,6 +44,11 @@ class KioskSchedule {
   std::optional<size_t> incoming() const { return incoming_; }
   // Someone chose an entry directly (a number key, a phone): it becomes current with no fade.
   void jumpTo(size_t index);
+  // Another clock says `index` starts now (a chased playlist's line, its frame come): the next
+  // advance() begins its fade, ending a fade under way first, whatever the dwell or a person's touch.
+  void cue(size_t index) {
+    if (index < failed_.size()) cued_ = index;
+  }
 
  private:
   size_t nextAfter(size_t index) const;
@@ -52,6 +57,7 @@ class KioskSchedule {
   std::vector<bool> failed_;
   size_t current_;
   std::optional<size_t> incoming_;
+  std::optional<size_t> cued_;
   double shown_ = 0.0;          // seconds the current scene has shown without being held
   double fading_ = 0.0;         // seconds into the fade
   double sinceTouch_ = 1e300;   // seconds since the last touch

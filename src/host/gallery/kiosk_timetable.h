@@ -45,6 +45,12 @@ class KioskTimetable {
   KioskSchedule::Plan advance(double elapsed, bool touched, bool mayBegin = true) {
     return schedule_.advance(elapsed, touched, mayBegin);
   }
+  // A chased playlist's line whose frame has come: faded in from the next advance(), or made current
+  // at once when `cut` (the gallery then shows its scene).
+  void cue(size_t entry, bool cut) {
+    if (cut) schedule_.jumpTo(entry);
+    else schedule_.cue(entry);
+  }
   // `entry` failed to start as the incoming scene: skipped from now on, its fade ended.
   void failed(size_t entry) { schedule_.failed(entry); }
   // `scene` failed to start where the gallery shows its scene: every entry of it is skipped. Returns the
