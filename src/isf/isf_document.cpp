@@ -70,10 +70,10 @@ size_t firstInvalidUtf8(std::string_view s) {
   return std::string_view::npos;
 }
 
-// Nesting of arrays and objects in JSON text, strings skipped: refused past kMaxJsonDepth before the
-// parser builds anything.
-int jsonDepth(std::string_view s) {
-  int depth = 0, deepest = 0;
+// Where the nesting of arrays and objects in JSON text (strings skipped) first passes kMaxJsonDepth,
+// or npos: refused there before the parser builds anything.
+size_t tooDeep(std::string_view s) {
+  int depth = 0;
   bool inString = false;
   for (size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
@@ -83,12 +83,12 @@ int jsonDepth(std::string_view s) {
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
+      if (++depth > kMaxJsonDepth) return i;
     } else if (c == ']' || c == '}') {
       --depth;
     }
   }
-  return deepest;
+  return std::string_view::npos;
 }
 
 class Reader {
@@ -114,8 +114,8 @@ class Reader {
     doc.glsl = std::string(text_.substr(close + 2));
     doc.glslFirstLine = lineOf(text_, close);
 
-    if (jsonDepth(json_) > kMaxJsonDepth)
-      fail(lineOf(text_, jsonStart_), fmt::format("the JSON nests deeper than {} levels", kMaxJsonDepth));
+    if (const size_t deep = tooDeep(json_); deep != std::string_view::npos)
+      fail(lineOf(text_, jsonStart_ + deep), fmt::format("the JSON nests deeper than {} levels", kMaxJsonDepth));
     json top;
     try {
       top = json::parse(json_);

@@ -1,0 +1,68 @@
+// Every one of the project's ISF files compiles to SPIR-V with no GPU; a compile error names the
+// author's file and line.
+#include "isf/isf_compile.h"
+
+#include "isf_test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace vitrine::isf {
+namespace {
+
+using test::isfFile;
+
+class IsfCompiles : public testing::TestWithParam<const char*> {};
+
+TEST_P(IsfCompiles, ToSpirvForBothStages) {
+  const Document doc = loadDocument(isfFile(GetParam()));
+  const CompiledIsf compiled = compileIsf(doc, loadVertexFile(isfFile(GetParam())));
+  ASSERT_GT(compiled.fragment.size(), 5u);
+  ASSERT_GT(compiled.vertex.size(), 5u);
+  EXPECT_EQ(compiled.fragment[0], 0x07230203u);  // the SPIR-V magic number
+  EXPECT_EQ(compiled.vertex[0], 0x07230203u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, IsfCompiles,
+                         testing::Values("every_input.fs", "gles_style.fs", "gl3_style.fs", "multipass.fs", "imported.fs",
+                                         "rotate.fs", "transition.fs", "audio.fs", "events.fs"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           std::string name = info.param;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(IsfCompile, AnErrorOnLine12OfTheFileSaysLine12) {
+  const Document doc = loadDocument(isfFile("line12_error.fs"));
+  try {
+    compileIsf(doc);
+    FAIL() << "compiled";
+  } catch (const IsfError& e) {
+    EXPECT_EQ(e.line, 12) << e.what();
+    EXPECT_EQ(e.file, isfFile("line12_error.fs").string());
+    EXPECT_NE(e.why.find("'brightnes' : undeclared identifier"), std::string::npos) << e.what();
+  }
+}
+
+TEST(IsfCompile, AnErrorInTheVertexShaderNamesTheVsFile) {
+  const Document doc = parseDocument("/*{}*/\nvoid main() { gl_FragColor = vec4(1.0); }\n", "pair.fs");
+  try {
+    compileIsf(doc, VertexFile{"void main() {\n  isf_vertShaderInit();\n  gl_Position.x += undefinedThing;\n}\n", "pair.vs"});
+    FAIL() << "compiled";
+  } catch (const IsfError& e) {
+    EXPECT_EQ(e.file, "pair.vs");
+    EXPECT_EQ(e.line, 3) << e.what();
+  }
+}
+
+TEST(IsfCompile, MapsGlslangsLogOntoTheFiles) {
+  const auto lines = mappedLog("ERROR: 1:12: 'x' : undeclared identifier\nERROR: 1:12: '' : compilation terminated\n"
+                               "WARNING: 2:3: 'y' : something\nERROR: 2 compilation errors.  No code generated.\n",
+                               {"<gen>", "a.fs", "a.vs"});
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "a.fs:12: error: 'x' : undeclared identifier");
+  EXPECT_EQ(lines[1], "a.vs:3: warning: 'y' : something");
+}
+
+}  // namespace
+}  // namespace vitrine::isf
