@@ -76,9 +76,7 @@ std::optional<VertexFile> loadVertexFile(const std::filesystem::path& fragmentPa
   } catch (const FileRefused& refused) {
     throw IsfError(file.file, 1, fmt::format("cannot be read: {}", refused.why));
   }
-  // The same checks an .fs file's text passes: a .vs file is a document with no JSON.
-  if (const size_t bad = file.text.find('\0'); bad != std::string::npos)
-    throw IsfError(file.file, lineOf(file.text, bad), "a NUL byte: a vertex shader is text");
+  checkText(file.text, file.file);
   return file;
 }
 

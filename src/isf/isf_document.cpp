@@ -98,10 +98,7 @@ class Reader {
   Document read() {
     Document doc;
     doc.file = file_;
-    if (const size_t bad = firstInvalidUtf8(text_); bad != std::string_view::npos)
-      fail(lineOf(text_, bad), text_[bad] == '\0' ? "a NUL byte: an ISF file is text"
-                                                   : fmt::format("byte 0x{:02X} is not valid UTF-8: an ISF file is UTF-8 text",
-                                                                 static_cast<unsigned char>(text_[bad])));
+    checkText(text_, file_);
     size_t start = 0;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") start = 3;  // a byte-order mark some editors write
     while (start < text_.size() && std::isspace(static_cast<unsigned char>(text_[start]))) ++start;
@@ -564,6 +561,15 @@ PassRead readOf(const Document& doc, size_t pass, std::string_view target) {
   for (size_t j = 0; j < pass; ++j)
     if (doc.passes[j].target == target) return PassRead::EarlierPass;
   return declared->persistent ? PassRead::PreviousFrame : PassRead::Cleared;
+}
+
+void checkText(std::string_view text, const std::string& file) {
+  const size_t bad = firstInvalidUtf8(text);
+  if (bad == std::string_view::npos) return;
+  throw IsfError(file, lineOf(text, bad),
+                 text[bad] == '\0' ? "a NUL byte: an ISF file is text"
+                                   : fmt::format("byte 0x{:02X} is not valid UTF-8: an ISF file is UTF-8 text",
+                                                 static_cast<unsigned char>(text[bad])));
 }
 
 int lineOf(std::string_view text, size_t offset) {

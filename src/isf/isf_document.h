@@ -106,6 +106,10 @@ Document parseDocument(std::string_view text, std::string file);
 enum class PassRead { EarlierPass, PreviousFrame, Cleared, NotATarget };
 PassRead readOf(const Document& document, size_t pass, std::string_view target);
 
+// Throws IsfError at the line of the first byte that is NUL or breaks UTF-8 (an overlong form, a
+// surrogate, past U+10FFFF): an ISF file, and the .vs beside it, is UTF-8 text.
+void checkText(std::string_view text, const std::string& file);
+
 // The line (1-based) of byte `offset` of `text`.
 int lineOf(std::string_view text, size_t offset);
 

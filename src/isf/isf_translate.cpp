@@ -60,6 +60,7 @@ class Rewriter {
     line_ = firstLine_;
     braces_ = parens_ = 0;
     fragmentOuts_ = 0;
+    ownLayout_ = false;
     varyings_.clear();
     for (size_t i = 0; i < tokens_.size(); ++i) {
       const Token& t = tokens_[i];
@@ -67,6 +68,9 @@ class Rewriter {
         i = declaration(i);
         continue;
       }
+      // A declaration with a layout of its own keeps it, and gets no location from the rewrite.
+      if (braces_ == 0 && t.kind == Token::Kind::Identifier && t.text == "layout") ownLayout_ = true;
+      if (braces_ == 0 && t.kind == Token::Kind::Punct && (t.text == ";" || t.text == "}")) ownLayout_ = false;
       emit(t);
     }
     return out_;
@@ -74,9 +78,9 @@ class Rewriter {
 
   const std::vector<Varying>& varyings() const { return varyings_; }
   int fragmentOuts() const { return fragmentOuts_; }
-  bool hasMain() const {
+  bool uses(std::string_view word) const {
     return std::any_of(tokens_.begin(), tokens_.end(),
-                       [](const Token& t) { return t.kind == Token::Kind::Identifier && t.text == "main"; });
+                       [&](const Token& t) { return t.kind == Token::Kind::Identifier && t.text == word; });
   }
 
  private:
@@ -138,6 +142,11 @@ class Rewriter {
       fail(fmt::format("the vertex shader declares a vertex input (\"{}\"); the host draws its quad from gl_VertexIndex "
                        "with no vertex buffer: call isf_vertShaderInit() and use isf_FragNormCoord", storage));
     const std::string_view spelled = storage == "varying" ? (input ? "in" : "out") : storage;
+    if (ownLayout_) {
+      out_ += spelled;
+      if (stage_ == Stage::Fragment && !input) ++fragmentOuts_;
+      return start;
+    }
     // [precision] type name [ '[' N ']' ] (',' name [ '[' N ']' ])* ';'
     size_t i = nextWord(start + 1);
     std::string type;
@@ -219,12 +228,17 @@ class Rewriter {
   const std::map<std::string, int>* locations_ = nullptr;
   std::string out_;
   int line_ = 0, braces_ = 0, parens_ = 0, fragmentOuts_ = 0;
+  bool ownLayout_ = false;
   std::vector<Varying> varyings_;
 };
 
 uint32_t alignUp(uint32_t x, uint32_t a) { return (x + a - 1) / a * a; }
 
-std::string declarations(const Document& doc, const Translation& t, Stage stage, bool fragColorIsOutput) {
+// Which of gl_FragColor (isf_FragColor) and gl_FragData[0] (isf_FragData) is the fragment output at
+// location 0; none when the code declares outputs of its own.
+enum class FragmentOutput { Colour, Data, Own };
+
+std::string declarations(const Document& doc, const Translation& t, Stage stage, FragmentOutput output) {
   std::string s;
   s += "// Generated from the ISF file's JSON: what ISF declares for the code below.\n";
   s += fmt::format("layout(std140, set = 0, binding = {}) uniform ISFFrame {{\n", kFrameBlockBinding);
@@ -235,8 +249,8 @@ std::string declarations(const Document& doc, const Translation& t, Stage stage,
   for (const SamplerBinding& b : t.samplers) s += fmt::format("layout(set = 0, binding = {}) uniform sampler2D {};\n", b.binding, b.name);
   if (stage == Stage::Fragment) {
     s += "layout(location = 0) in vec2 isf_FragNormCoord;\n";
-    s += fragColorIsOutput ? "layout(location = 0) out vec4 isf_FragColor;\n" : "vec4 isf_FragColor;\n";
-    s += "vec4 isf_FragData[1];\n";
+    s += output == FragmentOutput::Colour ? "layout(location = 0) out vec4 isf_FragColor;\n" : "vec4 isf_FragColor;\n";
+    s += output == FragmentOutput::Data ? "layout(location = 0) out vec4 isf_FragData[1];\n" : "vec4 isf_FragData[1];\n";
   } else {
     s += "layout(location = 0) out vec2 isf_FragNormCoord;\n";
     // The quad's corners from the vertex index (a 4-vertex strip): GL's clip space, bottom-left first.
@@ -321,12 +335,12 @@ Translation translate(const Document& doc, const std::optional<VertexFile>& vert
   t.sourceNames = {"<generated ISF preamble>", doc.file, vertex ? vertex->file : std::string("<generated vertex shader>")};
 
   Rewriter fragment(doc.glsl, Stage::Fragment, doc.glslFirstLine, doc.file);
-  if (!fragment.hasMain()) throw IsfError(doc.file, doc.glslFirstLine, "the shader has no main()");
+  if (!fragment.uses("main")) throw IsfError(doc.file, doc.glslFirstLine, "the shader has no main()");
   fragment.run(nullptr);
   std::optional<Rewriter> vs;
   if (vertex) {
     vs.emplace(vertex->text, Stage::Vertex, 1, vertex->file);
-    if (!vs->hasMain()) throw IsfError(vertex->file, 1, "the vertex shader has no main()");
+    if (!vs->uses("main")) throw IsfError(vertex->file, 1, "the vertex shader has no main()");
     vs->run(nullptr);
   }
 
@@ -344,15 +358,17 @@ Translation translate(const Document& doc, const std::optional<VertexFile>& vert
       next += v.slots;
     }
   const std::string fragmentBody = fragment.run(&locations);
-  const bool fragColorIsOutput = fragment.fragmentOuts() == 0;
-  t.fragment = assemble(declarations(doc, t, Stage::Fragment, fragColorIsOutput), fragmentBody, doc.glslFirstLine,
+  const FragmentOutput output = fragment.fragmentOuts() > 0 ? FragmentOutput::Own
+                                : fragment.uses("gl_FragData") && !fragment.uses("gl_FragColor") ? FragmentOutput::Data
+                                                                                                 : FragmentOutput::Colour;
+  t.fragment = assemble(declarations(doc, t, Stage::Fragment, output), fragmentBody, doc.glslFirstLine,
                         kSourceFragment, "void main() { isf_main(); }\n");
   // GL's clip-space depth runs -w..w, Vulkan's 0..w; x and y need nothing (see the header on images).
   const std::string vertexEntry = "void main() {\n  isf_main();\n  gl_Position.z = (gl_Position.z + gl_Position.w) * 0.5;\n}\n";
   if (vs) {
-    t.vertex = assemble(declarations(doc, t, Stage::Vertex, false), vs->run(&locations), 1, kSourceVertex, vertexEntry);
+    t.vertex = assemble(declarations(doc, t, Stage::Vertex, FragmentOutput::Own), vs->run(&locations), 1, kSourceVertex, vertexEntry);
   } else {
-    t.vertex = assemble(declarations(doc, t, Stage::Vertex, false), "void isf_main() { isf_vertShaderInit(); }\n", 1,
+    t.vertex = assemble(declarations(doc, t, Stage::Vertex, FragmentOutput::Own), "void isf_main() { isf_vertShaderInit(); }\n", 1,
                         kSourceGenerated, vertexEntry);
   }
   return t;

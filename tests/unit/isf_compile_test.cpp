@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 
 namespace vitrine::isf {
 namespace {
@@ -53,6 +56,34 @@ TEST(IsfCompile, AnErrorInTheVertexShaderNamesTheVsFile) {
     EXPECT_EQ(e.file, "pair.vs");
     EXPECT_EQ(e.line, 3) << e.what();
   }
+}
+
+TEST(IsfCompile, OutputsAsGlTwoAndGlThreeWriteThem) {
+  // gl_FragData[0] rather than gl_FragColor; an output with its own layout, which the rewrite keeps.
+  for (const char* text : {"/*{}*/ void main() { gl_FragData[0] = vec4(1.0); }",
+                           "/*{}*/\nlayout(location = 0) out vec4 result;\nvoid main() { result = vec4(TIME); }"}) {
+    const CompiledIsf compiled = compileIsf(parseDocument(text, "out.fs"));
+    EXPECT_GT(compiled.fragment.size(), 5u) << text;
+  }
+  const Translation own = translate(parseDocument("/*{}*/\nlayout(location = 0) out vec4 result;\nvoid main() {}", "o.fs"));
+  EXPECT_NE(own.fragment.find("\nlayout(location = 0) out vec4 result;\n"), std::string::npos);
+  EXPECT_EQ(own.fragment.find("out vec4 isf_FragColor"), std::string::npos);
+}
+
+TEST(IsfCompile, AVertexFileThatIsNotTextIsRefusedAtItsLine) {
+  const auto dir = std::filesystem::temp_directory_path() / ("vitrine-isf-vs-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "a.fs") << "/*{}*/ void main() { gl_FragColor = vec4(1.0); }\n";
+  std::ofstream(dir / "a.vs", std::ios::binary) << "void main() {\n  isf_vertShaderInit(); // caf\xe9\n}\n";
+  try {
+    loadVertexFile(dir / "a.fs");
+    ADD_FAILURE() << "accepted";
+  } catch (const IsfError& e) {
+    EXPECT_EQ(e.file, (dir / "a.vs").string());
+    EXPECT_EQ(e.line, 2);
+  }
+  EXPECT_FALSE(loadVertexFile(dir / "none.fs").has_value());
+  std::filesystem::remove_all(dir);
 }
 
 TEST(IsfCompile, MapsGlslangsLogOntoTheFiles) {
