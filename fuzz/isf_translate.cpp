@@ -3,6 +3,7 @@
 // the vertex code. Any code is either translated or refused with an IsfError at a line of its file;
 // a translation keeps every line of the author's code where it was (the #line mapping depends on it).
 #include "isf/isf_document.h"
+#include "isf/isf_tokens.h"
 #include "isf/isf_translate.h"
 
 #include <algorithm>
@@ -32,19 +33,31 @@ constexpr std::string_view kHeader = R"(/*{
 
 size_t newlines(std::string_view s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
 
-// The text between "#line FIRST SOURCE\n" and the next "\n#line": the author's code as translated.
+// The text between "#line FIRST SOURCE\n" and the next "#line": the author's code as translated.
 void checkLinesKept(const std::string& translated, int first, int source, std::string_view original) {
-  if (original.find("#line") != std::string_view::npos) return;
+  // Code that writes #line itself, or continues a line with a backslash, is not measured here.
+  if (original.find("#line") != std::string_view::npos || original.find("\\\n") != std::string_view::npos) return;
   const std::string marker = "#line " + std::to_string(first) + " " + std::to_string(source) + "\n";
   const size_t start = translated.find(marker);
   require(start != std::string::npos, "the translation has no #line for the author's code");
   const size_t from = start + marker.size();
-  const size_t end = translated.find("\n#line ", from);
+  const size_t end = translated.find("#line ", from);
   require(end != std::string::npos, "the translation has no #line after the author's code");
   const size_t kept = newlines(std::string_view(translated).substr(from, end - from));
+  // The code as translated is followed by a newline of the translation's own unless it is empty or
+  // already ends with one: it does when the author's does, or when its last line is a #version or
+  // #extension line, which the translation drops.
   const size_t had = newlines(original);
-  require(kept == had || (kept + 1 == had && !original.empty() && original.back() == '\n'),
-          "the translation moved the author's lines");
+  const bool endsWithNewline = !original.empty() && original.back() == '\n';
+  bool lastDropped = false;
+  if (const auto tokens = isf::tokenize(original); !endsWithNewline && !tokens.empty() && tokens.back().kind == isf::Token::Kind::Directive) {
+    std::string_view word = tokens.back().text.substr(1);
+    while (!word.empty() && (word.front() == ' ' || word.front() == '\t')) word.remove_prefix(1);
+    lastDropped = word.substr(0, 7) == "version" || word.substr(0, 9) == "extension";
+  }
+  const bool empty = original.empty() || (lastDropped && had == 0);
+  const bool translatedEndsWithNewline = endsWithNewline || (lastDropped && had > 0);
+  require(kept == had + (!empty && !translatedEndsWithNewline ? 1 : 0), "the translation moved the author's lines");
 }
 
 }  // namespace

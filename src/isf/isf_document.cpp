@@ -119,6 +119,13 @@ class Reader {
     } catch (const json::parse_error& e) {
       fail(lineOf(text_, jsonStart_ + std::min(e.byte > 0 ? e.byte - 1 : 0, json_.size())),
            "the JSON description does not parse: " + jsonReason(e.what()));
+    } catch (const json::exception& e) {
+      // A number too large for a double ("number overflow parsing '1E999'"): the line of the number it quotes.
+      const std::string what = e.what();
+      const size_t quote = what.find('\''), unquote = what.rfind('\'');
+      const size_t at = quote < unquote ? json_.find(what.substr(quote + 1, unquote - quote - 1)) : std::string_view::npos;
+      fail(lineOf(text_, jsonStart_ + (at == std::string_view::npos ? 0 : at)),
+           "the JSON description does not parse: " + jsonReason(what));
     }
     if (!top.is_object()) fail(lineOf(text_, jsonStart_), "the JSON description is not an object ({ ... })");
 

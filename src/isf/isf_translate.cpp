@@ -161,8 +161,6 @@ class Rewriter {
     const std::string_view typeWord = tokens_[i].text;
     type += renamed(typeWord);
     std::vector<std::pair<std::string, std::string>> names;  // name, array suffix
-    int lines = 0;
-    for (size_t k = start; k < i; ++k) lines += static_cast<int>(newlines(tokens_[k].text));
     for (;;) {
       i = nextWord(i + 1);
       if (i >= tokens_.size() || tokens_[i].kind != Token::Kind::Identifier) {
@@ -189,7 +187,6 @@ class Rewriter {
         emit(tokens_[start]);
         return start;
       }
-      for (size_t k = i; k < j; ++k) lines += static_cast<int>(newlines(tokens_[k].text));
       if (tokens_[j].text == ";") {
         i = j;
         break;
@@ -201,6 +198,8 @@ class Rewriter {
       i = j;
     }
     // Written again, one declaration per name, each with its location, and as many newlines as it took.
+    int lines = 0;
+    for (size_t k = start; k <= i; ++k) lines += static_cast<int>(newlines(tokens_[k].text));
     std::string text;
     for (const auto& [name, suffix] : names) {
       int location = 0;

@@ -30,8 +30,8 @@ TEST_P(IsfCompiles, ToSpirvForBothStages) {
 INSTANTIATE_TEST_SUITE_P(Files, IsfCompiles,
                          testing::Values("every_input.fs", "gles_style.fs", "gl3_style.fs", "multipass.fs", "imported.fs",
                                          "rotate.fs", "transition.fs", "audio.fs", "events.fs"),
-                         [](const testing::TestParamInfo<const char*>& info) {
-                           std::string name = info.param;
+                         [](const testing::TestParamInfo<const char*>& p) {
+                           std::string name = p.param;
                            return name.substr(0, name.find('.'));
                          });
 
@@ -84,6 +84,19 @@ TEST(IsfCompile, AVertexFileThatIsNotTextIsRefusedAtItsLine) {
   }
   EXPECT_FALSE(loadVertexFile(dir / "none.fs").has_value());
   std::filesystem::remove_all(dir);
+}
+
+TEST(IsfCompile, ADeclarationOverSeveralLinesKeepsTheLinesAfterIt) {
+  // The rewrite writes a varying's declaration again with its location; the newlines it spanned,
+  // between the type and the name too, must follow it, or every later line is reported one short.
+  const Document doc = parseDocument("/*{}*/\nflat in\n  mat3\n  m;\nvoid main() { gl_FragColor = vec4(m[0], 1.0); }\n", "m.fs");
+  try {
+    compileIsf(doc, VertexFile{"flat out\n  mat3\n  m;\nvoid main() {\n  isf_vertShaderInit(); m = mat3(1.0) * missing;\n}\n", "m.vs"});
+    FAIL() << "compiled";
+  } catch (const IsfError& e) {
+    EXPECT_EQ(e.file, "m.vs");
+    EXPECT_EQ(e.line, 5) << e.what();
+  }
 }
 
 TEST(IsfCompile, MapsGlslangsLogOntoTheFiles) {

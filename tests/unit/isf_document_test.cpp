@@ -140,8 +140,8 @@ INSTANTIATE_TEST_SUITE_P(
                     Hostile{"no_json.fs", 1, "starts with a /* comment"}, Hostile{"unclosed_comment.fs", 1, "never closed"},
                     Hostile{"non_utf8.fs", 3, "0xE9 is not valid UTF-8"}, Hostile{"deep_json.fs", 3, "deeper than 32"},
                     Hostile{"too_many_inputs.fs", 68, "at most 64"}),
-    [](const testing::TestParamInfo<Hostile>& info) {
-      std::string name = info.param.file;
+    [](const testing::TestParamInfo<Hostile>& p) {
+      std::string name = p.param.file;
       return name.substr(0, name.find('.'));
     });
 
@@ -190,6 +190,8 @@ TEST(IsfDocument, SemanticMistakesNameTheirLine) {
   EXPECT_EQ(line("/*{\"INPUTS\": [{\"NAME\": \"bad name\", \"TYPE\": \"bool\"}]}*/ void main(){}"), 1);
   EXPECT_EQ(line("/*{\"PERSISTENT_BUFFERS\": []}*/ void main(){}"), 1);
   EXPECT_EQ(line("/*[1, 2]*/ void main(){}"), 1);
+  // A number past a double's range is the JSON library's out_of_range, not a parse error.
+  EXPECT_EQ(line("/*{\n\"INPUTS\": [{\"NAME\": \"f\", \"TYPE\": \"float\",\n \"MAX\": 1E999}]}*/ void main(){}"), 3);
 }
 
 }  // namespace
