@@ -58,10 +58,50 @@ class Includer : public glslang::TShader::Includer {
 
 }  // namespace
 
-CompiledShader compileGlsl(const std::filesystem::path& root, const std::string& name) {
+namespace {
+
+// Parses and links one stage into `out`; names[0] is the name the log gives the text (null: glslang's
+// source-string numbers, as #line directives set them).
+void compileInto(CompiledShader& out, const std::string& source, EShLanguage stage, const char* name,
+                 glslang::TShader::Includer& includer) {
   static std::once_flag init;
   std::call_once(init, [] { glslang::InitializeProcess(); });
+  glslang::TShader shader(stage);
+  const char* text = source.c_str();
+  if (name) {
+    const char* names[] = {name};
+    shader.setStringsWithLengthsAndNames(&text, nullptr, names, 1);
+  } else {
+    shader.setStrings(&text, 1);
+  }
+  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
+    out.log = shader.getInfoLog();
+    return;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    out.log = program.getInfoLog();
+    return;
+  }
+  glslang::GlslangToSpv(*program.getIntermediate(stage), out.spirv);
+}
 
+// For text with no #include: every include is refused.
+class NoIncludes : public glslang::TShader::Includer {
+ public:
+  IncludeResult* includeLocal(const char*, const char*, size_t) override { return nullptr; }
+  IncludeResult* includeSystem(const char*, const char*, size_t) override { return nullptr; }
+  void releaseInclude(IncludeResult*) override {}
+};
+
+}  // namespace
+
+CompiledShader compileGlsl(const std::filesystem::path& root, const std::string& name) {
   CompiledShader out;
   const auto path = root / name;
   out.sources.push_back(path);
@@ -70,28 +110,18 @@ CompiledShader compileGlsl(const std::filesystem::path& root, const std::string&
     out.log = path.string() + ": cannot read the shader source";
     return out;
   }
-  const EShLanguage stage = stageOf(name);
-  glslang::TShader shader(stage);
-  const char* text = source.c_str();
-  const std::string pathString = path.string();
-  const char* names[] = {pathString.c_str()};
-  shader.setStringsWithLengthsAndNames(&text, nullptr, names, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
   Includer includer(root, out.sources);
-  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-  if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
-    out.log = shader.getInfoLog();
-    return out;
-  }
-  glslang::TProgram program;
-  program.addShader(&shader);
-  if (!program.link(messages)) {
-    out.log = program.getInfoLog();
-    return out;
-  }
-  glslang::GlslangToSpv(*program.getIntermediate(stage), out.spirv);
+  compileInto(out, source, stageOf(name), path.string().c_str(), includer);
+  return out;
+}
+
+CompiledShader compileGlslText(const std::string& source, ShaderStage stage) {
+  CompiledShader out;
+  NoIncludes includer;
+  const EShLanguage language = stage == ShaderStage::Vertex     ? EShLangVertex
+                               : stage == ShaderStage::Fragment ? EShLangFragment
+                                                                : EShLangCompute;
+  compileInto(out, source, language, nullptr, includer);
   return out;
 }
 

@@ -16,4 +16,9 @@ struct CompiledShader {
 
 CompiledShader compileGlsl(const std::filesystem::path& root, const std::string& name);
 
+// GLSL text with no #include, for a shader made at run time (an ISF file's translation). The log is
+// glslang's, its lines as the text's #line directives number them.
+enum class ShaderStage { Vertex, Fragment, Compute };
+CompiledShader compileGlslText(const std::string& source, ShaderStage stage);
+
 }  // namespace vitrine::gpu
