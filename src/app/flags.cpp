@@ -306,6 +306,10 @@ constexpr Flag kFlags[] = {
     {.name = "--bitrate", .modes = kFilm, .metavar = "N[k|M]", .value = Value::Text,
      .help = "The bit rate instead of --crf.",
      .store = [](Options& o, std::string_view, const std::string& v) { o.film.bitrate = film::parseBitrate(v); }},
+    {.name = "--encoder-preset", .modes = kFilm, .metavar = "ultrafast|...|medium|...|veryslow", .value = Value::Text,
+     .help = "x264's or x265's preset for h264 and hevc (medium): a faster one encodes sooner into more bytes at the "
+             "same --crf (docs/RIG.md).",
+     .store = [](Options& o, std::string_view, const std::string& v) { o.film.preset = v; }},
     {.name = "--pix-fmt", .modes = kFilm, .metavar = "yuv420p|yuv444p|yuv420p10le|yuv444p10le", .value = Value::Choice,
      .help = "The film's pixel format.",
      .store = [](Options& o, std::string_view, const std::string& v) { o.film.pixelFormat = v; }},

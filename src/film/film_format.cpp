@@ -1,6 +1,7 @@
 #include "film/film_format.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -152,6 +153,7 @@ FilmFormat resolveFilm(const std::filesystem::path& target, const FilmRequest& r
     const std::string_view why = format.codec == Codec::Ffv1 ? "it is lossless" : "its quality is its profile's";
     if (request.crf) throw Error(fmt::format("--crf is for h264 and hevc, not {}: {}.", codec, why));
     if (request.bitrate) throw Error(fmt::format("--bitrate is for h264 and hevc, not {}: {}.", codec, why));
+    if (!request.preset.empty()) throw Error(fmt::format("--encoder-preset is for h264 and hevc, not {}: {}.", codec, why));
     if (!request.pixelFormat.empty())
       throw Error(fmt::format("--pix-fmt is for h264 and hevc; {} is always {}.", codec,
                               format.codec == Codec::Prores       ? "yuv422p10le (ProRes 422 HQ)"
@@ -169,6 +171,9 @@ FilmFormat resolveFilm(const std::filesystem::path& target, const FilmRequest& r
                                 codec, request.pixelFormat));
       if (request.bitrate) format.bitrate = request.bitrate;
       else format.crf = request.crf.value_or(format.codec == Codec::H264 ? 18 : 20);
+      format.preset = request.preset.empty() ? "medium" : lowercase(request.preset);
+      if (std::find(kEncoderPresets.begin(), kEncoderPresets.end(), format.preset) == kEncoderPresets.end())
+        throw Error(fmt::format("--encoder-preset takes {}, not '{}'.", fmt::join(kEncoderPresets, ", "), request.preset));
       format.audioEncoder = "aac";
       break;
     }

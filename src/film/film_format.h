@@ -3,6 +3,7 @@
 // container, the video codec and FFmpeg's encoder for it, the pixel format, the quality and the sound's
 // codec. No FFmpeg here, so every refusal is a sentence the unit tests read, given before any work.
 #include <cstdint>
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +23,7 @@ struct FilmRequest {
   std::optional<int64_t> bitrate;  // bits a second
   std::string pixelFormat;         // FFmpeg's name; empty: the codec's own
   bool fullRange = false;
+  std::string preset;              // x264/x265's speed for its quality ("veryfast"); empty: medium
 };
 
 // Everything the encoder needs, checked against the container and the frame size.
@@ -36,6 +38,7 @@ struct FilmFormat {
   bool fullRange = false;   // Y'CbCr over 0..255 (pc), not 16..235 (tv)
   std::optional<int> crf;   // h264, hevc: exactly one of crf and bitrate is set
   std::optional<int64_t> bitrate;
+  std::string preset;       // h264, hevc: x264/x265's preset ("medium")
   std::string proresProfile;  // prores_ks's "hq" or "4444"
   std::string audioEncoder;   // "aac" beside h264 and hevc; "pcm_s24le" beside prores and ffv1
 };
@@ -51,6 +54,9 @@ uint32_t bytesPerPixel(DisplayLayout layout);
 // The container a film's name asks for, from its extension in any case; nothing for any other name.
 std::optional<Container> containerFromName(const std::filesystem::path& path);
 bool isFilmName(const std::filesystem::path& path);
+// x264's and x265's presets, fastest first: each trades encoding time for bytes at the same quality.
+inline constexpr std::array<std::string_view, 9> kEncoderPresets{"ultrafast", "superfast", "veryfast", "faster", "fast",
+                                                                 "medium",    "slow",      "slower",   "veryslow"};
 // The extension, lower case, of a name that is a sound's, a picture's or a film's this build does not
 // write (".mp3", ".webm", ".png"): not a folder of frames either. Empty for any other name.
 std::string otherMediaExtension(const std::filesystem::path& path);

@@ -36,6 +36,7 @@ void setEncoderOptions(AVCodecContext& codec, const FilmFormat& format, const st
             fmt::format("setting {}'s {} to {}", format.encoder, key, value));
   };
   if (format.crf) set("crf", std::to_string(*format.crf));
+  if (!format.preset.empty()) set("preset", format.preset);
   if (format.bitrate) codec.bit_rate = *format.bitrate;
   if (format.codec == Codec::Hevc) set("x265-params", "log-level=error");  // x265 prints a page otherwise
   if (!format.proresProfile.empty()) set("profile", format.proresProfile);

@@ -11,6 +11,7 @@
 #include "live/audio_file_input.h"
 #include "live/midi_input.h"
 #include "live/smf.h"
+#include "rig/rig_report.h"
 #include "scenes/catalogue.h"
 
 #include <fmt/format.h>
