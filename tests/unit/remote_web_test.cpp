@@ -286,7 +286,8 @@ TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {
   WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats);
   SocketClient first(server.port(), socketTarget), second(server.port(), socketTarget);
   ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
-  server.publish({"kifs", {{"step", "3"}, {"tier", "low"}}, {}, {"evening"}});
+  server.publish({"kifs", {{"step", "3"}, {"tier", "low"}}, {}, {"evening"},
+                  {{"link", true, "locked 120.0 BPM, 1 peer"}, {"stream srt://obs:9000", false, "reconnecting"}}});
   for (SocketClient* phone : {&first, &second}) {
     const auto state = phone->receive();
     ASSERT_TRUE(state);
@@ -295,6 +296,12 @@ TEST_F(RemoteWeb, PublishedStateReachesEverySocket) {
     EXPECT_EQ((*state)["values"]["step"], "3");
     EXPECT_EQ((*state)["values"]["tier"], "low");
     EXPECT_EQ((*state)["user_presets"], nlohmann::json::array({"evening"}));
+    // The clocks and outputs, each with whether it is well, as the page's "clocks and outputs" shows them.
+    ASSERT_EQ((*state)["rig"].size(), 2u);
+    EXPECT_EQ((*state)["rig"][0]["name"], "link");
+    EXPECT_EQ((*state)["rig"][0]["ok"], true);
+    EXPECT_EQ((*state)["rig"][1]["text"], "reconnecting");
+    EXPECT_EQ((*state)["rig"][1]["ok"], false);
   }
   // A phone that connects later is sent the state at once.
   SocketClient late(server.port(), socketTarget);
