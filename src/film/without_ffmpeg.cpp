@@ -26,6 +26,13 @@ void VideoEncoder::addSoundTrack() {}
 bool VideoEncoder::hasSoundTrack() const { return false; }
 void VideoEncoder::addSound(std::span<const float>) {}
 void VideoEncoder::finish() {}
+void VideoEncoder::addDisplay(std::span<const std::byte>) {}
+DisplayLayout VideoEncoder::layout() const { return DisplayLayout::Rgb24; }
+const std::string& VideoEncoder::encoderChoice() const {
+  static const std::string none = "no encoder (a build without FFmpeg)";
+  return none;
+}
+VideoEncoder::StageTimes VideoEncoder::times() const { return {}; }
 
 std::string streamMuxer(std::string_view url) {
   throw Error(fmt::format("Cannot stream to {}: this build streams nothing (built with VITRINE_WITH_FILM=OFF).", url));
