@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <future>
 #include <optional>
 #include <vector>
 
@@ -59,7 +60,8 @@ struct VideoEncoder::State {
   std::string hardwareRefusals;             // "; h264_nvenc: REASON; h264_vaapi: REASON", when none opened
   AVStream* stream = nullptr;
   std::optional<ParallelScaler> scaler;  // sRGB RGB to Y'CbCr; none for an RGB film
-  FramePtr frame = makeFrame();
+  FramePtr frame = makeFrame();  // the frame being converted into
+  FramePtr spare = makeFrame();  // the frame before, being encoded meanwhile
   PacketPtr packet = makePacket();
   std::vector<uint8_t> packed;    // a PNG's RGBA in layout's bytes: packed RGB, or B, G, R, 0
   std::vector<uint16_t> rgb48;    // the same at 16 bits a channel, for a 10-bit film
@@ -70,6 +72,10 @@ struct VideoEncoder::State {
   bool started = false;  // the header written: no stream can be added
   bool finished = false;
   StageTimes times;
+  // The last converted frame's encoding, on a thread of its own while the next frame is converted: the
+  // two take about as long at 4K (swscale's bands and x264's threads), so overlapping them nearly halves
+  // a film's time where the encoder thread is the bottleneck. Last, so it ends before what it uses.
+  std::future<void> sending;
 
   State(const std::filesystem::path& path, const FilmFormat& filmFormat, uint32_t w, uint32_t h, double rate,
         const AVCodec& encoder)
@@ -138,10 +144,12 @@ struct VideoEncoder::State {
     if (opened < 0)
       throw Error(fmt::format("Cannot write {}: {} would not start for {} {}x{} at {:g} fps: {}.", target, format.encoder,
                               format.pixelFormat, width, height, fps, avErrorText(opened)));
-    frame->format = codec->pix_fmt;
-    frame->width = codec->width;
-    frame->height = codec->height;
-    checkAv(av_frame_get_buffer(frame.get(), 0), target, "allocating a frame");
+    for (AVFrame* each : {frame.get(), spare.get()}) {
+      each->format = codec->pix_fmt;
+      each->width = codec->width;
+      each->height = codec->height;
+      checkAv(av_frame_get_buffer(each, 0), target, "allocating a frame");
+    }
     if (!format.rgb)
       scaler.emplace(format.deep ? AV_PIX_FMT_RGB48 : AV_PIX_FMT_RGB24, codec->pix_fmt, width, height, format.fullRange,
                      target);
@@ -162,13 +170,29 @@ struct VideoEncoder::State {
   // The frame buffer may still be referenced by the encoder (frame threads, lookahead): a fresh one then.
   void writable() { checkAv(av_frame_make_writable(frame.get()), target, "allocating a frame"); }
 
-  void send() {
+  // Waits for the last frame's encoding, throwing its error: before anything else touches the muxer.
+  void settle() {
+    if (sending.valid()) sending.get();
+  }
+
+  // The converted frame into the encoder while the next one is converted (settle waits for it).
+  void sendBehind() {
+    settle();
     frame->pts = frames;
-    send(*frame);
+    start();
+    ++frames;
+    std::swap(frame, spare);
+    sending = std::async(std::launch::async, [this] {
+      const auto begun = Clock::now();
+      encode(spare.get());
+      avio_flush(output->pb);  // as send() does
+      times.encode += seconds(begun, Clock::now());
+    });
   }
 
   // `next`, its pts set to the next frame's, into the encoder.
   void send(const AVFrame& next) {
+    settle();
     const auto converted = Clock::now();
     start();
     ++frames;
@@ -196,7 +220,7 @@ struct VideoEncoder::State {
       scaler->scale(bytes, stride, *frame);
     }
     times.convert += seconds(begun, Clock::now());
-    send();
+    sendBehind();
   }
 
   // Display values, RGBA at 8 bits a channel, into the frame.
@@ -234,6 +258,7 @@ struct VideoEncoder::State {
   // Drains the encoders, ends the sound with the video, writes the trailer and closes the file,
   // checking the close: a full disk shows up in the last flush.
   void end() {
+    settle();
     start();
     encode(nullptr);
     if (sound) sound->finish(std::llround(double(frames) / fps * 48000.0));
@@ -297,6 +322,7 @@ void VideoEncoder::addSound(std::span<const float> stereo48k) {
   State& s = *state_;
   if (!s.sound) throw Error(fmt::format("Cannot add sound to {}: it has no sound track.", s.target));
   if (s.finished) throw Error(fmt::format("Cannot add sound to {}: the film is finished.", s.target));
+  s.settle();
   const auto begun = Clock::now();
   s.start();
   s.sound->add(stereo48k);
