@@ -25,7 +25,9 @@ RigLine describeOutput(const OutputReport& output) {
   // Well while someone takes the frames and at most one in twenty is dropped: a consumer at half the
   // gallery's rate drops every other frame, which is its choice, but says so in amber.
   const bool ok = output.connected && output.dropped * 20 <= output.frames + output.dropped;
-  return {output.kind + " " + output.name, ok, std::move(text)};
+  // "pipewire stage"; an output named after its kind ("stream") is not named twice.
+  std::string name = output.name == output.kind ? output.kind : output.kind + " " + output.name;
+  return {std::move(name), ok, std::move(text)};
 }
 
 std::string formatTimecode(double seconds, double fps) {

@@ -20,6 +20,7 @@ TEST(RigReport, OutputIsWellWhileTakenAndDroppingLittle) {
   const RigLine gone = describeOutput({"stream", "srt://a:9000", "", 0, 0, false});
   EXPECT_FALSE(gone.ok);
   EXPECT_EQ(gone.text, "nobody taking frames, 0 frames");
+  EXPECT_EQ(describeOutput({"stream", "stream", "", 1, 0, true}).name, "stream");  // not "stream stream"
 }
 
 TEST(RigReport, TimecodeLabelsWholeFrames) {
