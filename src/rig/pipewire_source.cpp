@@ -37,14 +37,6 @@ const char* formatName(uint32_t format) {
   }
 }
 
-// One frame held between the frame thread and the loop.
-struct Held {
-  std::vector<std::byte> bytes;  // RGBA, rows `width * 4` apart
-  uint32_t width = 0, height = 0;
-  uint64_t index = 0;
-  double time = 0.0;
-};
-
 // Said once a process, whatever the number of nodes: there is no daemon.
 std::atomic<bool> saidNoDaemon{false};
 
@@ -57,6 +49,14 @@ void initPipeWire() {
 }  // namespace
 
 struct PipeWireSource::Impl {
+  // One frame held between the frame thread and the loop.
+  struct Held {
+    std::vector<std::byte> bytes;  // RGBA, rows `width * 4` apart
+    uint32_t width = 0, height = 0;
+    uint64_t index = 0;
+    double time = 0.0;
+  };
+
   Impl(std::string nodeName, VkExtent2D extent, uint32_t fps) : node(std::move(nodeName)), offered(extent), rate(fps) {}
 
   const std::string node;
@@ -352,7 +352,7 @@ void PipeWireSource::frame(const host::PublishedFrame& frame) {
   Impl& impl = *impl_;
   if (!impl.loop || !taking()) return;
   // Copied outside the lock, into the frame thread's own buffer; then handed over by a swap.
-  Held& back = impl.back;
+  Impl::Held& back = impl.back;
   back.bytes.resize(size_t(frame.width) * frame.height * 4);
   for (uint32_t y = 0; y < frame.height; ++y)
     std::memcpy(back.bytes.data() + size_t(y) * frame.width * 4, frame.bytes.data() + size_t(y) * frame.stride,
