@@ -206,8 +206,8 @@ constexpr Flag kFlags[] = {
            o.link = true;
          }},
     {.name = "--link-wait-bar", .modes = kGallery, .value = Value::None,
-     .help = "Scene switches (the kiosk's next line with its preset, a number key, a remote) wait for the next "
-             "bar of the Link session; joins it.",
+     .help = "Scene switches (the kiosk's next line with its preset, a number key, a remote) and presets applied "
+             "from the panel or a phone wait for the next bar of the Link session; joins it.",
      .store =
          [](Options& o, std::string_view, const std::string&) {
            o.linkWaitBar = true;

@@ -104,6 +104,15 @@ RemoteLink::RemoteLink(const std::string& bind, const std::vector<std::string>& 
 RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs) {
   RemoteApplied applied;
   const std::string_view showing = renderer.info().name;
+  if (heldPreset_ && (onBar_ || !barWaits_)) {
+    const remote::RemoteCommand held = *std::exchange(heldPreset_, std::nullopt);
+    if (std::string refused = preset(renderer, held, applied, frameMs); refused.empty()) {
+      if (held.scene == showing) applied.presetsOnBar.push_back(held.value);  // else it waits for its scene
+    } else {
+      control_.tell(held.client, refused);
+      logRefusal(held.client, refused);
+    }
+  }
   for (remote::RemoteCommand& command : control_.drain()) {
     std::string refused;
     switch (command.kind) {
@@ -132,6 +141,10 @@ RemoteApplied RemoteLink::apply(SceneRenderer& renderer, EventSink* events, doub
         applied.sources.emplace_back("osc." + command.key, command.args[0]);
         break;
       case remote::RemoteCommand::Kind::Preset:
+        if (barWaits_ && !onBar_ && command.key == "apply" && command.scene == showing) {
+          heldPreset_ = command;  // judged when the bar comes, against the values then
+          break;
+        }
         refused = preset(renderer, command, applied, frameMs);
         if (refused.empty() && events)
           events->emit(time, showing, {"remote_preset", {{"op", command.key}, {"of", command.scene}, {"name", command.value}}});

@@ -24,6 +24,7 @@ struct RemoteApplied {
   const SceneInfo* scene = nullptr;      // a client chose this scene
   std::vector<ActionCall> actions;       // for the scene showing, in order
   params::KeyValues values;              // applied to the scene showing (for the settings' bookkeeping)
+  std::vector<std::string> presetsOnBar; // presets held for this bar and applied now, by name
   bool touched = false;                  // a person played the scene showing (kiosk mode holds it)
   std::vector<std::pair<std::string, float>> sources;  // live input: osc.NAME values (/vitrine/mod/NAME)
 };
@@ -39,6 +40,10 @@ class RemoteLink {
   // Applies the commands that arrived since the last call to `renderer`'s scene. `frameMs`: the frame
   // time now, to refuse a change that would freeze the window (host/cost_guard.h).
   RemoteApplied apply(SceneRenderer& renderer, EventSink* events, double time, double frameMs = 0.0);
+  // With --link-wait-bar: whether presets applied to the scene showing wait for the next bar, and
+  // whether this frame begins one. A held preset (the latest one a client asked for) is applied by the
+  // apply() of the frame that begins the bar, like the scene switches the gallery holds.
+  void setBar(bool waits, bool onBar) { barWaits_ = waits, onBar_ = onBar; }
   // Applies the values clients sent for `renderer`'s scene while it was not showing (then forgets
   // them), each through the same checks as a live one: the freeze guard with `frameMs` (that scene's
   // own frame time, so called once its frames are timed), then the scene's validation. Returns those
@@ -78,6 +83,8 @@ class RemoteLink {
   std::vector<rig::RigLine> rig_;
   // Saves and deletes write files: a few a second in all, whatever address each comes from.
   remote::TokenBucket presetWrites_{kPresetWrites};
+  bool barWaits_ = false, onBar_ = true;
+  std::optional<remote::RemoteCommand> heldPreset_;  // waiting for the bar; a later one replaces it
 };
 
 }  // namespace vitrine::host

@@ -59,8 +59,9 @@ LinkReading LinkClock::look() const {
 
 void LinkClock::setTempo(double bpm) {
   if (!std::isfinite(bpm)) return;
+  settings_.leadTempo = std::clamp(bpm, kMinBpm, kMaxBpm);  // and to each session joined from here on
   auto state = link_->captureAppSessionState();
-  state.setTempo(std::clamp(bpm, kMinBpm, kMaxBpm), link_->clock().micros());
+  state.setTempo(*settings_.leadTempo, link_->clock().micros());
   link_->commitAppSessionState(state);
 }
 

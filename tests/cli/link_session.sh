@@ -40,6 +40,7 @@ inner='
   exec 3>"$out/peer.cmd"
   XDG_CONFIG_HOME=$out/config "$vitrine" --kiosk --playlist "$out/playlist.txt" \
     --size 320x180 --validate --set noodles.grid=4x4x4 --set neon.chains=256 --link-tempo 133 --link-wait-bar \
+    --remote --remote-bind 127.0.0.1:0 \
     >"$out/vitrine.log" 2>&1 &
   vpid=$!
   log=$out/vitrine.log
@@ -79,6 +80,21 @@ inner='
   peer2=$!
   waitfor "$out/peer2.log" "^tempo-seen [0-9]+ 13(3\.0|2\.99)" 100 || ok=0
   kill "$peer2"; wait "$peer2" 2>/dev/null
+  # A phone applies a preset to the scene that has just faded in (2 s): it waits for the next bar (the
+  # touch holds the kiosk on that scene, so the bar brings the preset, not a switch).
+  waitswitch || ok=0
+  sleep 2.2
+  port=$(sed -nE "s/.*remote control on 127\.0\.0\.1:([0-9]+).*/\1/p" "$log" | head -n1)
+  showing=$(grep -aoE "kiosk: \w+ comes in" "$log" | tail -n1 | cut -d" " -f2)
+  preset=clean; [ "$showing" = noodles ] && preset=smooth
+  python3 -c "
+import socket, struct, sys
+pad = lambda b: b + b\"\\0\" * (4 - len(b) % 4)
+body = pad(b\"/vitrine/preset/apply\") + pad(b\",ss\") + pad(sys.argv[2].encode()) + pad(sys.argv[3].encode())
+socket.socket(socket.AF_INET, socket.SOCK_DGRAM).sendto(body, (\"127.0.0.1\", int(sys.argv[1])))
+" "$port" "$showing" "$preset" || ok=0
+  echo "sent preset $preset for $showing at $(date +%s.%N)"
+  waitfor "$log" "link: bar -?[0-9]+ .*: preset $preset" 100 || ok=0
   kill -TERM "$vpid"; wait "$vpid"; code=$?
   echo "vitrine exit $code"
   [ "$ok" = 1 ] && exit "$code"
@@ -130,7 +146,7 @@ quantum = 4.0
 phase_ms = []
 for bar, beat, s, before in switches:
     line = bar * quantum
-    p = peer_beat(s * 1e6)
+    p = peer_beat(s * 1e6) if not lost or s < float(lost.group(3)) else None  # the first peer's session only
     bpm = p[1] if p else float(lost.group(1)) if lost else 120.0
     if not before < line <= beat: problems.append(f"the switch on bar {bar} came at beat {beat}, the frame before at {before}")
     print(f"bar {bar}: switch {(beat - line) * 60000 / bpm:.1f} ms after the bar line, its frame {(beat - before) * 60000 / bpm:.1f} ms after the one before", end="")
@@ -141,6 +157,13 @@ for bar, beat, s, before in switches:
     else:
         print(" (the peer gone)")
 if len(switches) < 5: problems.append(f"{len(switches)} bar-quantised switches, 5 expected")
+# A phone's preset, held for the bar: applied on the bar's first frame.
+held = re.findall(r"link: bar (-?\d+) \(beat ([\d.-]+), link clock [\d.]+ s; the frame before at beat ([\d.-]+)\): preset (\w+)", vlog)
+for bar, beat, before, name in held:
+    line = int(bar) * quantum
+    print(f"preset {name} held for bar {bar}: applied at beat {float(beat):.4f}, the frame before at {float(before):.4f}")
+    if not float(before) < line <= float(beat): problems.append(f"the preset came at beat {beat}, not on bar {bar}'s first frame")
+if len(held) != 1: problems.append(f"{len(held)} presets applied on a bar, 1 expected")
 if not phase_ms: problems.append("no switch to compare with the peer's phase")
 elif max(phase_ms) > 1.0: problems.append(f"phase differs by {max(phase_ms):.3f} ms (1 ms at most)")
 else: print(f"phase agreement: {max(phase_ms):.3f} ms at worst over {len(phase_ms)} switches")

@@ -195,6 +195,11 @@ void Gallery::frame() {
       std::fprintf(stderr, "vitrine: link: %s: %s\n", barNote_.c_str(), std::string(nextScene_->name).c_str());
     switchScene(*std::exchange(nextScene_, nullptr));
   }
+  remote_.setBar(barWaits(), onBar_);
+  if (barPreset_ && onBar_) {
+    std::fprintf(stderr, "vitrine: link: %s: preset %s\n", barNote_.c_str(), barPreset_->preset.c_str());
+    applyEdit(*std::exchange(barPreset_, std::nullopt));
+  }
   if (const VkExtent2D size = window_.framebufferSize(); !swapchain_.fits(size, vsync_)) {
     swapchain_.recreate(size, vsync_);
     overlay_.attach(swapchain_);
@@ -290,6 +295,8 @@ void Gallery::simulate() {
     const RemoteApplied applied = remote_.apply(*renderer_, input_.time, frameMs(),
                                                 timedFrames_ >= kTimedFramesBeforeWaiting ? std::optional(gpuMs_) : std::nullopt);
     touched = touched || applied.touched;
+    for (const std::string& preset : applied.presetsOnBar)
+      std::fprintf(stderr, "vitrine: link: %s: preset %s\n", barNote_.c_str(), preset.c_str());
     if (applied.scene) nextScene_ = applied.scene;  // from the next frame, like a number key
     if (!applied.values.empty()) rememberValues();  // saved like the panel's, playlist or not (--remote-saves)
     for (const auto& [source, value] : applied.sources) live_->link().sources().set(source, value);

@@ -83,6 +83,7 @@ class Gallery {
   // Once a frame: whether a scene switch may happen now. With --link-wait-bar only on the first frame of
   // a bar of the Link session; else always.
   bool barLine();
+  bool barWaits() { return waitForBar_ && live_->link().linkClock(); }  // switches and presets wait for bars
   void chaseStep(double elapsed);
   void startEntryPreset(SceneRenderer& renderer, size_t entry);
   void finishFade();
@@ -140,6 +141,7 @@ class Gallery {
   rig::BarGate barGate_;
   bool onBar_ = true;        // this frame may switch scenes (barLine())
   std::string barNote_;      // the bar that began this frame, for the console
+  std::optional<PanelEdit> barPreset_;  // a preset chosen in the panel, waiting for the next bar
   Clock::time_point lastFrame_ = Clock::now();
   ShownTime shownTime_;  // from the first frame presented, minimised spells left out: the run's frame rate
   Clock::time_point lastShaderPoll_ = Clock::now();

@@ -131,7 +131,17 @@ void Gallery::showMenu() {
   state.live = live_->panelState();
   state.flashGuard = flashGuard_;
   state.rig = rig_;
+  rig::LinkClock* link = live_->link().linkClock();
+  if (link) {
+    const rig::LinkReading now = link->look();
+    state.link = LinkControls{link->enabled(), now.bpm, now.playing};
+  }
   const MenuChoice choice = drawMenu(state);
+  if (link && choice.link) {  // what the user changed, the gallery leads
+    if (choice.link->joined != state.link->joined) link->setEnabled(choice.link->joined);
+    if (choice.link->tempo != state.link->tempo) link->setTempo(choice.link->tempo);
+    if (choice.link->playing != state.link->playing) link->setPlaying(choice.link->playing);
+  }
   if (live_->apply(choice.live, panel_)) remote_.setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
   if (choice.flashGuard && !flashGuard_) guard_.reset();  // what it held is stale: count from the next frame
@@ -196,6 +206,12 @@ void Gallery::toggleCapture() {
 // was. One that would freeze the window for seconds is asked about first.
 void Gallery::applyEdit(const PanelEdit& edit) {
   if (managePresets(edit)) return;
+  if (edit.what == PanelEdit::What::Preset && barWaits() && !onBar_) {  // on the bar, as a scene switch
+    barPreset_ = edit;
+    note_ = fmt::format("preset '{}' waits for the next bar", edit.preset);
+    noted_ = Clock::now();
+    return;
+  }
   params::KeyValues change = edit.values;
   if (edit.what == PanelEdit::What::Preset)
     if (FoundPreset found = findPreset(renderer_->info().name, edit.preset, &presets_); found.preset)

@@ -112,8 +112,8 @@ void Gallery::kioskStep(double elapsed, bool touched) {
 
 bool Gallery::barLine() {
   barNote_.clear();
+  if (!barWaits()) return true;
   rig::LinkClock* link = live_->link().linkClock();
-  if (!waitForBar_ || !link) return true;
   const rig::LinkReading now = link->look();
   const double before = barGate_.lastBeat().value_or(now.beat);
   const auto bar = barGate_.observe(now.beat, link->quantum());

@@ -35,6 +35,10 @@ class RemoteSession {
   // the next step (takeActions).
   RemoteApplied apply(SceneRenderer& renderer, double time, double frameMs, std::optional<double> ownGpuMs);
   std::vector<ActionCall> takeActions() { return std::exchange(actions_, {}); }
+  // Presets for the scene showing wait for the next bar while `waits`; `onBar`: this frame begins one.
+  void setBar(bool waits, bool onBar) {
+    if (link_) link_->setBar(waits, onBar);
+  }
   // The phone's touch over an output of `framebuffer` pixels, while a phone drives it.
   std::optional<Pointer> pointer(VkExtent2D framebuffer) { return link_ ? link_->pointer(framebuffer) : std::nullopt; }
   // Tells every page what the scene showing is and its values (a few times a second at most, unless `now`).

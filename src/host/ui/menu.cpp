@@ -1,5 +1,7 @@
 #include "host/ui/menu.h"
 
+#include "rig/link_clock.h"
+
 #include <fmt/format.h>
 #include <imgui.h>
 #include <imgui_internal.h>  // ImGuiSettingsHandler: the menu's layout in the overlay's ini file
@@ -54,6 +56,23 @@ void drawRig(std::span<const rig::RigLine> lines) {
     ImGui::TextWrapped("%s", line.text.c_str());
     ImGui::PopStyleColor();
   }
+}
+
+// Link: in the session or not, its tempo (dragged, or typed with Ctrl+click) and its transport. A
+// change is returned; the gallery then leads the session with it.
+std::optional<LinkControls> drawLinkControls(const LinkControls& now) {
+  LinkControls next = now;
+  ImGui::Checkbox("Link", &next.joined);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("In the Link session (off: the timeline runs on alone)");
+  ImGui::SameLine();
+  constexpr double kMin = rig::LinkClock::kMinBpm, kMax = rig::LinkClock::kMaxBpm;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+  ImGui::DragScalar("BPM", ImGuiDataType_Double, &next.tempo, 0.05f, &kMin, &kMax, "%.2f",
+                    ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SameLine();
+  if (ImGui::SmallButton(now.playing ? "stop" : "play")) next.playing = !now.playing;
+  if (next == now) return std::nullopt;
+  return next;
 }
 
 // A section header whose open state is the layout's: set from it, and written back when clicked.
@@ -275,7 +294,10 @@ MenuChoice drawMenu(const MenuState& state) {
     if (state.livePanel && section("live input###live", layout.live)) choice.live = state.livePanel->draw(state.live);
     layout.passRows = std::max(layout.passRows, int(state.passes.size()));
     if (section("timings###timings", layout.timings)) drawPassTable(state, layout.passRows);
-    if (!state.rig.empty() && section("rig: clocks and outputs###rig", layout.rig)) drawRig(state.rig);
+    if ((!state.rig.empty() || state.link) && section("rig: clocks and outputs###rig", layout.rig)) {
+      if (state.link) choice.link = drawLinkControls(*state.link);
+      drawRig(state.rig);
+    }
     ImGui::PopItemWidth();
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -31,6 +31,15 @@ struct MenuLayout {
 // default font), wide enough for a slider, its label and its reset button.
 float menuWidth(float fontSize);
 
+// Ableton Link's controls in the rig section, while the gallery runs with --link: whether it is in the
+// session, the session's tempo and its transport. What the menu changes, the gallery leads.
+struct LinkControls {
+  bool joined = true;
+  double tempo = 120.0;
+  bool playing = false;
+  bool operator==(const LinkControls&) const = default;
+};
+
 struct MenuState {
   const SceneInfo& current;
   Scene& scene;
@@ -59,6 +68,7 @@ struct MenuState {
   bool flashGuard = false;                     // frames go through the flash guard
   UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
   std::span<const rig::RigLine> rig;           // the clocks followed and the outputs published; none: no section
+  std::optional<LinkControls> link;            // with --link
 };
 
 struct MenuChoice {
@@ -71,6 +81,7 @@ struct MenuChoice {
   std::optional<bool> costly;        // the answer about the costly edit: apply (true) or not
   LivePanelChoice live;              // what the user asked of live input
   bool flashGuard = false;           // the flash guard's switch as the menu left it
+  std::optional<LinkControls> link;  // as the menu left them, when the user changed one
 };
 
 MenuChoice drawMenu(const MenuState& state);
