@@ -73,7 +73,7 @@ json actionNode(const std::string& path, const SceneAction& action) {
   } else {
     node["TYPE"] = std::string(action.args.size(), 'f');
     std::vector<std::string> names(action.args.begin(), action.args.end());
-    description += fmt::format(" ({})", fmt::join(names, ", "));
+    description = fmt::format("{}: {}", fmt::join(names, " "), description);  // "x y z: a tube head ..."
   }
   node["DESCRIPTION"] = description;
   return node;
