@@ -51,6 +51,12 @@ remote::RemoteControl open(remote::RemoteConfig config, const std::string& bind)
 
 remote::RemoteControl listen(const std::string& bind, const std::vector<std::string>& allow) {
   remote::RemoteConfig config;
+  // Found by OSCQuery clients over mDNS where an Avahi daemon runs; its lines come from Avahi's thread.
+  config.announce = true;
+  config.say = [](const std::string& line) {
+    std::printf("vitrine: %s\n", line.c_str());
+    std::fflush(stdout);
+  };
   for (const std::string& network : allow) {
     try {
       config.oscAllow.push_back(remote::parseNetwork(network));

@@ -1,6 +1,7 @@
 #include "remote/http_session.h"
 
 #include "remote/access_token.h"
+#include "remote/oscquery.h"
 #include "remote/socket_session.h"
 
 #include <boost/beast/websocket.hpp>
@@ -16,6 +17,24 @@ namespace {
 template <typename Request> std::string_view targetOf(const Request& request) {
   const auto target = request.target();
   return {target.data(), target.size()};
+}
+template <typename Request> std::string_view headerOf(const Request& request, http::field field) {
+  const auto value = request[field];
+  return {value.data(), value.size()};
+}
+
+// A query item that is not token=...: an OSCQuery attribute (?VALUE, ?HOST_INFO).
+bool asksAnAttribute(std::string_view target) {
+  const size_t question = target.find('?');
+  if (question == std::string_view::npos) return false;
+  for (std::string_view rest = target.substr(question + 1); !rest.empty();) {
+    const size_t amp = rest.find('&');
+    const std::string_view item = rest.substr(0, amp);
+    if (!item.empty() && !item.starts_with("token=")) return true;
+    if (amp == std::string_view::npos) break;
+    rest.remove_prefix(amp + 1);
+  }
+  return false;
 }
 }  // namespace
 
@@ -81,16 +100,18 @@ void HttpSession::upgrade(Request request) {
     response.body() = std::string(body);
     write(std::move(response), true);
   };
-  if (!tokensEqual(queryValue(targetOf(request), "token"), hub_.token)) {
+  // The page's socket is /socket; any other path is an OSCQuery client's (they connect to the root).
+  const bool oscQuery = targetPath(targetOf(request)) != "/socket";
+  if (!tokensEqual(queryValue(targetOf(request), "token"), hub_.token) && !(oscQuery && tokenlessAllowed(request))) {
     count(hub_.stats.unauthorised);
     return refuse(Status::forbidden, "Forbidden: this page needs the token printed by the gallery\n");
   }
-  if (targetPath(targetOf(request)) != "/socket") return refuse(Status::not_found, "Not found\n");
+  if (oscQuery && targetPath(targetOf(request)) != "/") return refuse(Status::not_found, "Not found\n");
   if (hub_.sockets >= hub_.limits.maxSockets) {
     count(hub_.stats.connectionsRefused);
     return refuse(Status::service_unavailable, "Too many remote controls connected\n");
   }
-  auto session = std::make_shared<SocketSession>(std::move(stream_), hub_, std::move(*slot_));
+  auto session = std::make_shared<SocketSession>(std::move(stream_), hub_, std::move(*slot_), oscQuery);
   slot_.reset();
   session->accept(std::move(request));
 }
@@ -109,13 +130,21 @@ HttpSession::Response HttpSession::respond(const Request& request) {
     return response;
   };
 
-  if (!tokensEqual(queryValue(targetOf(request), "token"), hub_.token)) {
+  const bool token = tokensEqual(queryValue(targetOf(request), "token"), hub_.token);
+  const bool oscQuery = forOscQuery(request, token);
+  if (!token && !(oscQuery && tokenlessAllowed(request))) {
     count(hub_.stats.unauthorised);
     return status(Status::forbidden, "Forbidden: open the URL the gallery printed, with its token\n");
   }
   if (request.method() != http::verb::get) {
     response.set(http::field::allow, "GET");
     return status(Status::method_not_allowed, "Only GET\n");
+  }
+  if (oscQuery) {
+    const OscQueryReply reply = answerOscQuery(hub_.catalogue.scenes(), hub_.values, hub_.host, targetOf(request));
+    if (reply.status == 200) response.set(http::field::content_type, "application/json");
+    if (reply.status == 400) count(hub_.stats.malformed);
+    return status(Status(reply.status), reply.body);
   }
   const std::string_view path = targetPath(targetOf(request));
   if (path == "/" || path == "/index.html") {
@@ -131,6 +160,23 @@ HttpSession::Response HttpSession::respond(const Request& request) {
     return status(Status::ok, hub_.catalogue.json());
   }
   return status(Status::not_found, "Not found\n");
+}
+
+bool HttpSession::forOscQuery(const Request& request, bool token) const {
+  const std::string_view target = targetOf(request), path = targetPath(target);
+  if (path == "/index.html" || path == "/catalogue.json" || path == "/socket") return false;
+  if (path != "/") return true;
+  // The root is the page for a holder of the token (a browser, the URL the gallery printed), unless
+  // it asks for an attribute or for JSON alone; for a client trusted without the token, the namespace.
+  if (!token || asksAnAttribute(target)) return true;
+  const std::string_view accept = headerOf(request, http::field::accept);
+  return accept.find("application/json") != std::string_view::npos && accept.find("text/html") == std::string_view::npos;
+}
+
+bool HttpSession::tokenlessAllowed(const Request& request) const {
+  return hub_.trust && hub_.trust->allowed(address_) &&
+         nativeClientRequest(request.find(http::field::origin) != request.end(), headerOf(request, http::field::host),
+                             hub_.machineName);
 }
 
 void HttpSession::write(Response response, bool close) {

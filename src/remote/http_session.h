@@ -32,6 +32,10 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void write(Response response, bool close);
   void onWrite(bool close, boost::beast::error_code error, size_t bytes);
   void trusted();  // it sent the token: no longer a stranger
+  // Whether the request is for the OSCQuery namespace (every path but the page's own), and whether it
+  // may have it without the token (OSC's network rule, from a native client).
+  bool forOscQuery(const Request& request, bool token) const;
+  bool tokenlessAllowed(const Request& request) const;
 
   boost::beast::tcp_stream stream_;
   WebHub& hub_;

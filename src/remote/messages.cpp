@@ -255,6 +255,7 @@ ParseResult commandFromOsc(std::string_view path, std::span<const OscArgument> a
     RemoteCommand command{.kind = RemoteCommand::Kind::Action, .scene = scene, .key = name};
     if (args.size() > kMaxActionArgs) return fail(fmt::format("/vitrine/{}/{}: too many arguments", scene, name));
     for (const OscArgument& arg : args) {
+      if (arg.type == 'N' || arg.type == 'I') continue;  // nil, impulse: a trigger's press, carrying nothing
       const auto number = isNumeric(arg) ? finiteFloat(arg.number) : std::nullopt;
       if (!number) return fail(fmt::format("/vitrine/{}/{}: arguments must be finite numbers", scene, name));
       command.args.push_back(*number);

@@ -1,7 +1,6 @@
 #include "remote/osc_server.h"
 
-#include "remote/access_token.h"
-#include "remote/messages.h"
+#include "remote/osc_dispatch.h"
 #include "remote/osc_packet.h"
 #include "remote/socket_address.h"
 
@@ -22,8 +21,12 @@ namespace vitrine::remote {
 
 OscServer::OscServer(const BindAddress& bind, const Catalogue& catalogue, RemoteInbox& inbox, RemoteStats& stats,
                      OscLimits limits, OscAccess access)
+    : OscServer(bind, catalogue, inbox, stats, limits, std::make_shared<OscTrust>(std::move(access))) {}
+
+OscServer::OscServer(const BindAddress& bind, const Catalogue& catalogue, RemoteInbox& inbox, RemoteStats& stats,
+                     OscLimits limits, std::shared_ptr<OscTrust> trust)
     : catalogue_(catalogue), inbox_(inbox), stats_(stats), limits_(limits), budgets_(limits.perSender),
-      access_(std::move(access)),
+      trust_(std::move(trust)),
       buffer_(limits.maxDatagram + 1) {
   const SocketAddress address = socketAddress(bind);
   const auto failed = [&](std::string_view what) {
@@ -97,43 +100,16 @@ void OscServer::handleMessage(std::span<const std::byte> bytes, const std::strin
     count(stats_.malformed);
     return;
   }
-  if (!allowed(sender)) {
+  if (!trust_->allowed(sender)) {
     if (message.path == "/vitrine/token" && message.args.size() == 1 && message.args[0].type == 's' &&
-        !access_.token.empty() && tokensEqual(message.args[0].text, access_.token)) {
-      trust(sender);
+        trust_->offer(sender, message.args[0].text)) {
       count(stats_.accepted);
     } else {
       count(stats_.unauthorised);
     }
     return;
   }
-  if (message.path == "/vitrine/token") return count(stats_.accepted);  // harmless from a trusted sender
-  ParseResult parsed = commandFromOsc(message.path, message.args, catalogue_);
-  if (!parsed.command) {
-    count(stats_.malformed);
-    return;
-  }
-  if (std::string why = catalogue_.check(*parsed.command); !why.empty()) {
-    count(stats_.refused);
-    inbox_.refused({"osc " + sender, std::move(why)});  // OSC has no reply: the gallery's console says it
-    return;
-  }
-  parsed.command->client = "osc " + sender;
-  if (inbox_.push(std::move(*parsed.command))) count(stats_.accepted);
-  else count(stats_.dropped);
-}
-
-bool OscServer::allowed(const std::string& sender) const {
-  if (access_.open) return true;
-  for (const Network& network : access_.allow)
-    if (contains(network, sender)) return true;
-  return std::find(trusted_.begin(), trusted_.end(), sender) != trusted_.end();
-}
-
-void OscServer::trust(const std::string& sender) {
-  if (std::find(trusted_.begin(), trusted_.end(), sender) != trusted_.end()) return;
-  if (trusted_.size() >= access_.maxTrusted) trusted_.erase(trusted_.begin());
-  trusted_.push_back(sender);
+  dispatchOsc(message, "osc " + sender, catalogue_, inbox_, stats_);
 }
 
 }  // namespace vitrine::remote

@@ -13,6 +13,7 @@
 #include "remote/catalogue.h"
 #include "remote/command.h"
 #include "remote/inbox.h"
+#include "remote/mdns_announcer.h"
 #include "remote/osc_server.h"
 #include "remote/stats.h"
 #include "remote/web_server.h"
@@ -32,6 +33,10 @@ struct RemoteConfig {
   // --remote-allow: beyond a loopback bind, OSC from these networks needs no token (this computer's
   // own loopback addresses never do); anyone else must send the token first (OscAccess).
   std::vector<Network> oscAllow;
+  // Announce OSCQuery and OSC over mDNS through Avahi (not for a loopback bind: only this computer
+  // could reach it). `say` gets the announcer's console lines, on Avahi's thread.
+  bool announce = false;
+  MdnsAnnouncer::Say say;
 };
 
 class RemoteControl {
@@ -57,6 +62,7 @@ class RemoteControl {
     if (client.starts_with("ws ")) web_->tell(client, std::move(reason));
   }
   RemoteStatsSnapshot stats() const { return stats_.snapshot(); }
+  const MdnsAnnouncer* announcer() const { return mdns_.get(); }  // null where not announced
   size_t sockets() const { return web_->sockets(); }
 
  private:
@@ -68,6 +74,7 @@ class RemoteControl {
   RemoteStats stats_;
   std::unique_ptr<OscServer> osc_;  // destroyed (threads joined) before what they point to
   std::unique_ptr<WebServer> web_;
+  std::unique_ptr<MdnsAnnouncer> mdns_;  // withdrawn first, before the servers close
 };
 
 }  // namespace vitrine::remote

@@ -4,6 +4,8 @@
 // except the atomic socket count.
 #include "remote/catalogue.h"
 #include "remote/inbox.h"
+#include "remote/osc_trust.h"
+#include "remote/oscquery.h"
 #include "remote/stats.h"
 #include "remote/web_server.h"
 
@@ -27,6 +29,14 @@ struct WebHub {
   RemoteStats& stats;
   WebLimits limits;
   std::string_view page;
+  // Who may read the OSCQuery namespace and use its socket without the token: those who may send OSC
+  // (null: nobody; the token is needed).
+  std::shared_ptr<const OscTrust> trust;
+  std::string machineName;  // this computer's host name, which a client's Host header may name
+
+  OscQueryHost host;                                  // HOST_INFO: the OSC port and address
+  OscQueryValues values;                              // what the gallery last published, per scene
+  std::unordered_set<SocketSession*> querySockets;    // OSCQuery sockets: value streams
 
   std::unordered_set<SocketSession*> openSockets;  // handshake done: these get state pushes
   std::shared_ptr<const std::string> lastState;    // sent to each socket when it opens

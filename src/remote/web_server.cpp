@@ -9,6 +9,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <climits>
 #include <thread>
 
 namespace vitrine::remote {
@@ -27,8 +30,8 @@ struct WebServer::Impl {
   uint16_t port = 0;
 
   Impl(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
-       RemoteStats& stats, WebLimits limits)
-      : hub{std::move(token), catalogue, inbox, stats, limits, pageHtml()} {
+       RemoteStats& stats, WebLimits limits, std::shared_ptr<const OscTrust> trust)
+      : hub{std::move(token), catalogue, inbox, stats, limits, pageHtml(), std::move(trust), machineName()} {
     boost::system::error_code error;
     const auto address = net::ip::make_address(bind.address, error);
     const auto failed = [&](std::string_view what) {
@@ -42,6 +45,8 @@ struct WebServer::Impl {
     if (acceptor.bind(endpoint, error)) throw failed("listen for");
     if (acceptor.listen(net::socket_base::max_listen_connections, error)) throw failed("listen for");
     port = acceptor.local_endpoint().port();
+    hub.host.oscPort = port;  // OSC listens on the same port, over UDP
+    if (bind.address != "0.0.0.0" && bind.address != "::") hub.host.oscAddress = bind.address;
     accept();
     thread = std::thread([this] { io.run(); });
   }
@@ -49,6 +54,11 @@ struct WebServer::Impl {
   ~Impl() {
     io.stop();
     thread.join();
+  }
+
+  static std::string machineName() {
+    char name[HOST_NAME_MAX + 1] = {};
+    return ::gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
   }
 
   void accept() {
@@ -96,8 +106,27 @@ struct WebServer::Impl {
     return true;
   }
 
+  // The values OSCQuery reports: those that changed are streamed to the sockets listening to them.
+  void updateValues(const PageState& page) {
+    std::vector<std::string> changed;
+    if (page.scene != hub.values.scene) {
+      hub.values.scene = page.scene;
+      changed.emplace_back("/vitrine/scene");
+    }
+    auto& stored = hub.values.values[page.scene];
+    for (const auto& [key, text] : page.values) {
+      const auto it = stored.find(key);
+      if (it != stored.end() && it->second == text) continue;
+      stored.insert_or_assign(key, text);
+      changed.push_back(fmt::format("/vitrine/{}/{}", page.scene, key));
+    }
+    if (!changed.empty())
+      for (SocketSession* socket : hub.querySockets) socket->valuesChanged(changed);
+  }
+
   // On the I/O thread: the state as JSON, sent to every open socket unless unchanged.
   void broadcast(const PageState& page) {
+    updateValues(page);
     nlohmann::json object = nlohmann::json::object();
     for (const auto& [key, text] : page.values) object[key] = text;
     nlohmann::json rig = nlohmann::json::array();
@@ -114,8 +143,8 @@ struct WebServer::Impl {
 };
 
 WebServer::WebServer(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
-                     RemoteStats& stats, WebLimits limits)
-    : impl_(std::make_unique<Impl>(bind, std::move(token), catalogue, inbox, stats, limits)) {}
+                     RemoteStats& stats, WebLimits limits, std::shared_ptr<const OscTrust> trust)
+    : impl_(std::make_unique<Impl>(bind, std::move(token), catalogue, inbox, stats, limits, std::move(trust))) {}
 
 WebServer::~WebServer() = default;
 

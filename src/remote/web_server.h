@@ -7,6 +7,8 @@
 #include "remote/bind_address.h"
 #include "remote/catalogue.h"
 #include "remote/inbox.h"
+#include "remote/osc_trust.h"
+#include "remote/oscquery_stream.h"
 #include "remote/rate_limiter.h"
 #include "remote/stats.h"
 
@@ -34,6 +36,7 @@ struct WebLimits {
   std::chrono::milliseconds requestTimeout{10'000};  // to send one whole request (slow clients)
   std::chrono::milliseconds socketIdle{30'000};      // silence before a ping, and again before closing
   RateLimit perSocket{};
+  StreamLimits stream{};  // an OSCQuery socket's LISTEN set and value rate
 };
 
 // What every page is sent about the gallery ({"type":"state",...}).
@@ -47,16 +50,18 @@ struct PageState {
 
 class WebServer {
  public:
-  // Binds at once (port 0: a free one); throws std::runtime_error saying why it cannot.
+  // Binds at once (port 0: a free one); throws std::runtime_error saying why it cannot. `trust`: who
+  // may use OSCQuery without the token (OSC's own rule); null: nobody.
   WebServer(const BindAddress& bind, std::string token, const Catalogue& catalogue, RemoteInbox& inbox,
-            RemoteStats& stats, WebLimits limits = {});
+            RemoteStats& stats, WebLimits limits = {}, std::shared_ptr<const OscTrust> trust = nullptr);
   ~WebServer();  // closes every connection and joins the I/O thread
   WebServer(const WebServer&) = delete;
   WebServer& operator=(const WebServer&) = delete;
 
   uint16_t port() const;
   // Any thread, cheap: the state every socket is sent, now and to each new socket on connect. The JSON
-  // is made on the I/O thread; an unchanged state is not resent.
+  // is made on the I/O thread; an unchanged state is not resent. Its values are also what OSCQuery
+  // reports, and those that changed are streamed to the OSCQuery sockets listening to them.
   void publish(PageState state);
   // Any thread: tells the page whose command it was (RemoteCommand::client) why the gallery refused it,
   // as the server's own refusals are told; nothing when that page has gone.

@@ -28,14 +28,9 @@ namespace http = beast::http;
 namespace websocket = beast::websocket;
 using tcp = net::ip::tcp;
 using testing::eventually;
+using testing::limitReads;
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
-
-// Reads on test sockets give up after two seconds instead of hanging a test that fails.
-void limitReads(tcp::socket& socket) {
-  timeval limit{2, 0};
-  ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
-}
 
 // One request on an open connection, and its response.
 template <typename Body>

@@ -80,9 +80,12 @@ try:
     if url is None:
         fail("no page address within 60 s")
     base = url.split("?")[0]
-    # The token guards every request.
-    assert status_of(base) == 403, "a request without the token must be refused"
-    assert status_of(base + "?token=" + "0" * len(token)) == 403, "a wrong token must be refused"
+    # The token guards the page and its catalogue. Without it, / is at most OSCQuery's namespace (JSON,
+    # for native clients at addresses OSC trusts), never the page, and nothing to a browser's request.
+    assert status_of(base + "index.html") == 403, "a request without the token must be refused"
+    assert status_of(base + "index.html?token=" + "0" * len(token)) == 403, "a wrong token must be refused"
+    assert status_of(urllib.request.Request(base, headers={"Origin": "http://example.com"})) == 403, \
+        "a browser's request without the token must be refused"
     assert status_of(base + "catalogue.json?token=" + token) == 200
 
     port = free_port()
