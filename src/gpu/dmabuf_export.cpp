@@ -164,7 +164,8 @@ void recordDrmBarrier(VkCommandBuffer cmd, VkImageMemoryBarrier2 barrier, VkImag
 
 void beginExportedCopy(VkCommandBuffer cmd, VkImage image) {
   VkImageMemoryBarrier2 step{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  step.srcStageMask = VK_PIPELINE_STAGE_2_NONE;
+  step.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // after this queue's copy into it frames ago
+  step.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
   step.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
   step.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
   step.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;

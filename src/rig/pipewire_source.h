@@ -7,10 +7,12 @@
 // each frame into an exported image; it is queued once the copy has finished), else through shared
 // memory (read back, then copied by PipeWire's thread).
 //
-// Threads: PipeWire's run on a thread loop of their own. The frame thread copies the newest frame into
-// a mailbox and signals the loop; the loop's process callback copies it into a buffer it dequeued. A
+// Threads: PipeWire's run on a thread loop of their own. With shared memory, the frame thread copies
+// the newest frame into a mailbox and signals the loop; the loop's process callback copies it into a
+// buffer it dequeued. With DMA-BUFs, the frame thread copies on the GPU into a buffer the consumer gave
+// back (rig/dmabuf_pool.h) and signals the loop once that copy has finished; the loop queues it. A
 // frame the consumer had no buffer for, or one a newer frame replaced before the loop took it, is
-// dropped and counted: nothing on the frame thread waits for PipeWire, a consumer or the daemon.
+// dropped and counted: nothing on the frame thread waits for PipeWire, a consumer, the daemon or the GPU.
 // Without a daemon the source says so once on the console and tries again every few seconds.
 #include "gpu/drm_modifiers.h"
 #include "host/present/readback_output.h"
@@ -37,6 +39,7 @@ class PipeWireSource final : public host::FrameSink {
  public:
   static constexpr std::chrono::seconds kRetry{5};  // between tries to reach a daemon that is not there
 
+  // What `device` can offer, the frame's format being ReadbackOutput::frameFormat's.
   static DmaBufOffer dmaBufOffer(const gpu::Device& device);
 
   // `node`: the node's name (node.name); `extent`: the size it offers first; `fps`: the rate it offers.
