@@ -135,8 +135,8 @@ struct PipeWireSource::Impl {
   void process();
   void processDmaBuf();
   void negotiate(const spa_pod* param);
-  // The formats offered: DMA-BUF ones first (unless refused), then shared memory; `fixed` narrows the
-  // DMA-BUF ones to one format and modifier (the fixation).
+  // The formats offered: DMA-BUF ones first (unless refused), then shared memory; `fixed` gives only
+  // the DMA-BUF one of that format and modifier (the fixation, offered ahead of the others).
   std::vector<const spa_pod*> formats(spa_pod_builder& builder, std::optional<std::pair<uint32_t, uint64_t>> fixed);
   void offerShared(std::string why);  // gives DMA-BUF up, says why once, renegotiates
   void addBuffer(pw_buffer* buffer);
@@ -297,6 +297,7 @@ std::vector<const spa_pod*> PipeWireSource::Impl::formats(spa_pod_builder& build
     spa_pod_builder_pop(&builder, &choice);
     end(object);
   }
+  if (fixed) return params;  // the fixation goes ahead of the formats offered before, shared memory last
   spa_pod_frame object;
   begin(object);
   spa_pod_builder_add(&builder, SPA_FORMAT_VIDEO_format,
