@@ -335,6 +335,17 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (options.surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  // DMA-BUF export (a published output's frames handed over without a copy through the CPU), only where
+  // the driver offers all three; their other dependencies (image format lists, bind memory 2, sampler
+  // Y'CbCr conversion) are core in Vulkan 1.3.
+  {
+    const auto offered = deviceExtensions(physical_);
+    const std::array<const char*, 3> dmaBuf{VK_KHR_EXTERNAL_MEMORY_FD_EXTENSION_NAME,
+                                            VK_EXT_EXTERNAL_MEMORY_DMA_BUF_EXTENSION_NAME,
+                                            VK_EXT_IMAGE_DRM_FORMAT_MODIFIER_EXTENSION_NAME};
+    exportsDmaBuf_ = std::all_of(dmaBuf.begin(), dmaBuf.end(), [&](const char* name) { return hasExtension(offered, name); });
+    if (exportsDmaBuf_) extensions.insert(extensions.end(), dmaBuf.begin(), dmaBuf.end());
+  }
   // Compiler statistics only when asked (bench --pipeline-stats): capturing them may change how a
   // driver caches its pipelines, and no other run reads them.
   VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executableInfo{
@@ -364,6 +375,14 @@ Device::Device(const Instance& instance, const DeviceOptions& options) : instanc
 
   cmdPushDescriptorSet =
       reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+  if (exportsDmaBuf_) {
+    getMemoryFd = reinterpret_cast<PFN_vkGetMemoryFdKHR>(vkGetDeviceProcAddr(device_, "vkGetMemoryFdKHR"));
+    getMemoryFdProperties =
+        reinterpret_cast<PFN_vkGetMemoryFdPropertiesKHR>(vkGetDeviceProcAddr(device_, "vkGetMemoryFdPropertiesKHR"));
+    getImageDrmFormatModifierProperties = reinterpret_cast<PFN_vkGetImageDrmFormatModifierPropertiesEXT>(
+        vkGetDeviceProcAddr(device_, "vkGetImageDrmFormatModifierPropertiesEXT"));
+    exportsDmaBuf_ = getMemoryFd && getMemoryFdProperties && getImageDrmFormatModifierProperties;
+  }
   if (executableInfo.pipelineExecutableInfo) {
     getExecutableProperties_ = reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
         vkGetDeviceProcAddr(device_, "vkGetPipelineExecutablePropertiesKHR"));
@@ -499,12 +518,12 @@ std::string Device::describe() const {
 }
 
 Unique<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
-                                        VkMemoryPropertyFlags fallback) const {
+                                        VkMemoryPropertyFlags fallback, const void* next) const {
   for (VkMemoryPropertyFlags flags : {wanted, fallback}) {
     for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
       if (!(requirements.memoryTypeBits & (1u << i))) continue;
       if ((memory_.memoryTypes[i].propertyFlags & flags) != flags) continue;
-      VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, nullptr, requirements.size, i};
+      VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, next, requirements.size, i};
       VkDeviceMemory memory;
       VK_CHECK(injectedFault(Fault::OutOfMemory) != VK_SUCCESS ? VK_ERROR_OUT_OF_DEVICE_MEMORY
                                                                : vkAllocateMemory(device_, &info, nullptr, &memory));

@@ -100,7 +100,15 @@ class Device {
   VkFormatFeatureFlags optimalTilingFeatures(VkFormat format) const;
 
   Unique<VkDeviceMemory> allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted,
-                                  VkMemoryPropertyFlags fallback = 0) const;
+                                  VkMemoryPropertyFlags fallback = 0, const void* next = nullptr) const;
+
+  // Images exported as DMA-BUFs with an explicit DRM format modifier (gpu/dmabuf_export.h): the device
+  // offered VK_KHR_external_memory_fd, VK_EXT_external_memory_dma_buf and VK_EXT_image_drm_format_modifier,
+  // and they are enabled. The entry points below are loaded only then.
+  bool exportsDmaBuf() const { return exportsDmaBuf_; }
+  PFN_vkGetMemoryFdKHR getMemoryFd = nullptr;
+  PFN_vkGetMemoryFdPropertiesKHR getMemoryFdProperties = nullptr;
+  PFN_vkGetImageDrmFormatModifierPropertiesEXT getImageDrmFormatModifierProperties = nullptr;
 
   // The one place work reaches the queue. Every submission signals the next value of the device's
   // timeline semaphore and returns it: its serial. Binary semaphores (swapchain) and a fence are optional.
@@ -157,6 +165,7 @@ class Device {
   bool storageWriteWithoutFormat_ = false;
   bool bufferInt64Atomics_ = false;
   bool countsInvocations_ = false;
+  bool exportsDmaBuf_ = false;
   MemoryLimits memoryLimits_;
   Unique<VkCommandPool> oneShotPool_;
   Unique<VkSemaphore> timeline_;

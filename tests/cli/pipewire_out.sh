@@ -129,6 +129,12 @@ for attempt in 1 2 3; do
     break
   [ $attempt = 3 ] && fail "a stopped consumer slowed the gallery from $reading to $stopped fps"
 done
+# Which hand-over the node used, and why: GStreamer's pipewiresrc in PipeWire 0.3.65 names no DMA-BUF
+# modifier, so it takes shared memory; the line says so, and why (on lavapipe: no DMA-BUF export).
+case "$line" in
+  *" by shm ("*|*" by dma-buf ("*) echo "hand-over: $(echo "$line" | sed -n 's/.* by \(shm\|dma-buf\) (\(.*\)); .*/\1 (\2)/p')" ;;
+  *) fail "the node's line does not say which hand-over it used: $line" ;;
+esac
 dropped=$(echo "$line" | sed -n 's/.*, \([0-9]*\) dropped$/\1/p')
 [ "${dropped:-0}" -gt 0 ] || fail "the stopped consumer's frames were not counted as dropped: $line"
 

@@ -8,10 +8,12 @@
 #include <array>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <system_error>
 
 #include "core/atomic_file.h"
@@ -19,12 +21,15 @@
 #include "core/output_path.h"
 #include "core/resident_memory.h"
 #include "core/stats.h"
+#include "gpu/dmabuf_export.h"
 #include "gpu/memory_ledger.h"
 #include "host/user_presets.h"
 #include "host/modes.h"
 #include "host/offline/offscreen.h"
 #include "host/present/readback_output.h"
 #include "params/settings_file.h"
+#include "rig/dmabuf_pool.h"
+#include "rig/pipewire_source.h"
 
 namespace vitrine::host {
 namespace {
@@ -46,14 +51,57 @@ params::KeyValues benchParameters(const Options& options, const std::string& sce
   return values;
 }
 
-// bench --publish: frames read back as a published output's are, then let go, as by a consumer that
-// takes every frame; what is timed is the GPU's part (the publish passes), with no daemon needed.
+// bench --publish: frames handed over as a published output's are, then let go, as by a consumer that
+// takes every frame; what is timed is the GPU's part (the publish passes), with no daemon needed. Where
+// the device exports DMA-BUFs, each frame is copied into one of three exported B,G,R,A images (what a
+// consumer such as OBS takes), which it gives straight back; else, or with VITRINE_PUBLISH=shm, it is
+// read back as for a consumer of shared memory.
 class DiscardingSink final : public FrameSink {
  public:
+  DiscardingSink(const gpu::Device& device, VkExtent2D size) {
+    if (const char* path = std::getenv("VITRINE_PUBLISH"); path && std::string_view(path) == "shm") {
+      std::printf("publish    by shm: VITRINE_PUBLISH=shm\n");
+      return;
+    }
+    const rig::DmaBufOffer offer = rig::PipeWireSource::dmaBufOffer(device);
+    if (!offer.device || offer.bgraModifiers.empty()) {
+      std::printf("publish    by shm: %s\n", offer.why.c_str());
+      return;
+    }
+    pool_ = std::make_shared<rig::DmaBufPool>([this] { giveBack(); });
+    std::vector<uint64_t> modifiers;
+    for (const auto& entry : offer.bgraModifiers) modifiers.push_back(entry.modifier);
+    try {
+      for (const int& key : keys_) {
+        auto image = std::make_unique<gpu::ExportedImage>(device, offer.bgra, size, VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                                          modifiers, "bench dma-buf");
+        modifier_ = image->modifier();
+        pool_->add(&key, std::move(image), size, offer.bgra);
+        pool_->given(&key);
+      }
+    } catch (const Error& e) {
+      std::printf("publish    by shm: DMA-BUF failed: %s\n", e.what());
+      pool_.reset();
+      return;
+    }
+    pool_->setActive(true);
+    std::printf("publish    by dma-buf: B,G,R,A, %s\n", gpu::drm::describeModifier(modifier_).c_str());
+  }
   void frame(const PublishedFrame&) override { ++frames_; }
+  std::shared_ptr<ImageHandOver> images() override { return pool_; }
   Output::Health health() const override { return {.kind = "bench", .line = "discarded", .frames = frames_}; }
 
  private:
+  void giveBack() {  // on the frame thread, once a copy has finished
+    uint64_t superseded = 0;
+    while (const auto done = pool_->takeDone(superseded)) {
+      pool_->given(done->key);
+      ++frames_;
+    }
+  }
+  std::shared_ptr<rig::DmaBufPool> pool_;
+  std::array<int, 3> keys_{};
+  uint64_t modifier_ = 0;
   uint64_t frames_ = 0;
 };
 
@@ -65,7 +113,8 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   Offscreen offscreen(device, config);
   std::optional<ReadbackOutput> published;
   if (options.publish) {
-    published.emplace(device, "publish", maths::OutputWarp{}, config.size, std::make_unique<DiscardingSink>());
+    published.emplace(device, "publish", maths::OutputWarp{}, config.size,
+                      std::make_unique<DiscardingSink>(device, config.size));
     offscreen.addOutput(*published);
   }
   // Warm-up: pipeline compilation, clocks ramping, caches; not counted.

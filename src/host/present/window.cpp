@@ -37,7 +37,7 @@ ScreenArea areaOf(GLFWmonitor* monitor) {
   return area;
 }
 
-std::string lowercase(std::string text) {
+std::string foldCase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return text;
 }
@@ -68,7 +68,7 @@ GLFWmonitor* findMonitor(std::string_view wanted) {
     if (index < all.size()) return all[index];
   } else {
     for (GLFWmonitor* monitor : all)
-      if (lowercase(glfwGetMonitorName(monitor)).find(lowercase(std::string(wanted))) != std::string::npos) return monitor;
+      if (foldCase(glfwGetMonitorName(monitor)).find(foldCase(std::string(wanted))) != std::string::npos) return monitor;
   }
   throw Error(fmt::format("No monitor '{}'; there are:\n{}", wanted, describeMonitors()));
 }
