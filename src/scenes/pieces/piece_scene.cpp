@@ -46,9 +46,11 @@ class PieceScene final : public Scene {
           loaded.error = e.what();
         }
       }
-      if (!loaded.error.empty()) refused(loaded.error);
+      if (!loaded.error.empty()) refused(loaded.error, context.realtime);
     }
     if (version && version->file) start(*version, nullptr);
+    // A run that is not the gallery cannot wait for a mended file: a piece that never loaded ends it.
+    if (!runner_ && !context_.realtime) throw Error(piece_.error);
     polled_ = Clock::now();
   }
 
@@ -155,9 +157,9 @@ class PieceScene final : public Scene {
     if (target_.width > 0) runner_->resize(target_);
   }
 
-  void refused(const std::string& error) {
+  void refused(const std::string& error, bool say = true) {
     piece_.error = error;
-    std::fprintf(stderr, "vitrine: %s\n", error.c_str());
+    if (say) std::fprintf(stderr, "vitrine: %s\n", error.c_str());
     context_.events.emit(shown_.time, {"refused", {{"error", error}}});
   }
 
