@@ -127,6 +127,7 @@ struct Runner::State {
   std::vector<Target> targets;
   std::vector<Sampled> sampled;
   std::vector<int> passTarget;  // per pass: index in targets, -1 for the output
+  std::vector<std::string> passLabels;  // per pass, for the GPU timings: "isf pass 0 small"
   gpu::ImageHandle output, cleared;
   VkExtent2D outputSize{0, 0};
   Values values;  // the latest update()'s: what sizes are evaluated with
@@ -154,6 +155,7 @@ Runner::Runner(const GpuContext& context, std::shared_ptr<const LoadedFile> file
     for (size_t t = 0; t < s.targets.size(); ++t)
       if (!pass.target.empty() && s.targets[t].name == pass.target) index = int(t);
     s.passTarget.push_back(index);
+    s.passLabels.push_back(fmt::format("isf pass {} {}", s.passLabels.size(), pass.target.empty() ? "output" : pass.target));
   }
   const auto makePipeline = [&](VkFormat format) {
     if (s.pipelines.contains(format)) return;
@@ -394,7 +396,7 @@ void Runner::record(const FrameContext& frame, const RunInput& input, gpu::Image
       frame.transition(*image, kSampled);
       views.emplace_back(entry.binding.binding, image);
     }
-    const auto timed = frame.pass(targetIndex < 0 ? "isf pass" : "isf buffer pass");
+    const auto timed = frame.pass(s.passLabels[p].c_str());
     const auto rendering = frame.rendering({{gpu::ColorAttachment{&drawn, VkClearColorValue{{0, 0, 0, 0}}}}, {}});
     gpu::GraphicsProgram& program = s.pipeline(drawn.format());
     program.bind(frame.cmd);

@@ -90,8 +90,10 @@ const Version& Piece::adopt(std::shared_ptr<const isf::LoadedFile> file) {
 
 void blame(Piece& piece, const std::string& why) {
   piece.faultedAt = piece.modified();
-  piece.error = fmt::format("{}: the GPU stopped responding while it ran; it starts again once the file is saved ({})",
-                            piece.path.string(), why);
+  // The host's sentence first said what happened and what to do; here, only what it was.
+  const bool lost = why.find("VK_ERROR_DEVICE_LOST") != std::string::npos;
+  piece.error = fmt::format("{}: the GPU stopped responding while it ran ({}); it starts again once the file is saved",
+                            piece.path.string(), lost ? "a lost device" : why.substr(0, why.find('\n')));
 }
 
 fs::path userPiecesFolder() {
