@@ -11,11 +11,15 @@
 #include "support/gpu_test.h"
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace vitrine::test {
 namespace {
