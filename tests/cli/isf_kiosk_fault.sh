@@ -2,13 +2,14 @@
 # isf_kiosk_fault.sh VITRINE OUTDIR: a lost device while the kiosk shows an ISF piece (injected: what a
 # runaway shader the loop guard did not bound, or a driver fault, looks like to the host). That gallery
 # ends with the host's sentence, a fresh one starts, and the piece is not started again while its file
-# is unchanged: the playlist's next turn skips it, saying why.
+# is unchanged: the playlist's next turn skips it, saying why. The piece's turn is long, so the loss
+# (the 20th submission) falls within it however slow the machine.
 set -u
 vitrine=$1; out=$2
 rm -rf "$out"; mkdir -p "$out/config" "$out/data"
 log=$out/kiosk.log
 printf '/*{ "ISFVSN": "2" }*/\nvoid main() { gl_FragColor = vec4(isf_FragNormCoord, 0.5, 1.0); }\n' >"$out/flat.fs"
-printf 'flat 1\ncalibrate 1\n' >"$out/playlist.txt"
+printf 'flat 30\ncalibrate 1\n' >"$out/playlist.txt"
 XDG_CONFIG_HOME=$out/config XDG_DATA_HOME=$out/data VITRINE_INJECT=device-lost:20 \
   timeout 80 xvfb-run -a -s "-screen 0 320x180x24" bash -c '
     "$0" --kiosk --isf "$2/flat.fs" --playlist "$2/playlist.txt" --size 320x180 --validate >"$1" 2>&1 &
