@@ -47,6 +47,7 @@ struct Options {
   bool vsync = true;
   std::vector<SceneSetting> parameters;  // --set [SCENE.]KEY=VALUE, in command-line order
   std::vector<SceneSetting> presets;     // --preset [SCENE.]NAME, in command-line order
+  std::vector<std::string> isf;      // --isf FILE: ISF generators shown as scenes (registered before parsing)
   std::vector<std::string> presetFiles;  // --preset-file FILE: a preset's file, applied to its own scene
   std::string savePreset;                // --save-preset NAME (headless): the run's values kept as the user's preset
   SceneSetting exportPreset;             // --export-preset [SCENE.]NAME --out FILE: a user's preset written out
