@@ -131,7 +131,10 @@ void Gallery::showMenu() {
   state.live = live_->panelState();
   state.flashGuard = flashGuard_;
   state.rig = rig_;
+  filterChoice_ = {};
+  state.filters = [this] { drawFilters(); };
   const MenuChoice choice = drawMenu(state);
+  applyFilterChoice(filterChoice_);
   if (live_->apply(choice.live, panel_)) remote_.setMappings(live_->mappingLines());
   vsync_ = choice.vsync;
   if (choice.flashGuard && !flashGuard_) guard_.reset();  // what it held is stale: count from the next frame
@@ -281,6 +284,7 @@ void Gallery::rememberValues() {
       if (theirs.contains(kv.first)) values.push_back(std::move(kv));
   }
   settings_.remember(scene, std::move(values), Clock::now());
+  rememberFilters();
 }
 
 }  // namespace vitrine::host

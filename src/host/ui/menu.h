@@ -8,6 +8,7 @@
 #include "rig/rig_report.h"
 #include "scenes/scene.h"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -59,6 +60,7 @@ struct MenuState {
   bool flashGuard = false;                     // frames go through the flash guard
   UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
   std::span<const rig::RigLine> rig;           // the clocks followed and the outputs published; none: no section
+  std::function<void()> filters;               // draws the filters section (its choices kept by the caller)
 };
 
 struct MenuChoice {

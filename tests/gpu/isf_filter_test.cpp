@@ -1,0 +1,201 @@
+// ISF filters after a native scene and ISF transitions between two, rendered headless on the device
+// with the validation layer watching. ISF computes on display values (docs/ISF.md), so what a filter
+// promises is measured on the sRGB-encoded picture: an inversion gives 1 - x of it.
+#include "host/filters/filter_chain.h"
+#include "host/filters/isf_transition.h"
+#include "host/offline/offscreen.h"
+#include "host/scene_renderer.h"
+#include "image/image.h"
+#include "scenes/pieces/piece_catalogue.h"
+#include "scenes/pieces/piece_scene.h"
+#include "support/gpu_test.h"
+#include "unit/isf_test_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace vitrine::test {
+namespace {
+
+using isf::test::isfFile;
+
+constexpr VkExtent2D kSize{320, 180};
+
+float display(float linear) { return linearToSrgb(std::clamp(linear, 0.0f, 1.0f)); }
+
+// The mean over every pixel and colour channel of |f(a's display value) - b's display value|.
+double meanError(const ImageRgba& a, const ImageRgba& b, const std::function<float(float)>& f) {
+  double sum = 0.0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) sum += std::abs(f(display(a.at(x, y)[c])) - display(b.at(x, y)[c]));
+  return sum / (double(a.width) * a.height * 3);
+}
+float same(float v) { return v; }
+
+// The spread of a picture's display values: a test picture that is one flat colour proves nothing.
+double spread(const ImageRgba& image) {
+  float lo = 1.0f, hi = 0.0f;
+  for (size_t i = 0; i < image.pixels.size(); i += 4) {
+    lo = std::min(lo, display(image.pixels[i])), hi = std::max(hi, display(image.pixels[i]));
+  }
+  return hi - lo;
+}
+
+class IsfFilters : public GpuTest {
+ protected:
+  // Frame `frames` of `scene` with `filters` after it.
+  ImageRgba render(const std::string& scene, std::vector<host::FilterSpec> filters, uint32_t frames = 2) {
+    host::OffscreenConfig config;
+    config.scene = scene;
+    config.size = kSize;
+    config.filters = std::move(filters);
+    host::Offscreen offscreen(device(), config);
+    for (uint32_t i = 0; i < frames; ++i) offscreen.renderFrame();
+    return offscreen.readback();
+  }
+  static host::FilterSpec filter(const std::string& file, params::KeyValues values = {}) {
+    return {isfFile(file), std::move(values)};
+  }
+};
+
+TEST_F(IsfFilters, AnInversionAfterANativeSceneIsOneMinusItsPicture) {
+  const ImageRgba plain = render("calibrate", {});
+  const ImageRgba inverted = render("calibrate", {filter("filter_invert.fs")});
+  ASSERT_GT(spread(plain), 0.5);
+  const double error = meanError(plain, inverted, [](float v) { return 1.0f - v; });
+  std::printf("calibrate inverted: mean |(1 - x) - filtered| %.5f (plain against filtered: %.5f)\n", error,
+              meanError(plain, inverted, same));
+  EXPECT_LT(error, 0.01);
+}
+
+TEST_F(IsfFilters, AFiltersParameterChangesThePicture) {
+  const ImageRgba plain = render("calibrate", {});
+  const ImageRgba none = render("calibrate", {filter("filter_invert.fs", {{"amount", "0"}})});
+  const ImageRgba half = render("calibrate", {filter("filter_invert.fs", {{"amount", "0.5"}})});
+  const double unchanged = meanError(plain, none, same);
+  const double halfway = meanError(plain, half, [](float) { return 0.5f; });
+  std::printf("amount 0: mean error against the plain picture %.5f; amount 0.5: against grey %.5f\n", unchanged, halfway);
+  EXPECT_LT(unchanged, 0.01);
+  EXPECT_LT(halfway, 0.01);
+}
+
+// Inverting then halving gives (1 - x) / 2; halving then inverting 1 - x / 2.
+TEST_F(IsfFilters, TheChainsOrderIsTheOrderGiven) {
+  const ImageRgba plain = render("calibrate", {});
+  const ImageRgba invertFirst = render("calibrate", {filter("filter_invert.fs"), filter("filter_gain.fs")});
+  const ImageRgba gainFirst = render("calibrate", {filter("filter_gain.fs"), filter("filter_invert.fs")});
+  const double a = meanError(plain, invertFirst, [](float v) { return 0.5f * (1.0f - v); });
+  const double b = meanError(plain, gainFirst, [](float v) { return 1.0f - 0.5f * v; });
+  const double crossed = meanError(plain, invertFirst, [](float v) { return 1.0f - 0.5f * v; });
+  std::printf("invert, gain: %.5f from (1 - x) / 2; gain, invert: %.5f from 1 - x / 2; crossed: %.5f\n", a, b, crossed);
+  EXPECT_LT(a, 0.01);
+  EXPECT_LT(b, 0.01);
+  EXPECT_GT(crossed, 0.1);
+}
+
+// The filter stretches the picture's lower half over all of it: its top row shows the middle row, its
+// bottom row the bottom row. Flipped the wrong way on the way in or out, the upper half would show.
+TEST_F(IsfFilters, AFilterSeesThePictureTheRightWayUp) {
+  const ImageRgba plain = render("calibrate", {});
+  const ImageRgba stretched = render("calibrate", {filter("filter_lower_half.fs")});
+  const auto rowError = [&](uint32_t filteredRow, uint32_t plainRow) {
+    double sum = 0.0;
+    for (uint32_t x = 0; x < kSize.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        sum += std::abs(display(stretched.at(x, filteredRow)[c]) - display(plain.at(x, plainRow)[c]));
+    return sum / (kSize.width * 3.0);
+  };
+  // Rows a little inside the edges (sampling there falls between two rows of the source).
+  const double bottom = rowError(kSize.height - 3, kSize.height - 2);
+  const double middle = rowError(20, 100);
+  const double upside = rowError(kSize.height - 3, 1);
+  std::printf("bottom rows %.4f, row 20 against row 100 %.4f; the bottom against the top %.4f\n", bottom, middle, upside);
+  EXPECT_LT(bottom, 0.05);
+  EXPECT_LT(middle, 0.05);
+  EXPECT_GT(upside, 0.1);
+}
+
+// An ISF generator as a scene (gl3_style.fs: grey cells), then an inversion after it.
+TEST_F(IsfFilters, AnInversionAfterAnIsfGeneratorIsOneMinusItsPicture) {
+  const std::filesystem::path file = isfFile("gl3_style.fs");
+  pieces::Piece* piece = pieces::findPieceByPath(file);
+  if (!piece) {
+    const auto added = pieces::addPieces(std::vector{file}, true);
+    pieces::addPieceFactories(added);
+    piece = added.front();
+  }
+  const ImageRgba plain = render(piece->name, {});
+  const ImageRgba inverted = render(piece->name, {filter("filter_invert.fs")});
+  ASSERT_GT(spread(plain), 0.5);
+  const double error = meanError(plain, inverted, [](float v) { return 1.0f - v; });
+  std::printf("%s inverted: mean |(1 - x) - filtered| %.5f\n", piece->name.c_str(), error);
+  EXPECT_LT(error, 0.01);
+}
+
+TEST_F(IsfFilters, AFilterRefusesAFileThatIsNotOne) {
+  host::OffscreenConfig config;
+  config.scene = "calibrate";
+  config.size = {32, 18};
+  config.filters = {filter("transition_mix.fs")};
+  EXPECT_THROW(host::Offscreen(device(), config), Error);
+  config.filters = {filter("filter_invert.fs", {{"amount", "7"}})};
+  EXPECT_THROW(host::Offscreen(device(), config), Error);
+}
+
+// A transition between two scenes at progress 0, 0.5 and 1: the start frame, their mix on display
+// values (transition_mix.fs), the end frame.
+TEST_F(IsfFilters, ATransitionAtZeroHalfAndOneIsTheStartTheMixAndTheEnd) {
+  Assets assets = Assets::locate();
+  gpu::ProgramLibrary programs(device());
+  host::SceneRenderer outgoing(device(), programs, assets, 1), incoming(device(), programs, assets, 1);
+  outgoing.setScene(*findScene("calibrate"));
+  incoming.setScene(*findScene("kifs"));
+  outgoing.scene().update(FrameInput{});
+  incoming.scene().update(FrameInput{});
+  host::IsfTransition transition(device(), programs, 1, isfFile("transition_mix.fs"));
+  gpu::ImageDesc desc;
+  desc.extent = {kSize.width, kSize.height, 1};
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  gpu::Image output(device(), desc, "transition output");
+  gpu::Buffer staging(device(), size_t(kSize.width) * kSize.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      gpu::MemoryUse::Readback, "readback");
+  const auto shown = [&](const host::Crossfade& fade, host::SceneRenderer& renderer, bool withIncoming) {
+    device().submitNow([&](VkCommandBuffer cmd) {
+      if (withIncoming) incoming.recordTarget(cmd, 0, FrameInput{}, kSize);
+      output.discard();
+      renderer.record(cmd, 0, FrameInput{},
+                      host::BlitDestination{output.handle(), kSize, output.lastUse(), gpu::use::TransferSrc, output.view()},
+                      fade);
+      output.assumeUse(gpu::use::TransferSrc);
+      gpu::recordReadback(cmd, output, staging);
+    });
+    staging.invalidate();
+    return imageFromHalves(kSize.width, kSize.height, staging.view<const uint16_t>());
+  };
+  const ImageRgba start = shown({}, outgoing, false), end = shown({}, incoming, false);
+  ASSERT_GT(meanError(start, end, same), 0.05);  // two pictures a transition can be told apart between
+  const ImageRgba at0 = shown({&incoming.target(), 0.0f, &transition}, outgoing, true);
+  const ImageRgba at1 = shown({&incoming.target(), 1.0f, &transition}, outgoing, true);
+  const ImageRgba half = shown({&incoming.target(), 0.5f, &transition}, outgoing, true);
+  const double e0 = meanError(start, at0, same), e1 = meanError(end, at1, same);
+  double eHalf = 0.0;
+  for (uint32_t y = 0; y < kSize.height; ++y)
+    for (uint32_t x = 0; x < kSize.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        eHalf += std::abs(0.5f * (display(start.at(x, y)[c]) + display(end.at(x, y)[c])) - display(half.at(x, y)[c]));
+  eHalf /= double(kSize.width) * kSize.height * 3;
+  std::printf("progress 0 against the start %.5f, 1 against the end %.5f, 0.5 against their mix %.5f (start against "
+              "end %.5f)\n",
+              e0, e1, eHalf, meanError(start, end, same));
+  EXPECT_LT(e0, 0.01);
+  EXPECT_LT(e1, 0.01);
+  EXPECT_LT(eHalf, 0.01);
+  device().waitIdle();
+}
+
+}  // namespace
+}  // namespace vitrine::test
