@@ -24,14 +24,14 @@ using isf::test::isfFile;
 
 constexpr VkExtent2D kSize{320, 180};
 
-float display(float linear) { return linearToSrgb(std::clamp(linear, 0.0f, 1.0f)); }
+float displayValue(float linear) { return linearToSrgb(std::clamp(linear, 0.0f, 1.0f)); }
 
 // The mean over every pixel and colour channel of |f(a's display value) - b's display value|.
 double meanError(const ImageRgba& a, const ImageRgba& b, const std::function<float(float)>& f) {
   double sum = 0.0;
   for (uint32_t y = 0; y < a.height; ++y)
     for (uint32_t x = 0; x < a.width; ++x)
-      for (int c = 0; c < 3; ++c) sum += std::abs(f(display(a.at(x, y)[c])) - display(b.at(x, y)[c]));
+      for (int c = 0; c < 3; ++c) sum += std::abs(f(displayValue(a.at(x, y)[c])) - displayValue(b.at(x, y)[c]));
   return sum / (double(a.width) * a.height * 3);
 }
 float same(float v) { return v; }
@@ -40,7 +40,7 @@ float same(float v) { return v; }
 double spread(const ImageRgba& image) {
   float lo = 1.0f, hi = 0.0f;
   for (size_t i = 0; i < image.pixels.size(); i += 4) {
-    lo = std::min(lo, display(image.pixels[i])), hi = std::max(hi, display(image.pixels[i]));
+    lo = std::min(lo, displayValue(image.pixels[i])), hi = std::max(hi, displayValue(image.pixels[i]));
   }
   return hi - lo;
 }
@@ -106,7 +106,7 @@ TEST_F(IsfFilters, AFilterSeesThePictureTheRightWayUp) {
     double sum = 0.0;
     for (uint32_t x = 0; x < kSize.width; ++x)
       for (int c = 0; c < 3; ++c)
-        sum += std::abs(display(stretched.at(x, filteredRow)[c]) - display(plain.at(x, plainRow)[c]));
+        sum += std::abs(displayValue(stretched.at(x, filteredRow)[c]) - displayValue(plain.at(x, plainRow)[c]));
     return sum / (kSize.width * 3.0);
   };
   // Rows a little inside the edges (sampling there falls between two rows of the source).
@@ -186,7 +186,7 @@ TEST_F(IsfFilters, ATransitionAtZeroHalfAndOneIsTheStartTheMixAndTheEnd) {
   for (uint32_t y = 0; y < kSize.height; ++y)
     for (uint32_t x = 0; x < kSize.width; ++x)
       for (int c = 0; c < 3; ++c)
-        eHalf += std::abs(0.5f * (display(start.at(x, y)[c]) + display(end.at(x, y)[c])) - display(half.at(x, y)[c]));
+        eHalf += std::abs(0.5f * (displayValue(start.at(x, y)[c]) + displayValue(end.at(x, y)[c])) - displayValue(half.at(x, y)[c]));
   eHalf /= double(kSize.width) * kSize.height * 3;
   std::printf("progress 0 against the start %.5f, 1 against the end %.5f, 0.5 against their mix %.5f (start against "
               "end %.5f)\n",

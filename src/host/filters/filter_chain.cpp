@@ -18,7 +18,6 @@ namespace vitrine::host {
 
 struct FilterChain::Filter {
   std::string name;
-  std::string pass;  // the GPU timings' name: "filter NAME"
   std::string fingerprint;
   std::shared_ptr<const isf::LoadedFile> file;
   std::optional<params::Schema> schema;
@@ -72,7 +71,6 @@ void FilterChain::add(const FilterSpec& spec) {
     throw Error(fmt::format("{} is an ISF {}, not a filter: a filter has an image input named inputImage",
                             spec.file.string(), isf::kindName(document.kind)));
   filter->name = filterName(spec.file);
-  filter->pass = "filter " + filter->name;
   filter->fingerprint = fingerprint(readBoundedFile(spec.file, isf::kMaxFileBytes));
   filter->schema.emplace(isf::makeSchema(document));
   filter->values = isf::defaultValues(document);
@@ -140,7 +138,6 @@ void FilterChain::record(VkCommandBuffer cmd, uint32_t slot, gpu::PassTimer* tim
     }
     filter->resources->beginFrame(cmd, stream, slot);
     const FrameContext context{device_, cmd, timer, frame, *filter->resources, stream, input, slot, drawing};
-    const gpu::Pass pass(device_, timer, cmd, filter->pass.c_str());
     const isf::SourceImage sources[] = {{"inputImage", &frame}};
     isf::RunInput run{.values = filter->values,
                       .time = input.time,

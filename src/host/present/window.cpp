@@ -68,7 +68,7 @@ GLFWmonitor* findMonitor(std::string_view wanted) {
     if (index < all.size()) return all[index];
   } else {
     for (GLFWmonitor* monitor : all)
-      if (lowercase(glfwGetMonitorName(monitor)).find(lowercase(std::string(wanted))) != std::string::npos) return monitor;
+      if (lowercase(std::string(glfwGetMonitorName(monitor))).find(lowercase(std::string(wanted))) != std::string::npos) return monitor;
   }
   throw Error(fmt::format("No monitor '{}'; there are:\n{}", wanted, describeMonitors()));
 }
