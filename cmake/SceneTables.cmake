@@ -25,7 +25,7 @@ std::span<const @type@> @function@() {
 " @ONLY)
 endfunction()
 
-# vitrine_scene_tables(OUT_DIR): writes OUT_DIR/scene_registry.cpp (every scene's SceneInfo, from its
+# vitrine_scene_tables(OUT_DIR): writes OUT_DIR/scene_registry.cpp (builtInScenes(): every scene's SceneInfo, from its
 # settings.h: no GPU code, so the fuzz build links it too) and OUT_DIR/scene_factories.cpp (every
 # scene's factory, from its NAME_scene.h: the core library's) from VITRINE_SCENES; a file is rewritten
 # only when its contents change.
@@ -45,7 +45,7 @@ function(vitrine_scene_tables out_dir)
     string(APPEND factory_includes "#include \"scenes/${scene}/${scene}_scene.h\"\n")
     string(APPEND factories "      {\"${scene}\", &${scene}::create},\n")
   endforeach()
-  vitrine_write_scene_table(${out_dir}/scene_registry.cpp SceneInfo scenes/catalogue.h SceneInfo sceneRegistry
+  vitrine_write_scene_table(${out_dir}/scene_registry.cpp SceneInfo scenes/catalogue.h SceneInfo builtInScenes
     "${info_includes}" "${infos}")
   vitrine_write_scene_table(${out_dir}/scene_factories.cpp factory scenes/scene.h SceneFactoryEntry sceneFactories
     "${factory_includes}" "${factories}")

@@ -9,13 +9,17 @@
 #include "host/user_presets.h"
 #include "host/present/window.h"
 #include "scenes/catalogue.h"
+#include "scenes/pieces/piece_scene.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 int main(int argc, char** argv) {
   using namespace vitrine;
   try {
+    // Pieces become scenes before the command line is read: its --scene and --set may name them.
+    pieces::addStartupPieces(argc, argv);
     const Options options = parseOptions(argc, argv);
     switch (options.mode) {
       case Mode::Help: std::fputs(help::usage().c_str(), stdout); return 0;
@@ -29,8 +33,8 @@ int main(int argc, char** argv) {
         int width = 0;  // the longest name: the titles line up after it
         for (const auto& info : sceneRegistry()) width = std::max(width, int(info.name.size()));
         for (const auto& info : sceneRegistry())
-          std::printf("%d  %-*.*s  %.*s\n", info.key, width, int(info.name.size()), info.name.data(),
-                      int(info.title.size()), info.title.data());
+          std::printf("%s  %-*.*s  %.*s\n", info.key > 0 ? std::to_string(info.key).c_str() : " ", width,
+                      int(info.name.size()), info.name.data(), int(info.title.size()), info.title.data());
         return 0;
       }
       case Mode::ListParams:  // for now a list of names only: host/list_params.cpp is to be replaced

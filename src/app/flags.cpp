@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "rig/link_clock.h"
 #include "scenes/catalogue.h"
+#include "scenes/pieces/piece_catalogue.h"
 
 #include <fmt/format.h>
 
@@ -42,6 +43,14 @@ constexpr Flag kFlags[] = {
      .help = "The scene to run, by name (vitrine --list-scenes). The gallery starts with the first; bench "
              "takes all, which is also its default.",
      .store = text<&Options::scene>},
+    {.name = "--isf", .modes = kRuns, .metavar = "FILE", .value = Value::File, .repeatable = true,
+     .help = "Shows an ISF generator (a .fs file, docs/ISF.md) as a scene after the built-in ones, its inputs as "
+             "its parameters; the first one given is the scene to run unless --scene names another.",
+     .store =
+         [](Options& o, std::string_view, const std::string& v) {
+           o.isf.push_back(v);
+           if (const pieces::Piece* piece = pieces::findPieceByPath(v); piece && o.scene.empty()) o.scene = piece->name;
+         }},
     {.name = "--size", .modes = kRuns, .metavar = "WxH", .value = Value::Text,
      .help = "The window's size in the gallery (at most 16384 a side), else the frames' size (record's "
              "default 1280x720); headless and bench sizes are checked against the device.",

@@ -97,13 +97,13 @@ Options parseOptions(int argc, const char* const* argv) {
   if (options.mode == Mode::Headless && options.out.empty())
     throw Error("--headless needs --out FILE.exr (or FILE.png).");
   if (options.mode == Mode::Bench && options.out.empty()) throw Error("bench needs --json FILE.");
-  if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME.");
+  if (options.mode == Mode::Headless && options.scene.empty()) throw Error("--headless needs --scene NAME (or --isf FILE).");
   if (options.mode == Mode::Headless && !imageFormatFromName(options.out))
     throw Error(fmt::format("--out writes .exr (linear half float) or .png (8-bit sRGB), not '{}'.", options.out));
   if (options.span && !options.monitor.empty())
     throw Error("--span covers every monitor with one window: drop --monitor.");
   if (options.mode == Mode::Record) {
-    if (options.scene.empty()) throw Error("record needs --scene NAME.");
+    if (options.scene.empty()) throw Error("record needs --scene NAME (or --isf FILE).");
     if (options.out.empty()) throw Error("record needs --out FOLDER for the numbered frames.");
     if (!(options.seconds > 0.0)) throw Error("record needs --seconds S, the film's length.");
     if (options.spp > kMaxRecordSpp) throw Error(fmt::format("--spp takes 1 to {} samples a frame.", kMaxRecordSpp));

@@ -60,6 +60,7 @@ struct Options {
   std::vector<FilterSetting> filterParameters;  // --set filter.NAME.KEY=VALUE, in command-line order
   std::string transition;                // --transition FILE (gallery): an ISF transition for scene changes
   std::vector<std::pair<std::string, std::string>> transitionParameters;  // --set transition.KEY=VALUE
+  std::vector<std::string> isf;      // --isf FILE: ISF generators shown as scenes (registered before parsing)
   std::vector<std::string> presetFiles;  // --preset-file FILE: a preset's file, applied to its own scene
   std::string savePreset;                // --save-preset NAME (headless): the run's values kept as the user's preset
   SceneSetting exportPreset;             // --export-preset [SCENE.]NAME --out FILE: a user's preset written out

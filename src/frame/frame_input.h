@@ -39,6 +39,10 @@ struct FrameInput {
   std::vector<int> keysHeld;     // GLFW key codes down now (glass: Z held)
   std::vector<std::string> droppedFiles;  // paths dropped onto the window this frame (gallery only)
   std::vector<ActionCall> actions;        // the scene's own actions triggered this step, in order
+  // The live sound (--audio-in, frame-exact, or the capture device) for pictures that draw it (ISF's
+  // audio inputs): its newest mono samples, oldest first, and their spectrum, magnitudes 0..1 from DC
+  // up (live::AudioAnalyser::recentSamples, spectrum). Empty while no sound comes in.
+  std::vector<float> soundWave, soundSpectrum;
 
   bool pressed(int key) const { return std::find(keysPressed.begin(), keysPressed.end(), key) != keysPressed.end(); }
   bool held(int key) const { return std::find(keysHeld.begin(), keysHeld.end(), key) != keysHeld.end(); }

@@ -37,6 +37,7 @@ std::span<const uint32_t> ProgramLibrary::builtIn(const std::string& name) const
 }
 
 std::span<const uint32_t> ProgramLibrary::spirv(const std::string& name) {
+  if (auto it = provided_.find(name); it != provided_.end()) return it->second;
   if (sourcesEdited_ && !current_.contains(name) && compileFromSource(name)) reloadedNames_.push_back(name);
   if (auto it = reloaded_.find(name); it != reloaded_.end()) return it->second;
   return builtIn(name);
@@ -85,7 +86,9 @@ int ProgramLibrary::reloadChanged() {
   current_.clear();  // every shader is stale until compiled again, in use now or when next used
 
   std::set<std::string> names;
-  for (const Program* program : programs_) names.insert(program->shaders().begin(), program->shaders().end());
+  for (const Program* program : programs_)
+    for (const auto& shader : program->shaders())
+      if (!provided_.contains(shader)) names.insert(shader);
   std::set<std::string> changed;
   error_.clear();
   for (const auto& name : names)
@@ -104,6 +107,11 @@ int ProgramLibrary::reloadChanged() {
     }
   }
   return rebuilt;
+}
+
+void ProgramLibrary::provide(const std::string& name, std::vector<uint32_t> code) {
+  if (code.empty()) throw Error(fmt::format("Shader '{}' was provided with no code", name));
+  provided_[name] = std::move(code);
 }
 
 void ProgramLibrary::remove(Program* program) { std::erase(programs_, program); }

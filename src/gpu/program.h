@@ -40,8 +40,15 @@ class ProgramLibrary {
                           bool preferNewerSources = false);
   const Device& device() const { return device_; }
 
-  // The shader's SPIR-V: reloaded, else compiled from an edited source on first use, else built in.
+  // The shader's SPIR-V: provided, else reloaded, else compiled from an edited source on first use,
+  // else built in.
   std::span<const uint32_t> spirv(const std::string& name);
+  // SPIR-V made at run time (an ISF file compiled as it loads) under a name no shader source has
+  // ("isf:3/frag"): programs built from the name take it, and hot reload of the shader sources leaves
+  // it alone. Providing a name again replaces its code for the programs built or rebuilt after;
+  // withdraw() forgets it once no program uses it.
+  void provide(const std::string& name, std::vector<uint32_t> code);
+  void withdraw(const std::string& name) { provided_.erase(name); }
 
   // Polls the shader sources; when any changed, recompiles the shaders in use and rebuilds the
   // programs whose SPIR-V changed (old pipelines are retired: frames in flight may still use them).
@@ -73,6 +80,7 @@ class ProgramLibrary {
   bool sourcesEdited_ = false;  // since the build (preferNewerSources) or since the library started
   std::set<std::string, std::less<>> current_;  // compiled from the sources as they are now
   std::map<std::string, std::vector<uint32_t>, std::less<>> reloaded_;
+  std::map<std::string, std::vector<uint32_t>, std::less<>> provided_;
   std::vector<std::string> reloadedNames_;
   std::vector<Program*> programs_;
   std::string error_;

@@ -133,12 +133,23 @@ void LiveLink::remap() {
 void LiveLink::readInputs(double time) {
   sources_.setTime(time);
   std::optional<live::AudioFeatures> audio;
+  const live::AudioAnalyser* analyser = nullptr;
   if (audioFile_) {
     const double fileTime = config_.audioFileClock ? config_.audioFileClock() : time;
     audio = audioFile_->at(fileTime);
     readFileLtc(fileTime);
+    analyser = &audioFile_->analyser();
   } else if (capture_) {
     audio = capture_->take([&](std::span<const float> samples) { clocks_.ltcSamples(capture_->sampleRate(), samples); });
+    analyser = capture_->analyser();
+  }
+  // The sound itself, for the scene's step (ISF's audio inputs): 6 KiB a step while sound comes in.
+  soundWave_.clear();
+  soundSpectrum_.clear();
+  if (analyser) {
+    const auto samples = analyser->recentSamples();
+    soundWave_.assign(samples.begin(), samples.end());
+    soundSpectrum_ = analyser->spectrum();
   }
   if (audio) {
     sources_.set("audio.bass", audio->bass);
@@ -225,6 +236,8 @@ void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* event
     }
   }
   input.actions.insert(input.actions.end(), out.actions.begin(), out.actions.end());
+  input.soundWave = soundWave_;
+  input.soundSpectrum = soundSpectrum_;
 }
 
 namespace {

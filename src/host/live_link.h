@@ -112,6 +112,7 @@ class LiveLink {
   live::Modulator modulator_;
   std::unique_ptr<live::AudioFileInput> audioFile_;
   std::unique_ptr<live::AudioCapture> capture_;
+  std::vector<float> soundWave_, soundSpectrum_;  // the latest readInputs' sound, for the step's input
   std::unique_ptr<live::SmfPlayer> midiFile_;
   std::unique_ptr<live::MidiInput> midiPorts_;
   std::unique_ptr<rig::LinkClock> linkClock_;

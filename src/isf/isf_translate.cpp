@@ -68,6 +68,10 @@ class Rewriter {
         i = declaration(i);
         continue;
       }
+      if (t.kind == Token::Kind::Identifier && (t.text == "while" || t.text == "for")) {
+        i = guardedLoop(i);
+        continue;
+      }
       // A declaration with a layout of its own keeps it, and gets no location from the rewrite.
       if (braces_ == 0 && t.kind == Token::Kind::Identifier && t.text == "layout") ownLayout_ = true;
       if (braces_ == 0 && t.kind == Token::Kind::Punct && (t.text == ";" || t.text == "}")) ownLayout_ = false;
@@ -121,6 +125,45 @@ class Rewriter {
       if (t.kind == Token::Kind::Identifier) first = false;
     }
     return out;
+  }
+
+  // A loop's condition with the guard added: `while (c)` (also a do-while's) becomes
+  // `while ((c) && isf_guard())`, `for (a; b; c)` becomes `for (a; (b) && isf_guard(); c)` and an empty
+  // condition `isf_guard()`, so no loop runs past the invocation's bound (kLoopGuard). Emits the loop's
+  // word and its condition; returns the index of the last token emitted.
+  size_t guardedLoop(size_t start) {
+    const bool isFor = tokens_[start].text == "for";
+    emit(tokens_[start]);
+    size_t i = nextWord(start + 1);
+    if (i >= tokens_.size() || tokens_[i].text != "(") return start;  // not a loop: the compiler will say
+    for (size_t k = start + 1; k <= i; ++k) emit(tokens_[k]);
+    // The condition: from after '(' (or the init's ';') to the matching ')' (or the next ';').
+    size_t from = i + 1, depth = 0;
+    const auto scanTo = [&](size_t k, bool semicolon) {
+      for (; k < tokens_.size(); ++k) {
+        const std::string_view text = tokens_[k].text;
+        if (tokens_[k].kind != Token::Kind::Punct) continue;
+        if (depth == 0 && (semicolon ? text == ";" : text == ")")) return k;
+        if (text == "(" || text == "[") ++depth;
+        if ((text == ")" || text == "]") && depth > 0) --depth;
+      }
+      return tokens_.size();
+    };
+    if (isFor) {
+      const size_t init = scanTo(from, true);
+      if (init >= tokens_.size()) return i;
+      for (size_t k = from; k <= init; ++k) emit(tokens_[k]);
+      from = init + 1;
+    }
+    const size_t end = scanTo(from, isFor);
+    if (end >= tokens_.size()) return i;
+    const bool empty = std::all_of(tokens_.begin() + std::ptrdiff_t(from), tokens_.begin() + std::ptrdiff_t(end), [](const Token& t) {
+      return t.kind == Token::Kind::Blank || t.kind == Token::Kind::Newline || t.kind == Token::Kind::Comment;
+    });
+    if (!empty) out_ += "(";
+    for (size_t k = from; k < end; ++k) emit(tokens_[k]);
+    out_ += empty ? "isf_guard()" : ") && isf_guard()";
+    return end - 1;
   }
 
   size_t nextWord(size_t i) const {
@@ -243,6 +286,9 @@ std::string declarations(const Document& doc, const Translation& t, Stage stage,
   s += fmt::format("layout(std140, set = 0, binding = {}) uniform ISFFrame {{\n", kFrameBlockBinding);
   for (const BlockMember& m : t.frame.members) s += fmt::format("  layout(offset = {}) {} {};\n", m.offset, m.glslType, m.name);
   s += "};\n";
+  // Every loop condition calls isf_guard() (the rewrite adds it): a loop that would never end stops
+  // after kLoopGuard iterations of all loops together, so a runaway shader cannot hang the GPU.
+  s += fmt::format("int isf_guardCount = 0;\nbool isf_guard() {{ return ++isf_guardCount <= {}; }}\n", kLoopGuard);
   s += fmt::format("layout(push_constant) uniform ISFPass {{\n  layout(offset = {}) vec2 RENDERSIZE;\n"
                    "  layout(offset = {}) int PASSINDEX;\n}};\n", kRenderSizeOffset, kPassIndexOffset);
   for (const SamplerBinding& b : t.samplers) s += fmt::format("layout(set = 0, binding = {}) uniform sampler2D {};\n", b.binding, b.name);

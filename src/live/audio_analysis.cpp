@@ -247,4 +247,19 @@ double AudioAnalyser::sampleRate() const { return state_->rate; }
 double AudioAnalyser::latencySeconds() const { return double(kHop + kWindow) / state_->rate; }
 uint64_t AudioAnalyser::streamPosition() const { return state_->first + state_->hops * kHop + state_->filled; }
 
+std::span<const float> AudioAnalyser::recentSamples() const { return state_->recent; }
+
+std::vector<float> AudioAnalyser::spectrum() const {
+  State& s = *state_;  // the bands' FFT, computed once per hop whoever asks first
+  if (s.bandsStale) s.computeBands();
+  // A full-scale sine on a bin's centre: |X| = N/4 under a periodic Hann window (its mean is 1/2).
+  const double peak = double(kWindow) / 4.0;
+  std::vector<float> bins(kWindow / 2);
+  for (size_t k = 0; k < bins.size(); ++k) {
+    const double magnitude = std::hypot(double(s.spectrum[k].r), double(s.spectrum[k].i));
+    bins[k] = magnitude > 0.0 ? unit(20.0 * std::log10(magnitude / peak)) : 0.0f;
+  }
+  return bins;
+}
+
 }  // namespace vitrine::live

@@ -85,6 +85,13 @@ class AudioAnalyser {
   // The stream position of the next sample: firstSample + the samples pushed so far.
   uint64_t streamPosition() const;
 
+  // The sound itself, for pictures that draw it (ISF's audio and audioFFT inputs), as of the latest
+  // complete hop: the last kWindow samples, oldest first; and their spectrum, kWindow / 2 bins from DC
+  // up, each bin's magnitude (the same Hann-windowed FFT as the bands) in dB relative to the peak bin
+  // of a full-scale sine, mapped 0..1 as the bands are.
+  std::span<const float> recentSamples() const;
+  std::vector<float> spectrum() const;
+
  private:
   struct State;
   void analyseHop();

@@ -83,6 +83,9 @@ struct Preset {
 class Schema {
  public:
   template <typename S> static Schema forStruct();
+  // For a struct whose defaults are known only at run time (an ISF file's inputs): `defaults` stands
+  // in for S{} wherever the schema makes a default struct.
+  template <typename S> static Schema forStruct(S defaults);
 
   const std::vector<Param>& params() const { return params_; }
   const std::vector<Preset>& presets() const { return presets_; }

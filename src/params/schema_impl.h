@@ -64,6 +64,11 @@ template <typename S> Schema Schema::forStruct() {
   return Schema(typeid(S), [] { return std::shared_ptr<void>(std::make_shared<S>()); });
 }
 
+template <typename S> Schema Schema::forStruct(S defaults) {
+  static_assert(std::is_copy_constructible_v<S>, "the defaults are copied for every default struct");
+  return Schema(typeid(S), [defaults = std::move(defaults)] { return std::shared_ptr<void>(std::make_shared<S>(defaults)); });
+}
+
 template <typename S> Bound bindSettings(const Schema& schema, S& settings) {
   if (schema.settingsType() != typeid(S))
     throw std::logic_error(fmt::format("a schema for {} bound to a {}", schema.settingsType().name(), typeid(S).name()));

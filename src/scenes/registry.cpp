@@ -1,8 +1,9 @@
-// Looking scenes, their schemas and their actions up. The table itself, sceneRegistry(), is generated
-// from the list of scenes in cmake/Scenes.cmake (cmake/SceneTables.cmake writes
-// build/generated/scene_registry.cpp).
+// Looking scenes, their schemas and their actions up. The built-in scenes' table, builtInScenes(), is
+// generated from the list of scenes in cmake/Scenes.cmake (cmake/SceneTables.cmake writes
+// build/generated/scene_registry.cpp); pieces found at run time are added after them.
 #include "scenes/catalogue.h"
 
+#include "core/error.h"
 #include "core/printable.h"
 
 #include <fmt/format.h>
@@ -12,6 +13,32 @@
 #include <vector>
 
 namespace vitrine {
+namespace {
+
+// Room for every piece from the start, so an addition never moves the table: a SceneInfo pointer or
+// reference taken before stays good.
+std::vector<SceneInfo>& table() {
+  static std::vector<SceneInfo> scenes = [] {
+    const auto builtIn = builtInScenes();
+    std::vector<SceneInfo> all;
+    all.reserve(builtIn.size() + kMaxRuntimeScenes);
+    all.assign(builtIn.begin(), builtIn.end());
+    return all;
+  }();
+  return scenes;
+}
+
+}  // namespace
+
+std::span<const SceneInfo> sceneRegistry() { return table(); }
+
+SceneInfo& addRuntimeScene(const SceneInfo& info) {
+  if (!info.runtimeSchema) throw Error(fmt::format("scene {}: a piece found at run time brings its schema", info.name));
+  if (findScene(info.name)) throw Error(fmt::format("there is a scene named {} already", info.name));
+  if (table().size() >= builtInScenes().size() + kMaxRuntimeScenes)
+    throw Error(fmt::format("scene {}: at most {} pieces are shown", info.name, kMaxRuntimeScenes));
+  return table().emplace_back(info);
+}
 
 std::string checkAction(const SceneInfo& info, const ActionCall& call) {
   const SceneAction* action = info.findAction(call.name);

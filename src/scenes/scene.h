@@ -12,6 +12,7 @@
 #include "scenes/catalogue.h"
 #include "scenes/scene_events.h"
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -64,19 +65,18 @@ class Scene {
 };
 
 // How a scene is made. Each scene's NAME_scene.h declares NAME::create; the factory table, generated
-// with the registry from cmake/Scenes.cmake, pairs it with the scene's name.
-using SceneFactory = std::unique_ptr<Scene> (*)(const SceneContext&);
+// with the registry from cmake/Scenes.cmake, pairs it with the scene's name. A piece found at run time
+// (an ISF file) adds its own with addSceneFactory, as it adds its SceneInfo.
+using SceneFactory = std::function<std::unique_ptr<Scene>(const SceneContext&)>;
 struct SceneFactoryEntry {
   std::string_view name;
-  SceneFactory create;
+  std::unique_ptr<Scene> (*create)(const SceneContext&);
 };
 std::span<const SceneFactoryEntry> sceneFactories();
 
-// The factory of a scene in the registry; null for one it does not hold.
-inline SceneFactory sceneFactory(const SceneInfo& info) {
-  for (const SceneFactoryEntry& entry : sceneFactories())
-    if (entry.name == info.name) return entry.create;
-  return nullptr;
-}
+// The factory of a scene in the registry; empty for one it does not hold.
+SceneFactory sceneFactory(const SceneInfo& info);
+// The factory of a piece added to the registry at run time (addRuntimeScene).
+void addSceneFactory(std::string name, SceneFactory create);
 
 }  // namespace vitrine

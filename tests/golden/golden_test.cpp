@@ -5,6 +5,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "host/offline/offscreen.h"
+#include "scenes/pieces/piece_scene.h"
 #include "support/gpu_test.h"
 
 #include <algorithm>
@@ -58,6 +59,17 @@ std::vector<GoldenCase> loadCases(bool mutations) {
     c.name = first;
     std::string size, word;
     words >> c.config.scene >> size >> c.frames >> c.config.startTime >> c.config.seed;
+    // "isf:FILE": a piece, the ISF generator tests/isf/FILE, registered as the program would at start.
+    if (c.config.scene.starts_with("isf:")) {
+      const std::filesystem::path file = kGoldenDir.parent_path() / "isf" / c.config.scene.substr(4);
+      const pieces::Piece* piece = pieces::findPieceByPath(file);
+      if (!piece) {
+        const auto added = pieces::addPieces(std::vector{file}, true);
+        pieces::addPieceFactories(added);
+        piece = added.front();
+      }
+      c.config.scene = piece->name;
+    }
     const auto x = size.find('x');
     c.config.size = {uint32_t(std::stoul(size.substr(0, x))), uint32_t(std::stoul(size.substr(x + 1)))};
     while (words >> word) {

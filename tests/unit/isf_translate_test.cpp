@@ -103,6 +103,37 @@ TEST(IsfTranslate, KeepsEveryLineOfTheBodyWhereItWas) {
   }
 }
 
+// Every loop's condition is guarded, whatever its form, and the code around keeps its text and lines.
+TEST(IsfTranslate, GuardsEveryLoopCondition) {
+  const std::string body =
+      "void main() {\n"
+      "  float s = 0.0;\n"
+      "  for (int i = 0; i < f(1, 2); ++i) s += 1.0;\n"
+      "  for (;;) { break; }\n"
+      "  while (s > 0.0) s -= 1.0;\n"
+      "  do { s += 1.0; } while (s < 3.0 /* ) */);\n"
+      "  for (int j = 0;\n"
+      "       j < 2;\n"
+      "       ++j) {}\n"
+      "  gl_FragColor = vec4(s);\n"
+      "}\n";
+  const Document doc = parseDocument("/*{}*/\nfloat f(int a, int b) { return float(a + b); }\n" + body, "loops.fs");
+  const Translation t = translate(doc);
+  EXPECT_TRUE(has(t.fragment, "for (int i = 0; ( i < f(1, 2)) && isf_guard(); ++i) s += 1.0;"));
+  EXPECT_TRUE(has(t.fragment, "for (;isf_guard();) { break; }"));
+  EXPECT_TRUE(has(t.fragment, "while ((s > 0.0) && isf_guard()) s -= 1.0;"));
+  EXPECT_TRUE(has(t.fragment, "while ((s < 3.0 /* ) */) && isf_guard());"));
+  EXPECT_TRUE(has(t.fragment, "for (int j = 0;(\n       j < 2) && isf_guard();\n       ++j) {}"));
+  EXPECT_TRUE(has(t.fragment, "bool isf_guard() { return ++isf_guardCount <= 65536; }"));
+  // Lines kept: "gl_FragColor" is still on the body's 10th line, the file's 12th.
+  const size_t start = t.fragment.find("#line 1 1\n");
+  ASSERT_NE(start, std::string::npos);
+  const std::string after = t.fragment.substr(start + std::string("#line 1 1\n").size());
+  const size_t colour = after.find("isf_FragColor = vec4(s);");
+  EXPECT_EQ(std::count(after.begin(), after.begin() + std::ptrdiff_t(colour), '\n'), 11);
+  EXPECT_NO_THROW(compileIsf(doc));
+}
+
 TEST(IsfTranslate, RenamesWordsVulkanGlslReserves) {
   const Translation t = translate(loadDocument(isfFile("every_input.fs")));
   EXPECT_TRUE(has(t.fragment, "float isf_r_sample = IMG_NORM_PIXEL(wave"));

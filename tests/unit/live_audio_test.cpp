@@ -107,6 +107,27 @@ TEST(LiveAudioBands, MinusTwentyDecibelsReadsAThirdLess) {
   }
 }
 
+// What ISF's audio inputs draw: the window's samples as pushed, and a full-scale sine on a bin's centre
+// reading 1 in that bin, a tenth of it (-20 dB) a third less, far bins near 0.
+TEST(LiveAudioSound, TheWindowAndItsSpectrum) {
+  AudioAnalyser analyser(kRate);
+  const double bin = kRate / double(AudioAnalyser::kWindow);
+  const std::vector<float> loud = sine(40 * bin, 1.0, 0.1);
+  analyser.push(loud);
+  const auto recent = analyser.recentSamples();
+  ASSERT_EQ(recent.size(), AudioAnalyser::kWindow);
+  const size_t analysed = loud.size() / AudioAnalyser::kHop * AudioAnalyser::kHop;  // whole hops only
+  EXPECT_EQ(recent.back(), loud[analysed - 1]);
+  std::vector<float> spectrum = analyser.spectrum();
+  ASSERT_EQ(spectrum.size(), AudioAnalyser::kWindow / 2);
+  EXPECT_NEAR(spectrum[40], 1.0f, 0.01f);
+  EXPECT_LT(spectrum[200], 0.05f);
+  AudioAnalyser quiet(kRate);
+  quiet.push(sine(40 * bin, 0.1, 0.1));
+  spectrum = quiet.spectrum();
+  EXPECT_NEAR(spectrum[40], 2.0f / 3.0f, 0.01f);
+}
+
 TEST(LiveAudioBands, SilenceIsAllZero) {
   AudioAnalyser analyser(kRate);
   const std::vector<float> silence(size_t(5 * kRate), 0.0f);

@@ -17,7 +17,7 @@ TEST(SceneCatalogue, EverySceneHasAFactoryAndEveryFactoryAScene) {
     EXPECT_EQ(factories[i].name, registry[i].name) << i;
     EXPECT_NE(sceneFactory(registry[i]), nullptr) << registry[i].name;
   }
-  const SceneInfo stranger{"stranger", "Stranger", 9, registry[0].schema, ""};
+  const SceneInfo stranger{"stranger", "Stranger", 9, registry[0].builtInSchema, ""};
   EXPECT_EQ(sceneFactory(stranger), nullptr);
 }
 

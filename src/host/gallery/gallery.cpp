@@ -17,6 +17,7 @@
 #include "host/present/stream_sink.h"
 #include "rig/pipewire_source.h"
 #include "scenes/adaptive_quality.h"
+#include "scenes/pieces/piece_catalogue.h"
 
 namespace vitrine::host {
 namespace {
@@ -401,6 +402,9 @@ int runGallery(const Options& options) {
     } catch (const Error& e) {
       if (first && !gallery) throw;
       if (gallery) failing = &gallery->showing();
+      // A piece showing when the device was lost is not started again until its file is saved.
+      if (pieces::Piece* piece = failing && !failing->builtIn() ? pieces::findPiece(failing->name) : nullptr)
+        pieces::blame(*piece, e.what());
       pause = pauses.after(std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started));
       std::fprintf(stderr, "vitrine: kiosk: %s\nvitrine: kiosk: restarting in %lld s\n", e.what(),
                    (long long)pause.count());

@@ -20,7 +20,7 @@ constexpr auto kToastSeconds = std::chrono::seconds(4);  // how long a note show
 
 const SceneInfo* sceneForKey(int key) {
   for (const auto& info : sceneRegistry())
-    if (key == GLFW_KEY_0 + info.key) return &info;
+    if (info.key > 0 && key == GLFW_KEY_0 + info.key) return &info;
   return nullptr;
 }
 

@@ -1,5 +1,7 @@
 #include "host/ui/menu.h"
 
+#include "scenes/pieces/piece_catalogue.h"
+
 #include <fmt/format.h>
 #include <imgui.h>
 #include <imgui_internal.h>  // ImGuiSettingsHandler: the menu's layout in the overlay's ini file
@@ -71,8 +73,14 @@ const SceneInfo* drawSceneList(const SceneInfo& current, ImFont* font) {
   const SceneInfo* chosen = nullptr;
   if (font) ImGui::PushFont(font);
   for (const auto& info : sceneRegistry()) {
-    const std::string label = fmt::format("{}  {}", info.key, info.title);
+    // Pieces found at run time have no number key; one whose file was refused says why under it.
+    const std::string label = info.key > 0 ? fmt::format("{}  {}", info.key, info.title) : fmt::format("   {}", info.title);
     if (ImGui::Selectable(label.c_str(), &info == &current)) chosen = &info;
+    if (const pieces::Piece* piece = info.builtIn() ? nullptr : pieces::findPiece(info.name); piece && !piece->error.empty()) {
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", piece->error.c_str());
+      ImGui::PopTextWrapPos();
+    }
   }
   if (font) ImGui::PopFont();
   return chosen;
@@ -102,8 +110,10 @@ void drawHelp(const MenuState& state, bool& open) {
     ImGui::EndTable();
   }
   ImGui::Separator();
-  for (const auto& info : sceneRegistry())
-    ImGui::BulletText("%d  %.*s", info.key, int(info.title.size()), info.title.data());
+  for (const auto& info : sceneRegistry()) {
+    if (info.key > 0) ImGui::BulletText("%d  %.*s", info.key, int(info.title.size()), info.title.data());
+    else ImGui::BulletText("   %.*s", int(info.title.size()), info.title.data());
+  }
   ImGui::Separator();
   ImGui::Text("%.*s:", int(state.current.title.size()), state.current.title.data());
   drawWrapped(state.current.input);
@@ -136,7 +146,8 @@ std::span<const std::pair<std::string_view, std::string_view>> galleryKeys() {
 
 std::string sceneKeyRange() {
   int lo = 10, hi = 0;
-  for (const auto& info : sceneRegistry()) lo = std::min(lo, info.key), hi = std::max(hi, info.key);
+  for (const auto& info : sceneRegistry())
+    if (info.key > 0) lo = std::min(lo, info.key), hi = std::max(hi, info.key);
   return lo == hi ? fmt::format("{}", lo) : fmt::format("{}-{}", lo, hi);
 }
 
