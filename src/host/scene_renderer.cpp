@@ -39,7 +39,7 @@ SceneRenderer::~SceneRenderer() {
 }
 
 FilterChain& SceneRenderer::filters() {
-  if (!filters_) filters_ = std::make_unique<FilterChain>(device_, programs_, framesInFlight_);
+  if (!filters_) filters_ = std::make_unique<FilterChain>(device_, programs_);
   return *filters_;
 }
 

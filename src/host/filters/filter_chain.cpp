@@ -22,10 +22,9 @@ struct FilterChain::Filter {
   std::shared_ptr<const isf::LoadedFile> file;
   std::optional<params::Schema> schema;
   isf::Values values;
-  // Declared before the runner, which declares its buffers in them and goes first.
+  // What a GpuContext holds: the runner keeps its images in a set of its own. Before the runner.
   std::unique_ptr<gpu::FrameResources> resources;
   std::unique_ptr<isf::Runner> runner;
-  VkExtent2D extent{0, 0};  // what `resources` were last sized for
   params::Bound bound() { return params::bindSettings(*schema, values); }
 };
 
@@ -58,8 +57,8 @@ std::vector<FilterSpec> chainFromJson(const nlohmann::ordered_json& json, std::v
   return chain;
 }
 
-FilterChain::FilterChain(const gpu::Device& device, gpu::ProgramLibrary& programs, uint32_t framesInFlight)
-    : device_(device), programs_(programs), framesInFlight_(framesInFlight) {}
+FilterChain::FilterChain(const gpu::Device& device, gpu::ProgramLibrary& programs)
+    : device_(device), programs_(programs) {}
 
 FilterChain::~FilterChain() { clear(); }
 
@@ -77,7 +76,6 @@ void FilterChain::add(const FilterSpec& spec) {
   if (auto why = params::applyValues(filter->bound(), spec.values); !why.empty())
     throw Error(fmt::format("filter {} ({}) rejects {}", filter->name, spec.file.string(), why));
   filter->resources = std::make_unique<gpu::FrameResources>(device_);
-  filter->resources->setFramesInFlight(framesInFlight_);
   filter->runner = std::make_unique<isf::Runner>(GpuContext{device_, programs_, *filter->resources}, filter->file);
   if (auto why = filter->runner->update(filter->values); !why.empty())
     std::fprintf(stderr, "vitrine: filter %s: %s\n", filter->name.c_str(), why.c_str());
@@ -132,11 +130,7 @@ void FilterChain::record(VkCommandBuffer cmd, uint32_t slot, gpu::PassTimer* tim
                          gpu::Image& frame, const FrameInput& input, bool drawing, bool realtime) {
   const VkExtent2D extent = frame.extent2d();
   for (const auto& filter : filters_) {
-    if (filter->extent.width != extent.width || filter->extent.height != extent.height) {
-      filter->extent = extent;
-      filter->resources->resize(extent);
-    }
-    filter->resources->beginFrame(cmd, stream, slot);
+    filter->runner->resize(extent);  // nothing when the size is the one it has
     const FrameContext context{device_, cmd, timer, frame, *filter->resources, stream, input, slot, drawing};
     const isf::SourceImage sources[] = {{"inputImage", &frame}};
     isf::RunInput run{.values = filter->values,

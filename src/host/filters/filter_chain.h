@@ -37,7 +37,7 @@ std::vector<FilterSpec> chainFromJson(const nlohmann::ordered_json& json, std::v
 
 class FilterChain {
  public:
-  FilterChain(const gpu::Device& device, gpu::ProgramLibrary& programs, uint32_t framesInFlight);
+  FilterChain(const gpu::Device& device, gpu::ProgramLibrary& programs);
   ~FilterChain();
   FilterChain(const FilterChain&) = delete;
   FilterChain& operator=(const FilterChain&) = delete;
@@ -71,7 +71,6 @@ class FilterChain {
   struct Filter;
   const gpu::Device& device_;
   gpu::ProgramLibrary& programs_;
-  uint32_t framesInFlight_;
   std::vector<std::unique_ptr<Filter>> filters_;
 };
 

@@ -17,12 +17,11 @@ struct IsfTransition::State {
   std::optional<params::Schema> schema;
   isf::Values values;
   size_t progress = 0;  // the progress input's index among the values
-  std::unique_ptr<gpu::FrameResources> resources;  // before the runner, which declares in them
+  std::unique_ptr<gpu::FrameResources> resources;  // what a GpuContext holds (the runner keeps its own)
   std::unique_ptr<isf::Runner> runner;
-  VkExtent2D extent{0, 0};
 };
 
-IsfTransition::IsfTransition(const gpu::Device& device, gpu::ProgramLibrary& programs, uint32_t framesInFlight,
+IsfTransition::IsfTransition(const gpu::Device& device, gpu::ProgramLibrary& programs,
                              const std::filesystem::path& file)
     : device_(device), state_(std::make_unique<State>()) {
   State& s = *state_;
@@ -37,7 +36,6 @@ IsfTransition::IsfTransition(const gpu::Device& device, gpu::ProgramLibrary& pro
   for (size_t i = 0; i < document.inputs.size(); ++i)
     if (document.inputs[i].name == "progress") s.progress = i;
   s.resources = std::make_unique<gpu::FrameResources>(device);
-  s.resources->setFramesInFlight(framesInFlight);
   s.runner = std::make_unique<isf::Runner>(GpuContext{device, programs, *s.resources}, s.file);
   if (auto why = s.runner->update(s.values); !why.empty())
     std::fprintf(stderr, "vitrine: transition %s: %s\n", file.string().c_str(), why.c_str());
@@ -59,12 +57,7 @@ std::string IsfTransition::applyParameters(const params::KeyValues& values) {
 void IsfTransition::record(VkCommandBuffer cmd, uint32_t slot, gpu::PassTimer* timer, gpu::StreamArena& stream,
                            gpu::Image& from, gpu::Image& to, float progress, const FrameInput& input, bool realtime) {
   State& s = *state_;
-  const VkExtent2D extent = from.extent2d();
-  if (s.extent.width != extent.width || s.extent.height != extent.height) {
-    s.extent = extent;
-    s.resources->resize(extent);
-  }
-  s.resources->beginFrame(cmd, stream, slot);
+  s.runner->resize(from.extent2d());  // nothing when the size is the one it has
   s.values.inputs[s.progress].number[0] = std::clamp(progress, 0.0f, 1.0f);
   const FrameContext context{device_, cmd, timer, from, *s.resources, stream, input, slot, true};
   const isf::SourceImage sources[] = {{"startImage", &from}, {"endImage", &to}};

@@ -20,8 +20,7 @@ class IsfTransition {
  public:
   // Loads and compiles `file`. Throws isf::IsfError (the file's line) or vitrine::Error (not a
   // transition).
-  IsfTransition(const gpu::Device& device, gpu::ProgramLibrary& programs, uint32_t framesInFlight,
-                const std::filesystem::path& file);
+  IsfTransition(const gpu::Device& device, gpu::ProgramLibrary& programs, const std::filesystem::path& file);
   ~IsfTransition();
   IsfTransition(const IsfTransition&) = delete;
   IsfTransition& operator=(const IsfTransition&) = delete;

@@ -154,7 +154,7 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
   for (const FilterSpec& filter : runFilters_) renderer_->filters().add(filter);
   transitionGiven_ = !options.transition.empty();
   if (transitionGiven_) {
-    transition_ = std::make_unique<IsfTransition>(device_, programs_, kFramesInFlight, options.transition);
+    transition_ = std::make_unique<IsfTransition>(device_, programs_, options.transition);
     if (auto why = transition_->applyParameters(options.transitionParameters); !why.empty())
       throw Error(fmt::format("transition {} rejects {}", options.transition, why));
     crossfade_.setTransition(transition_.get());

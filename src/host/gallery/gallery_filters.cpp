@@ -109,7 +109,7 @@ void Gallery::chooseTransition(const std::optional<std::filesystem::path>& file,
   std::unique_ptr<IsfTransition> made;
   if (file) {
     try {
-      made = std::make_unique<IsfTransition>(device_, programs_, kFramesInFlight, *file);
+      made = std::make_unique<IsfTransition>(device_, programs_, *file);
       if (auto why = made->applyParameters(values); !why.empty()) filterError_ = "transition: " + why;
     } catch (const Error& e) {
       filterError_ = e.what();
