@@ -193,6 +193,24 @@ TEST_F(IsfFilters, ATransitionAtZeroHalfAndOneIsTheStartTheMixAndTheEnd) {
       for (int c = 0; c < 3; ++c)
         eHalf += std::abs(0.5f * (displayValue(start.at(x, y)[c]) + displayValue(end.at(x, y)[c])) - displayValue(half.at(x, y)[c]));
   eHalf /= double(kSize.width) * kSize.height * 3;
+  // The cross-fade's own mix is in linear light: what the picture would be without the transition.
+  double linearMix = 0.0;
+  for (uint32_t y = 0; y < kSize.height; ++y)
+    for (uint32_t x = 0; x < kSize.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        linearMix += std::abs(displayValue(0.5f * (start.at(x, y)[c] + end.at(x, y)[c])) - displayValue(half.at(x, y)[c]));
+  linearMix /= double(kSize.width) * kSize.height * 3;
+  // Dipped through black all the way (dip 1): black half-way, the start and end pictures at either end.
+  ASSERT_EQ(transition.applyParameters({{"dip", "1"}}), "");
+  const ImageRgba dipped = shown({&incoming.target(), 0.5f, &transition}, outgoing, true);
+  const ImageRgba dippedStart = shown({&incoming.target(), 0.0f, &transition}, outgoing, true);
+  const double black = meanError(dipped, dipped, [](float) { return 0.0f; });
+  const double dippedAt0 = meanError(start, dippedStart, same);
+  std::printf("the cross-fade's linear mix against the transition's at 0.5: %.5f; dipped: %.5f from black at 0.5, "
+              "%.5f from the start at 0\n",
+              linearMix, black, dippedAt0);
+  EXPECT_LT(black, 0.01);
+  EXPECT_LT(dippedAt0, 0.01);
   std::printf("progress 0 against the start %.5f, 1 against the end %.5f, 0.5 against their mix %.5f (start against "
               "end %.5f)\n",
               e0, e1, eHalf, meanError(start, end, same));
