@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
         int width = 0;  // the longest name: the titles line up after it
         for (const auto& info : sceneRegistry()) width = std::max(width, int(info.name.size()));
         for (const auto& info : sceneRegistry())
-          std::printf("%s  %-*.*s  %.*s\n", info.key > 0 ? std::to_string(info.key).c_str() : " ", width,
+          std::printf("%s  %-*.*s  %.*s\n", info.key > 0 ? std::to_string(info.key).c_str() : "-", width,
                       int(info.name.size()), info.name.data(), int(info.title.size()), info.title.data());
         return 0;
       }

@@ -214,6 +214,8 @@ void LiveLink::readFileLtc(double fileTime) {
 
 void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* events) {
   readInputs(input.time);
+  input.soundWave = soundWave_;
+  input.soundSpectrum = soundSpectrum_;
   if (!scene_ || &renderer.info() != scene_) return;  // the scene showing has not been given yet
   if (!vetted_) vet(renderer);
   live::Modulated out = modulator_.step(sources_, renderer.parameters(), input.dt);
@@ -236,8 +238,6 @@ void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* event
     }
   }
   input.actions.insert(input.actions.end(), out.actions.begin(), out.actions.end());
-  input.soundWave = soundWave_;
-  input.soundSpectrum = soundSpectrum_;
 }
 
 namespace {

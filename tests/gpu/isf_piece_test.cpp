@@ -3,6 +3,8 @@
 // point2D follows the cursor's drag; a vertex shader places the quad; an imported picture arrives the
 // right way up; the loop guard ends an endless loop within its bound; a file edited in the gallery is
 // taken up, a broken edit keeps the old version drawing and says why, and a mended one is drawn.
+#include "audio/wav.h"
+#include "host/live_link.h"
 #include "host/offline/offscreen.h"
 #include "image/image.h"
 #include "scenes/pieces/piece_scene.h"
@@ -155,6 +157,48 @@ TEST_F(IsfPiece, TheLoopGuardEndsAnEndlessLoop) {
   EXPECT_NEAR(image.at(15, 8)[0], 1.0f, 1e-3f);
   EXPECT_LT(seconds, 30.0);
   std::printf("the loop guard's frame: %.2f s for 16x9 pixels of 65536 iterations each\n", seconds);
+}
+
+// audio.fs draws the wave as a line and the spectrum as 32 bars: fed by an --audio-in file, frame-exact.
+// A 1500 Hz tone is bin 32 of the analysis' 1024 at 48 kHz: the third bar, and no bar far from it.
+TEST_F(IsfPiece, AudioInputsDrawTheSoundFile) {
+  const TempFolder folder("isf-audio");
+  std::vector<float> stereo;
+  for (int i = 0; i < 48000; ++i) {
+    const float s = 0.7f * float(std::sin(2.0 * 3.14159265358979 * 1500.0 * i / 48000.0));
+    stereo.insert(stereo.end(), {s, s});
+  }
+  audio::writeWav(folder.path() / "tone.wav", stereo);
+  // 96 columns over the wave's 512 texels: no column pattern repeats with the tone's period.
+  host::OffscreenConfig c = config(kIsfDir / "audio.fs", {96, 36});
+  host::LiveConfig liveConfig;
+  liveConfig.audioFile = (folder.path() / "tone.wav").string();
+  liveConfig.runScene = c.scene;
+  host::LiveLink live(liveConfig);
+  c.live = &live;
+  host::Offscreen run(device(), c);
+  for (int i = 0; i < 20; ++i) run.renderFrame();
+  const ImageRgba image = run.readback();
+  EXPECT_GT(image.at(7, 34)[2], 0.5f);   // the third bar, x = 2.5 / 32 of the width
+  EXPECT_GT(image.at(7, 8)[2], 0.5f);    // three quarters up (the file samples between two bars)
+  EXPECT_EQ(image.at(61, 34)[2], 0.0f);  // the 21st: nothing there
+  // The wave: a line off the middle row somewhere (silence draws it along the middle).
+  float offMiddle = 0.0f;
+  for (uint32_t x = 0; x < 96; ++x)
+    for (uint32_t y = 0; y < 36; ++y)
+      if (y < 14 || y > 21) offMiddle = std::max(offMiddle, image.at(x, y)[0]);
+  EXPECT_GT(offMiddle, 0.1f);
+}
+
+TEST(IsfPieceFolders, TheSettingsFileNamesFolders) {
+  const TempFolder folder("isf-settings");
+  std::ofstream(folder.path() / "settings.json") << R"({"pieces": ["/srv/isf", 3, "relative/too"], "scenes": {}})";
+  EXPECT_EQ(pieces::settingsPieceFolders(folder.path() / "settings.json"),
+            (std::vector<fs::path>{"/srv/isf", "relative/too"}));
+  std::ofstream(folder.path() / "broken.json") << "{ not json";
+  EXPECT_TRUE(pieces::settingsPieceFolders(folder.path() / "broken.json").empty());
+  EXPECT_TRUE(fs::exists(folder.path() / "broken.json"));  // read only: never moved aside from here
+  EXPECT_TRUE(pieces::settingsPieceFolders(folder.path() / "absent.json").empty());
 }
 
 std::string flatFile(const char* colour) {

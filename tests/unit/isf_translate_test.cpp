@@ -119,7 +119,7 @@ TEST(IsfTranslate, GuardsEveryLoopCondition) {
       "}\n";
   const Document doc = parseDocument("/*{}*/\nfloat f(int a, int b) { return float(a + b); }\n" + body, "loops.fs");
   const Translation t = translate(doc);
-  EXPECT_TRUE(has(t.fragment, "for (int i = 0; ( i < f(1, 2)) && isf_guard(); ++i) s += 1.0;"));
+  EXPECT_TRUE(has(t.fragment, "for (int i = 0;( i < f(1, 2)) && isf_guard(); ++i) s += 1.0;")) << t.fragment;
   EXPECT_TRUE(has(t.fragment, "for (;isf_guard();) { break; }"));
   EXPECT_TRUE(has(t.fragment, "while ((s > 0.0) && isf_guard()) s -= 1.0;"));
   EXPECT_TRUE(has(t.fragment, "while ((s < 3.0 /* ) */) && isf_guard());"));

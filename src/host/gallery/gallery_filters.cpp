@@ -7,6 +7,7 @@
 #include "host/gallery/gallery_app.h"
 #include "isf/isf_document.h"
 #include "scenes/pieces/piece_catalogue.h"
+#include "scenes/pieces/piece_scene.h"
 
 namespace vitrine::host {
 namespace {
@@ -77,20 +78,22 @@ void Gallery::switchFadeStep(double elapsed) {
   settings_.showing(renderer_->info().name, Clock::now());
 }
 
-// The filters and transitions in the user's pieces folder (a generator there is a scene).
+// The filters and transitions in the pieces folders, the user's and the settings file's (a generator
+// there is a scene).
 void Gallery::findFilters() {
   availableFilters_.clear();
   availableTransitions_.clear();
-  const std::filesystem::path folder = pieces::userPiecesFolder();
-  if (folder.empty()) return;
-  for (const std::filesystem::path& file : pieces::piecesIn(folder)) {
-    try {
-      const isf::Kind kind = isf::loadDocument(file).kind;
-      if (kind == isf::Kind::Filter) availableFilters_.push_back(file);
-      if (kind == isf::Kind::Transition) availableTransitions_.push_back(file);
-    } catch (const Error&) {  // a file that does not read is the pieces' list's to report
+  std::vector<std::filesystem::path> folders = pieces::settingsPieceFolders(settings_.path());
+  if (auto folder = pieces::userPiecesFolder(); !folder.empty()) folders.insert(folders.begin(), std::move(folder));
+  for (const std::filesystem::path& folder : folders)
+    for (const std::filesystem::path& file : pieces::piecesIn(folder)) {
+      try {
+        const isf::Kind kind = isf::loadDocument(file).kind;
+        if (kind == isf::Kind::Filter) availableFilters_.push_back(file);
+        if (kind == isf::Kind::Transition) availableTransitions_.push_back(file);
+      } catch (const Error&) {  // a file that does not read is the pieces' list's to report
+      }
     }
-  }
 }
 
 void Gallery::drawFilters() {

@@ -51,14 +51,19 @@ gpu::ImageDecl pictureDecl(std::string name, const Picture& picture) {
   return decl;
 }
 
-// `count` values of `samples` spread over `wanted` texels (nearest, as a waveform drawn at another
-// width would be); zeros when there are none.
-std::vector<float> resampled(std::span<const float> samples, size_t wanted, float offset, float scale) {
+// `samples` spread over `wanted` texels, each `offset + scale * value`: a waveform takes the sample at
+// each texel (as a line drawn at another width would), a spectrum the loudest bin a texel covers (so
+// a tone between two texels' bins still shows); `offset` throughout when there are none.
+std::vector<float> resampled(std::span<const float> samples, size_t wanted, float offset, float scale, bool peak) {
   std::vector<float> texels(wanted, offset);
   if (samples.empty()) return texels;
+  const auto finite = [&](size_t i) { return std::isfinite(samples[i]) ? samples[i] : 0.0f; };
   for (size_t i = 0; i < wanted; ++i) {
     const size_t from = std::min(samples.size() - 1, i * samples.size() / wanted);
-    const float value = std::isfinite(samples[from]) ? samples[from] : 0.0f;
+    const size_t to = std::max(from + 1, std::min(samples.size(), (i + 1) * samples.size() / wanted));
+    float value = finite(from);
+    if (peak)
+      for (size_t k = from + 1; k < to; ++k) value = std::max(value, finite(k));
     texels[i] = offset + scale * value;
   }
   return texels;
@@ -352,8 +357,8 @@ void Runner::record(const FrameContext& frame, const RunInput& input, gpu::Image
     if (entry.kind != State::Sampled::Kind::Audio) continue;
     const bool fft = doc.inputs.at(size_t(entry.input)).type == InputType::AudioFFT;
     // A waveform as a GL host stores it in an 8-bit texture: 0.5 is silence.
-    const std::vector<float> texels = fft ? resampled(input.spectrum, size_t(entry.audioSamples), 0.0f, 1.0f)
-                                          : resampled(input.wave, size_t(entry.audioSamples), 0.5f, 0.5f);
+    const std::vector<float> texels = fft ? resampled(input.spectrum, size_t(entry.audioSamples), 0.0f, 1.0f, true)
+                                          : resampled(input.wave, size_t(entry.audioSamples), 0.5f, 0.5f, false);
     gpu::uploadImage(frame.cmd, frame.stream, s.resources.current(entry.image), std::as_bytes(std::span(texels)), kSampled);
   }
 

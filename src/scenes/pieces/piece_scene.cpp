@@ -1,6 +1,7 @@
 #include "scenes/pieces/piece_scene.h"
 
 #include "isf/gpu/isf_runner.h"
+#include "params/settings_file.h"
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -45,9 +46,11 @@ class PieceScene final : public Scene {
           loaded.error = e.what();
         }
       }
-      if (!loaded.error.empty()) refused(loaded.error);
+      if (!loaded.error.empty()) refused(loaded.error, context.realtime);
     }
     if (version && version->file) start(*version, nullptr);
+    // A run that is not the gallery cannot wait for a mended file: a piece that never loaded ends it.
+    if (!runner_ && !context_.realtime) throw Error(piece_.error);
     polled_ = Clock::now();
   }
 
@@ -154,9 +157,9 @@ class PieceScene final : public Scene {
     if (target_.width > 0) runner_->resize(target_);
   }
 
-  void refused(const std::string& error) {
+  void refused(const std::string& error, bool say = true) {
     piece_.error = error;
-    std::fprintf(stderr, "vitrine: %s\n", error.c_str());
+    if (say) std::fprintf(stderr, "vitrine: %s\n", error.c_str());
     context_.events.emit(shown_.time, {"refused", {{"error", error}}});
   }
 
@@ -216,12 +219,28 @@ void addPieceFactories(std::span<Piece* const> pieces) {
     addSceneFactory(piece->name, [piece](const SceneContext& context) { return createPieceScene(context, *piece); });
 }
 
+std::vector<std::filesystem::path> settingsPieceFolders(const std::filesystem::path& settings) {
+  std::error_code ec;
+  if (settings.empty() || !std::filesystem::is_regular_file(settings, ec)) return {};
+  // Read only, never moved aside or rewritten here: the gallery reads the file again and owns it.
+  const params::LoadResult loaded = params::loadSettings(settings, nullptr, params::LoadMode::LeaveAlone);
+  std::vector<std::filesystem::path> folders;
+  const auto& unknown = loaded.settings.unknown;
+  if (unknown.is_object() && unknown.contains("pieces") && unknown["pieces"].is_array())
+    for (const auto& folder : unknown["pieces"])
+      if (folder.is_string()) folders.emplace_back(folder.get<std::string>());
+  return folders;
+}
+
 void addStartupPieces(int argc, const char* const* argv) {
   std::vector<std::filesystem::path> named;
   for (int i = 1; i + 1 < argc; ++i)
     if (std::string_view(argv[i]) == "--isf") named.emplace_back(argv[++i]);
   addPieceFactories(addPieces(named, true));
-  if (const auto folder = userPiecesFolder(); !folder.empty()) addPieceFactories(addPieces(piecesIn(folder), false));
+  std::vector<std::filesystem::path> folders;
+  if (const auto folder = userPiecesFolder(); !folder.empty()) folders.push_back(folder);
+  for (auto& folder : settingsPieceFolders(params::defaultSettingsPath())) folders.push_back(std::move(folder));
+  for (const auto& folder : folders) addPieceFactories(addPieces(piecesIn(folder), false));
 }
 
 }  // namespace vitrine::pieces

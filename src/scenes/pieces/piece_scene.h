@@ -25,9 +25,13 @@ std::unique_ptr<Scene> createPieceScene(const SceneContext& context, Piece& piec
 void addPieceFactories(std::span<Piece* const> pieces);
 
 // What the program does first, before it reads its command line (whose --scene and --set may name a
-// piece): every --isf FILE (refused files end the run with their error), then the user's pieces
-// folder, as pieces with their factories.
+// piece): every --isf FILE (refused files end the run with their error), then the generators in the
+// user's pieces folder and in each folder the settings file's "pieces" array names, as pieces with
+// their factories.
 void addStartupPieces(int argc, const char* const* argv);
+// The folders the settings file at `settings` names in its top-level "pieces" array ("pieces":
+// ["/home/me/isf"]); none when it has none or cannot be read.
+std::vector<std::filesystem::path> settingsPieceFolders(const std::filesystem::path& settings);
 
 // How often a running piece looks at its file's time (one stat call; never a wait on the frame).
 inline constexpr std::chrono::milliseconds kPollInterval{250};
