@@ -6,8 +6,8 @@
 //    "mappings": {"kifs": ["midi.cc.1.21=kifs.fold:0.9:1.2"]},
 //    "live": {"audio_input": true, "audio_device": ""},
 //    "outputs": {"main": {"corners": [[0.02, 0], [1, 0.04], [0.97, 1], [0, 0.96]]}, "HDMI-1": {"turn": 180}},
-//    "filters": {"kifs": [{"file": "/home/me/isf/invert.fs", "values": {"amount": 0.5}}]},
-//    "transition": {"file": "/home/me/isf/wipe.fs", "values": {"softness": 0.2}}}
+//    "filters": {"kifs": [{"file": "invert.fs", "values": {"amount": 0.5}}]},
+//    "transition": {"file": "wipe.fs", "values": {"softness": 0.2}}}
 //
 // Mappings (live/mapping.h) are kept here as their lines of text, and each output's warp (projector
 // setup's corner pin, its turn, region and soft edges; host/present/output_warp_file.h) as its JSON object,

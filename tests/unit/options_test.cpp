@@ -163,11 +163,11 @@ TEST(OptionsModes, LiveInputFlags) {
 
 TEST(OptionsModes, AFlagGivenTwiceIsRefusedUnlessRepeatable) {
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--scene", "neon", "--out", "x.exr"}),
-            "--scene is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--scene is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "a.exr", "--out", "b.exr"}),
-            "--out is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--out is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--validate", "--validate"}),
-            "--validate is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--validate is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", "step=2", "--set", "step=3",
                      "--preset", "a", "--preset", "b"}),
             "accepted");
