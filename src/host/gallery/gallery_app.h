@@ -9,6 +9,7 @@
 // the way in.
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -130,6 +131,9 @@ class Gallery {
   std::vector<std::filesystem::path> availableFilters_;  // the filters in the pieces folder
   std::vector<std::filesystem::path> availableTransitions_;  // and the transitions
   bool transitionGiven_ = false;               // --transition: the settings' transition is not used or written
+  // Per scene, the saved filters that did not load (a file gone, an edit that does not compile): kept
+  // in its saved chain, after the ones that run, so that a file mended or put back runs again.
+  std::map<std::string, std::vector<FilterSpec>, std::less<>> unloadedFilters_;
   Swapchain swapchain_;
   Overlay overlay_;
   Screenshots screenshots_;

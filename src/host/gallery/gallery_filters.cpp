@@ -33,11 +33,14 @@ void Gallery::startFilters(SceneRenderer& renderer, const SceneInfo& info) {
   renderer.filters().clear();
   if (!saved) return;
   std::vector<std::string> problems;
+  std::vector<FilterSpec>& unloaded = unloadedFilters_[std::string(info.name)];
+  unloaded.clear();
   for (const FilterSpec& filter : chainFromJson(*saved, problems)) {
     try {
       renderer.filters().add(filter);
     } catch (const Error& e) {
       problems.push_back(e.what());
+      unloaded.push_back(filter);
     }
   }
   for (const std::string& problem : problems)
@@ -47,9 +50,10 @@ void Gallery::startFilters(SceneRenderer& renderer, const SceneInfo& info) {
 // The chain of the scene showing, with its values, as the settings file keeps it (not the run's).
 void Gallery::rememberFilters() {
   if (filtersGiven_ || !renderer_->hasScene()) return;
-  settings_.setFilters(renderer_->info().name,
-                       renderer_->hasFilters() ? chainJson(renderer_->filters().specs()) : nlohmann::ordered_json(),
-                       Clock::now());
+  std::vector<FilterSpec> chain = renderer_->hasFilters() ? renderer_->filters().specs() : std::vector<FilterSpec>{};
+  if (const auto unloaded = unloadedFilters_.find(renderer_->info().name); unloaded != unloadedFilters_.end())
+    chain.insert(chain.end(), unloaded->second.begin(), unloaded->second.end());
+  settings_.setFilters(renderer_->info().name, chain.empty() ? nlohmann::ordered_json() : chainJson(chain), Clock::now());
 }
 
 // A scene switch in the gallery with --transition: the scene comes in as the kiosk's do, through the
