@@ -61,8 +61,19 @@ constexpr Flag kFlags[] = {
     {.name = "--set", .modes = kRuns, .metavar = "[SCENE.]KEY=VALUE", .value = Value::Setting, .repeatable = true,
      .help = "Sets a scene parameter, with the panel's ranges (vitrine --list-params). KEY=VALUE applies to "
              "whichever scene runs, SCENE.KEY=VALUE (noodles.grid=32) to that scene only. All values given for "
-             "a scene are judged together, on the final values.",
-     .store = [](Options& o, std::string_view, const std::string& v) { o.parameters.push_back(parseSet(v)); }},
+             "a scene are judged together, on the final values. filter.NAME.KEY=VALUE sets an input of the "
+             "--filter whose file is NAME (without its extension), transition.KEY=VALUE one of the --transition.",
+     .store =
+         [](Options& o, std::string_view, const std::string& v) {
+           if (auto filter = parseFilterSet(v)) o.filterParameters.push_back(std::move(*filter));
+           else if (auto transition = parseTransitionSet(v)) o.transitionParameters.push_back(std::move(*transition));
+           else o.parameters.push_back(parseSet(v));
+         }},
+    {.name = "--filter", .modes = kRuns, .metavar = "FILE", .value = Value::File, .repeatable = true,
+     .help = "An ISF filter (a .fs with an inputImage) over the picture of every scene the run shows, before "
+             "the flash guard and the outputs; given again, the next one filters the first one's picture "
+             "(docs/ISF.md). In the gallery it replaces the scenes' saved filters for the run.",
+     .store = append<&Options::filters>},
     {.name = "--preset", .modes = kRuns, .metavar = "[SCENE.]NAME", .value = Value::Preset, .repeatable = true,
      .help = "Applies a named set of values before any --set: the scene's own presets first, then yours "
              "(saved from the panel, a remote or --save-preset, in the presets folder beside the settings "
@@ -189,6 +200,10 @@ constexpr Flag kFlags[] = {
     {.name = "--playlist", .modes = kGallery, .metavar = "FILE", .value = Value::File,
      .help = "Gives the kiosk its lines of SCENE [PRESET] SECONDS instead (needs --kiosk, not with --dwell).",
      .store = text<&Options::playlist>},
+    {.name = "--transition", .modes = kGallery, .metavar = "FILE", .value = Value::File,
+     .help = "An ISF transition (startImage, endImage, progress) instead of the cross-fade: the kiosk's and "
+             "the playlist's changes, and the gallery's scene switches, which then take its two seconds too.",
+     .store = text<&Options::transition>},
     {.name = "--remote-saves", .modes = kGallery, .value = Value::None,
      .help = "Remote changes are written to the settings file too (needs --remote).",
      .store = on<&Options::remoteSaves>},

@@ -162,6 +162,8 @@ Options parseOptions(int argc, const char* const* argv) {
   if (options.kiosk && options.mode != Mode::Gallery) throw Error("--kiosk is for the gallery, not --headless, bench or record.");
   if (options.remote && options.mode != Mode::Gallery && options.mode != Mode::Headless)
     throw Error("--remote is for the gallery and --headless runs.");
+  if (!options.transitionParameters.empty() && options.transition.empty())
+    throw Error("--set transition.KEY=VALUE needs --transition FILE (the gallery's), whose input it sets.");
   if (options.remoteSaves && !options.remote) throw Error("--remote-saves needs --remote.");
   if (!options.remoteAllow.empty() && !options.remote) throw Error("--remote-allow needs --remote.");
   if (options.mode == Mode::Gallery && options.size &&

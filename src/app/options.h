@@ -29,6 +29,15 @@ struct SceneSetting {
   bool operator==(const SceneSetting&) const = default;
 };
 
+// One --set filter.NAME.KEY=VALUE: a parameter of the filters loaded from NAME (the file's name without
+// its extension) in the chain after the scene.
+struct FilterSetting {
+  std::string filter;  // NAME
+  std::string key;
+  std::string value;
+  bool operator==(const FilterSetting&) const = default;
+};
+
 struct Options {
   Mode mode = Mode::Gallery;
   std::string scene;                 // empty: the first in the registry (gallery), "all" (bench)
@@ -47,6 +56,10 @@ struct Options {
   bool vsync = true;
   std::vector<SceneSetting> parameters;  // --set [SCENE.]KEY=VALUE, in command-line order
   std::vector<SceneSetting> presets;     // --preset [SCENE.]NAME, in command-line order
+  std::vector<std::string> filters;      // --filter FILE: ISF filters after every scene of the run, in order
+  std::vector<FilterSetting> filterParameters;  // --set filter.NAME.KEY=VALUE, in command-line order
+  std::string transition;                // --transition FILE (gallery): an ISF transition for scene changes
+  std::vector<std::pair<std::string, std::string>> transitionParameters;  // --set transition.KEY=VALUE
   std::vector<std::string> isf;      // --isf FILE: ISF generators shown as scenes (registered before parsing)
   std::vector<std::string> presetFiles;  // --preset-file FILE: a preset's file, applied to its own scene
   std::string savePreset;                // --save-preset NAME (headless): the run's values kept as the user's preset

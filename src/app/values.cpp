@@ -88,6 +88,30 @@ SceneSetting parseSet(std::string_view text) {
   return *setting;
 }
 
+std::optional<FilterSetting> parseFilterSet(std::string_view text) {
+  constexpr std::string_view kPrefix = "filter.";
+  if (text.substr(0, kPrefix.size()) != kPrefix) return std::nullopt;
+  const auto eq = text.find('=');
+  const std::string_view name = text.substr(kPrefix.size(), eq == std::string_view::npos ? 0 : eq - kPrefix.size());
+  const auto dot = name.find('.');
+  if (eq == std::string_view::npos || dot == std::string_view::npos || dot == 0 || dot + 1 == name.size() ||
+      name.find('.', dot + 1) != std::string_view::npos)
+    throw Error(fmt::format("--set expects filter.NAME.KEY=VALUE for a filter's parameter (NAME: the filter's file "
+                            "name without its extension), not '{}'.",
+                            text));
+  return FilterSetting{std::string(name.substr(0, dot)), std::string(name.substr(dot + 1)), std::string(text.substr(eq + 1))};
+}
+
+std::optional<std::pair<std::string, std::string>> parseTransitionSet(std::string_view text) {
+  constexpr std::string_view kPrefix = "transition.";
+  if (text.substr(0, kPrefix.size()) != kPrefix) return std::nullopt;
+  const auto eq = text.find('=');
+  const std::string_view key = text.substr(kPrefix.size(), eq == std::string_view::npos ? 0 : eq - kPrefix.size());
+  if (eq == std::string_view::npos || key.empty() || key.find('.') != std::string_view::npos)
+    throw Error(fmt::format("--set expects transition.KEY=VALUE for an input of the --transition, not '{}'.", text));
+  return std::pair{std::string(key), std::string(text.substr(eq + 1))};
+}
+
 SceneSetting parsePreset(std::string_view text) {
   std::optional<SceneSetting> preset;
   if (text.find('=') == std::string_view::npos) preset = qualifiedName("--preset", text, text);

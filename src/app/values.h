@@ -26,6 +26,11 @@ double parseNumberIn(std::string_view flag, const std::string& text, double lo, 
 double parseMetric(std::string_view flag, const std::string& text, double lo, double hi);
 std::pair<uint32_t, uint32_t> parseRange(std::string_view text);  // "A:B": frames A up to, not including, B
 SceneSetting parseSet(std::string_view text);     // [SCENE.]KEY=VALUE
+// "filter.NAME.KEY=VALUE": nothing when `text` does not start with "filter."; else the setting, or an
+// Error saying what the form is.
+std::optional<FilterSetting> parseFilterSet(std::string_view text);
+// "transition.KEY=VALUE", likewise.
+std::optional<std::pair<std::string, std::string>> parseTransitionSet(std::string_view text);
 SceneSetting parsePreset(std::string_view text);  // [SCENE.]NAME
 std::string lowercase(std::string text);
 

@@ -33,7 +33,15 @@ SceneRenderer::SceneRenderer(const gpu::Device& device, gpu::ProgramLibrary& pro
 
 // Shutdown is the one place that waits: every retired scene and pipeline must be gone before the
 // program library they registered with.
-SceneRenderer::~SceneRenderer() { device_.drainRetired(); }
+SceneRenderer::~SceneRenderer() {
+  filters_.reset();  // retires its filters
+  device_.drainRetired();
+}
+
+FilterChain& SceneRenderer::filters() {
+  if (!filters_) filters_ = std::make_unique<FilterChain>(device_, programs_);
+  return *filters_;
+}
 
 void SceneRenderer::clear() {
   // Frames in flight may still use the old scene's pipelines, buffers and images: retire, don't wait.
@@ -135,13 +143,19 @@ void SceneRenderer::recordTarget(VkCommandBuffer cmd, uint32_t slot, const Frame
   resources_->beginFrame(cmd, stream_, slot);
   target_.discard();  // a scene draws every texel each frame
   scene_->record(FrameContext{device_, cmd, &timer_, target_, *resources_, stream_, input, slot, drawing_});
+  if (hasFilters() && drawing_) filters_->record(cmd, slot, &timer_, stream_, target_, input, drawing_, realtime_);
 }
 
 void SceneRenderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameInput& input, const BlitDestination& dst,
                            const Crossfade& fade) {
   recordTarget(cmd, slot, input, frameExtent(dst.extent, dst.warp));
-  shown_ = guard_ && drawing_ && canPresent(dst) ? &guardFrame(cmd, fade, input.time) : nullptr;
-  recordOutput(cmd, dst, fade);
+  // A transition draws both frames into the target, where the guard and every output find it.
+  transitioned_ = fade.transition && fade.other && drawing_;
+  if (transitioned_)
+    fade.transition->record(cmd, slot, &timer_, stream_, target_, *fade.other, fade.weight, input, realtime_);
+  const Crossfade mix = transitioned_ ? Crossfade{} : fade;
+  shown_ = guard_ && drawing_ && canPresent(dst) ? &guardFrame(cmd, mix, input.time) : nullptr;
+  recordOutput(cmd, dst, mix);
 }
 
 void SceneRenderer::recordOutput(VkCommandBuffer cmd, const BlitDestination& dst, const Crossfade& fade) {
@@ -150,7 +164,7 @@ void SceneRenderer::recordOutput(VkCommandBuffer cmd, const BlitDestination& dst
   else if (shown_)  // the guard's frame, the fade already in it
     present(cmd, dst, *shown_, {});
   else
-    present(cmd, dst, target_, fade);
+    present(cmd, dst, target_, transitioned_ ? Crossfade{} : fade);
 }
 
 void SceneRenderer::recordScaled(VkCommandBuffer cmd, gpu::Image& output) {

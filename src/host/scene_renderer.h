@@ -9,6 +9,8 @@
 #include "gpu/resources.h"
 #include "gpu/stream.h"
 #include "maths/output_warp.h"
+#include "host/filters/filter_chain.h"
+#include "host/filters/isf_transition.h"
 #include "host/flash_guard.h"
 #include "scenes/scene.h"
 
@@ -42,10 +44,12 @@ VkExtent2D frameExtent(VkExtent2D output, const maths::OutputWarp* warp);
 void checkWarpedFrame(const gpu::Device& device, VkExtent2D output, const maths::OutputWarp& warp, std::string_view where);
 
 // Another renderer's target mixed into the output (kiosk mode's cross-fade): `weight` of it over the
-// output, 0..1. The compute path only; a blit cuts instead.
+// output, 0..1. The compute path only; a blit cuts instead. With a `transition`, that ISF file draws
+// the two frames together at progress `weight` instead of the mix, over this renderer's target.
 struct Crossfade {
   gpu::Image* other = nullptr;
   float weight = 0.0f;
+  IsfTransition* transition = nullptr;
 };
 
 class SceneRenderer {
@@ -97,6 +101,10 @@ class SceneRenderer {
   void clear();
   bool hasScene() const { return scene_ != nullptr; }
   gpu::Image& target() { return target_; }
+  // The ISF filters after the scene (host/filters/filter_chain.h): made at first use, kept across
+  // scenes until whoever sets them changes them; empty, they record nothing.
+  FilterChain& filters();
+  bool hasFilters() const { return filters_ && !filters_->empty(); }
 
  private:
   bool realtime_ = false;
@@ -123,6 +131,8 @@ class SceneRenderer {
   std::unique_ptr<Scene> scene_;
   gpu::Image target_;
   gpu::Image* shown_ = nullptr;   // this frame's guarded frame, which every output shows; null: the target
+  bool transitioned_ = false;     // this frame's transition is drawn into the target: no mix in the outputs
+  std::unique_ptr<FilterChain> filters_;
   VkExtent2D sceneExtent_{0, 0};  // what the scene and its images were last sized for
 };
 

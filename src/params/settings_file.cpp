@@ -251,6 +251,13 @@ LoadResult loadChecked(const fs::path& path, const SchemaLookup& schemaFor, Load
         if (warp.is_object()) settings.outputs[name] = warp;
         else result.warnings.push_back(fmt::format("{}: outputs.{}: expected an object, found {}; dropped", where, printable(name), warp.type_name()));
       }
+    } else if (key == "filters" && value.is_object()) {
+      for (const auto& [name, chain] : value.items()) {
+        if (chain.is_array()) settings.filters[name] = chain;
+        else result.warnings.push_back(fmt::format("{}: filters.{}: expected an array, found {}; dropped", where, printable(name), chain.type_name()));
+      }
+    } else if (key == "transition" && value.is_object()) {
+      settings.transition = value;
     } else {
       settings.unknown[key] = value;
     }
@@ -317,6 +324,12 @@ void saveSettings(const fs::path& path, const Settings& settings, const SchemaLo
     if (!outputs.is_object()) outputs = Json::object();
     for (const auto& [name, warp] : settings.outputs) outputs[name] = warp;
   }
+  if (!settings.filters.empty()) {
+    Json& filters = out["filters"];
+    if (!filters.is_object()) filters = Json::object();
+    for (const auto& [name, chain] : settings.filters) filters[name] = chain;
+  }
+  if (settings.transition.is_object()) out["transition"] = settings.transition;
 
   writeJsonFile(path, out);
 }
@@ -382,6 +395,12 @@ Settings mergeSettings(Settings disk, const Settings& ours, const SettingsChange
     if (mine == ours.outputs.end()) disk.outputs.erase(output);
     else disk.outputs[output] = mine->second;
   }
+  for (const std::string& scene : changed.filters) {
+    const auto mine = ours.filters.find(scene);
+    if (mine == ours.filters.end()) disk.filters.erase(scene);
+    else disk.filters[scene] = mine->second;
+  }
+  if (changed.transition) disk.transition = ours.transition;
   return disk;
 }
 

@@ -5,11 +5,14 @@
 //    "scenes": {"kifs": {"step": 9, "tier": "high"}, "noodles": {"grid": "32x32x8", "msaa": "4x"}},
 //    "mappings": {"kifs": ["midi.cc.1.21=kifs.fold:0.9:1.2"]},
 //    "live": {"audio_input": true, "audio_device": ""},
-//    "outputs": {"main": {"corners": [[0.02, 0], [1, 0.04], [0.97, 1], [0, 0.96]]}, "HDMI-1": {"turn": 180}}}
+//    "outputs": {"main": {"corners": [[0.02, 0], [1, 0.04], [0.97, 1], [0, 0.96]]}, "HDMI-1": {"turn": 180}},
+//    "filters": {"kifs": [{"file": "invert.fs", "values": {"amount": 0.5}}]},
+//    "transition": {"file": "wipe.fs", "values": {"softness": 0.2}}}
 //
 // Mappings (live/mapping.h) are kept here as their lines of text, and each output's warp (projector
-// setup's corner pin, its turn, region and soft edges; host/present/output_warp_file.h) as its JSON object;
-// whoever applies them checks them, as values are checked by their parse.
+// setup's corner pin, its turn, region and soft edges; host/present/output_warp_file.h) as its JSON object,
+// each scene's ISF filter chain (host/filters/filter_chain.h) as its JSON array and the gallery's ISF
+// transition as its JSON object; whoever applies them checks them, as values are checked by their parse.
 //
 // Values are typed by kind (Float/Int: numbers, Bool: true/false, Choice/Custom: strings) and every
 // one is validated by the parameter's own parse, as --set values are. A file is the user's: nothing in
@@ -47,6 +50,8 @@ struct Settings {
   bool audioInput = false;                   // live audio input on (the scenes' audio mappings play)
   std::string audioDevice;                   // the capture device; empty: the default output's monitor
   std::map<std::string, nlohmann::ordered_json> outputs;  // per output name: its warp as JSON (an object)
+  std::map<std::string, nlohmann::ordered_json> filters;  // per scene: its filter chain as JSON (an array)
+  nlohmann::ordered_json transition;  // the scene switches' ISF transition as JSON (an object); null: none
   // Everything read but not understood, in the file's own shape (top-level keys, scenes this version
   // does not have, unknown keys inside known scenes); saveSettings writes it back underneath.
   nlohmann::ordered_json unknown = nlohmann::ordered_json::object();
@@ -99,7 +104,12 @@ struct SettingsChanges {
   std::set<std::string> mappings;  // scenes whose mapping lines changed (written whole)
   bool live = false;               // audio input on/off or its device
   std::set<std::string> outputs;   // outputs whose warp changed (written whole)
-  bool empty() const { return !all && !scene && keys.empty() && mappings.empty() && !live && outputs.empty(); }
+  std::set<std::string> filters;   // scenes whose filter chain changed (written whole)
+  bool transition = false;         // the transition or its values
+  bool empty() const {
+    return !all && !scene && keys.empty() && mappings.empty() && !live && outputs.empty() && filters.empty() &&
+           !transition;
+  }
 };
 // `disk` (the file as it is now) with `ours` written over it where `changed` says, key by key; a
 // changed key `ours` no longer holds is removed. Everything else on disk stays as the other writer

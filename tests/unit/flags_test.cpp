@@ -92,7 +92,7 @@ TEST(Flags, ASwitchOutsideItsModesIsRefusedNamingThem) {
 }
 
 TEST(Flags, OnlyTheRepeatableRepeat) {
-  EXPECT_EQ(flags::repeatableList(), "--isf, --set, --preset, --preset-file, --map and --remote-allow");
+  EXPECT_EQ(flags::repeatableList(), "--isf, --set, --filter, --preset, --preset-file, --map and --remote-allow");
   EXPECT_EQ(flagRefusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--preset-file", "a", "--preset-file", "b",
                      "--map", "a", "--map", "b"}),
             "accepted");
@@ -147,7 +147,7 @@ TEST(FlagsHelp, NamesEveryFlagWithItsHelpWithinAHundredColumns) {
   EXPECT_NE(text.find("  vitrine record --scene NAME --out FILE --seconds S [--isf FILE]... [--size WxH]"), std::string::npos) << text;
   std::string oneLine = text;  // the closing sentence, wherever it wraps
   for (char& c : oneLine) c = c == '\n' ? ' ' : c;
-  EXPECT_NE(oneLine.find("except --isf, --set, --preset, --preset-file, --map and --remote-allow, which repeat."),
+  EXPECT_NE(oneLine.find("except --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow, which repeat."),
             std::string::npos);
 }
 

@@ -163,11 +163,11 @@ TEST(OptionsModes, LiveInputFlags) {
 
 TEST(OptionsModes, AFlagGivenTwiceIsRefusedUnlessRepeatable) {
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--scene", "neon", "--out", "x.exr"}),
-            "--scene is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--scene is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "a.exr", "--out", "b.exr"}),
-            "--out is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--out is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--validate", "--validate"}),
-            "--validate is given twice; only --isf, --set, --preset, --preset-file, --map and --remote-allow may be given more than once.");
+            "--validate is given twice; only --isf, --set, --filter, --preset, --preset-file, --map and --remote-allow may be given more than once.");
   EXPECT_EQ(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", "step=2", "--set", "step=3",
                      "--preset", "a", "--preset", "b"}),
             "accepted");
@@ -373,6 +373,33 @@ TEST(OptionsAudio, AudioOutIsAHeadlessWavFile) {
   EXPECT_THROW(parseOptions(8, notWav), Error);
   const char* gallery[] = {"vitrine", "--audio-out", "/tmp/a.wav"};
   EXPECT_THROW(parseOptions(3, gallery), Error);
+}
+
+
+// ------------------------------------------------------------------------------ filters, transitions
+
+TEST(OptionsFilters, FilterSettingsAreTheirOwnAndInOrder) {
+  const Options o = parse({"--headless", "--scene", "kifs", "--out", "x.exr", "--filter", "a/invert.fs", "--filter",
+                           "b/gain.fs", "--set", "filter.invert.amount=0.5", "--set", "step=3", "--set",
+                           "filter.gain.gain=2"});
+  EXPECT_EQ(o.filters, (std::vector<std::string>{"a/invert.fs", "b/gain.fs"}));
+  EXPECT_EQ(o.filterParameters,
+            (std::vector<FilterSetting>{{"invert", "amount", "0.5"}, {"gain", "gain", "2"}}));
+  ASSERT_EQ(o.parameters.size(), 1u);
+  EXPECT_EQ(o.parameters[0].key, "step");
+}
+
+TEST(OptionsFilters, MalformedFilterAndTransitionSettingsSayTheirForm) {
+  for (const char* bad : {"filter.invert=1", "filter..amount=1", "filter.invert.=1", "filter.a.b.c=1", "filter.a.b"})
+    EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--set", bad}).find("filter.NAME.KEY=VALUE"),
+              std::string::npos)
+        << bad;
+  EXPECT_NE(refusal({"--set", "transition.a.b=1", "--transition", "t.fs"}).find("transition.KEY=VALUE"), std::string::npos);
+  EXPECT_NE(refusal({"--set", "transition.dip=1"}).find("needs --transition FILE"), std::string::npos);
+  EXPECT_EQ(parse({"--transition", "t.fs", "--set", "transition.dip=1"}).transitionParameters,
+            (std::vector<std::pair<std::string, std::string>>{{"dip", "1"}}));
+  EXPECT_NE(refusal({"--headless", "--scene", "kifs", "--out", "x.exr", "--transition", "t.fs"}).find("--transition"),
+            std::string::npos);
 }
 
 }  // namespace

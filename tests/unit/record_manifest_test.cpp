@@ -37,6 +37,25 @@ TEST(RecordManifest, ReadsBackWhatItWrites) {
   EXPECT_NE(fingerprint("0.5 down\n"), fingerprint("0.5 up\n"));
 }
 
+// A film's filters: which files in which order and their inputs' values are read back, and a resume
+// with another value or another chain is told which.
+TEST(RecordManifest, KeepsTheFiltersAndTheirValues) {
+  RecordManifest film = neonFilm();
+  film.filters = {"invert 0123456789abcdef", "gain fedcba9876543210"};
+  film.filterValues = {{"filter.gain.gain", "0.5"}, {"filter.invert.amount", "1"}};
+  EXPECT_EQ(parseManifest(manifestText(film), "record.json"), film);
+  RecordManifest other = film;
+  other.filterValues[1].second = "0.25";
+  EXPECT_EQ(manifestDifferences(film, other),
+            (std::vector<std::string>{"filter.invert.amount: 1 in the folder, 0.25 in this run"}));
+  other = film;
+  std::swap(other.filters[0], other.filters[1]);
+  EXPECT_EQ(manifestDifferences(film, other),
+            (std::vector<std::string>{"filters: invert 0123456789abcdef, gain fedcba9876543210 in the folder, gain "
+                                      "fedcba9876543210, invert 0123456789abcdef in this run"}));
+  EXPECT_EQ(parseManifest(manifestText(neonFilm()), "record.json").filters.size(), 0u);  // a film without filters
+}
+
 // Numbers no film has (a hand-edited record.json) are refused by name, before encode turns them into
 // "inf s of sound" or a height of 4294967242.
 TEST(RecordManifest, RefusesNumbersNoFilmHas) {

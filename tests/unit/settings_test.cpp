@@ -325,6 +325,32 @@ TEST_F(SettingsFile, ASymlinkedFileStaysALink) {
   EXPECT_THROW(saveSettings(dir_ / "loop-a", settings, schemaFor), Error);
 }
 
+// Each scene's filter chain is kept whole, as written, and merged scene by scene.
+TEST_F(SettingsFile, FilterChainsRoundTripAndMergeByScene) {
+  Settings settings;
+  settings.filters["kifs"] = nlohmann::ordered_json::parse(R"([{"file": "/f/invert.fs", "values": {"amount": "0.5"}}])");
+  saveSettings(path_, settings, schemaFor);
+  LoadResult result = load();
+  EXPECT_TRUE(result.warnings.empty());
+  EXPECT_EQ(result.settings.filters, settings.filters);
+  writeAll(path_, R"({"version": 1, "filters": {"kifs": {"file": "x.fs"}}})");
+  result = load();
+  EXPECT_TRUE(result.settings.filters.empty());
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_NE(result.warnings[0].find("filters.kifs: expected an array"), std::string::npos) << result.warnings[0];
+
+  Settings disk, ours;
+  disk.filters["kifs"] = nlohmann::ordered_json::array({{{"file", "a.fs"}}});
+  disk.filters["glass"] = nlohmann::ordered_json::array({{{"file", "b.fs"}}});
+  ours.filters["noodles"] = nlohmann::ordered_json::array({{{"file", "c.fs"}}});
+  SettingsChanges changed;
+  changed.filters = {"kifs", "noodles"};  // kifs' chain taken away here, noodles' made
+  const Settings merged = mergeSettings(disk, ours, changed);
+  EXPECT_FALSE(merged.filters.contains("kifs"));
+  EXPECT_EQ(merged.filters.at("glass"), disk.filters.at("glass"));
+  EXPECT_EQ(merged.filters.at("noodles"), ours.filters.at("noodles"));
+}
+
 TEST(SettingsMerge, OnlyChangedKeysOverwriteWhatIsOnDisk) {
   Settings disk;
   disk.scene = "noodles";

@@ -11,6 +11,7 @@
 #include "core/stop_signal.h"
 #include "core/user_dirs.h"
 #include "gpu/check.h"
+#include "host/filters/filter_options.h"
 #include "host/gallery/gallery_app.h"
 #include "host/present/output_warp_file.h"
 #include "host/present/stream_sink.h"
@@ -147,6 +148,23 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     kiosk_.emplace(std::move(playlist), firstScene, options.dwell);
     kiosk_->rest(window_.takePointer());  // where the cursor rests is not a touch
   }
+  // A --filter or --transition that cannot load ends the run here, before its first frame.
+  filtersGiven_ = !options.filters.empty();
+  runFilters_ = filterSpecs(options);
+  for (const FilterSpec& filter : runFilters_) renderer_->filters().add(filter);
+  transitionGiven_ = !options.transition.empty();
+  if (transitionGiven_) {
+    transition_ = std::make_unique<IsfTransition>(device_, programs_, options.transition);
+    if (auto why = transition_->applyParameters(options.transitionParameters); !why.empty())
+      throw Error(fmt::format("transition {} rejects {}", options.transition, why));
+    crossfade_.setTransition(transition_.get());
+  } else if (const auto& saved = settings_.transition(); saved.is_object() && saved.contains("file")) {
+    // The settings' transition: one that no longer loads is said, and the cross-fade's mix stands in.
+    std::vector<std::string> problems;
+    const std::vector<FilterSpec> spec = chainFromJson(nlohmann::ordered_json::array({saved}), problems);
+    if (!spec.empty()) chooseTransition(spec.front().file, spec.front().values);
+  }
+  if (!options.kiosk) findFilters();
   switchScene(firstScene);
 }
 
@@ -194,7 +212,9 @@ void Gallery::frame() {
   if (nextScene_ && onBar_) {
     if (!barNote_.empty())
       std::fprintf(stderr, "vitrine: link: %s: %s\n", barNote_.c_str(), std::string(nextScene_->name).c_str());
-    switchScene(*std::exchange(nextScene_, nullptr));
+    const SceneInfo& next = *std::exchange(nextScene_, nullptr);
+    if (transition_ && !kiosk_) fadeTo(next);  // the gallery's switch through the transition too
+    else switchScene(next);
   }
   remote_.setBar(barWaits(), onBar_);
   if (barPreset_ && onBar_) {
@@ -305,6 +325,7 @@ void Gallery::simulate() {
     remote_.publish(*renderer_);
   }
   if (kiosk_) kioskStep(elapsed, touched);
+  else switchFadeStep(elapsed);
   outputs_.setupPointer(pointer);
   cursor_.observe(pointer, outputs_.setupActive() || (!uiHidden_ && overlay_.wantsMouse()));  // setup's mouse is not the scene's
   // Every step that is due, unless a step costs more than the time it stands for (StepCost).

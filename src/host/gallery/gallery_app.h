@@ -9,6 +9,7 @@
 // the way in.
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +32,7 @@
 #include "host/modes.h"
 #include "host/gallery/gallery_outputs.h"
 #include "host/ui/overlay.h"
+#include "host/ui/filter_panel.h"
 #include "host/ui/param_panel.h"
 #include "host/gallery/remote_session.h"
 #include "host/scene_renderer.h"
@@ -89,6 +91,16 @@ class Gallery {
   void finishFade();
   void nowShowing();
   std::unique_ptr<SceneRenderer> makeRenderer();
+  // ISF filters and transitions (gallery_filters.cpp).
+  void startFilters(SceneRenderer& renderer, const SceneInfo& info);
+  void rememberFilters();
+  void fadeTo(const SceneInfo& info);
+  void switchFadeStep(double elapsed);
+  void drawFilters();
+  void applyFilterChoice(const FilterPanelChoice& choice);
+  void findFilters();
+  void chooseTransition(const std::optional<std::filesystem::path>& file, const params::KeyValues& values);
+  void rememberTransition();
   // A kiosk's playlist presets are not remembered, so that a line without a preset shows the scene as
   // saved, whatever an earlier line set.
   bool remembers() const { return !kiosk_ || !kiosk_->playlist(); }
@@ -109,6 +121,20 @@ class Gallery {
   bool flashGuard_ = false;   // --flash-guard, --kiosk, --reduced-motion, then the menu's switch
   std::unique_ptr<SceneRenderer> renderer_;  // the scene showing
   KioskCrossfade crossfade_{[this] { return makeRenderer(); }};  // kiosk mode: the scene fading in
+  // After the renderers, so it goes first: they drain the device of what it retires.
+  std::unique_ptr<IsfTransition> transition_;  // --transition: drawn instead of the cross-fade's mix
+  std::vector<FilterSpec> runFilters_;         // --filter, with its --set values: every scene's chain
+  bool filtersGiven_ = false;                  // --filter given: the saved chains are not used or written
+  std::optional<double> switchFade_;           // seconds into a scene switch's transition (not the kiosk's)
+  FilterPanel filterPanel_;                    // the menu's filters section
+  FilterPanelChoice filterChoice_;             // what it reported this frame
+  std::string filterError_;                    // why the last filter edit or addition was refused
+  std::vector<std::filesystem::path> availableFilters_;  // the filters in the pieces folder
+  std::vector<std::filesystem::path> availableTransitions_;  // and the transitions
+  bool transitionGiven_ = false;               // --transition: the settings' transition is not used or written
+  // Per scene, the saved filters that did not load (a file gone, an edit that does not compile): kept
+  // in its saved chain, after the ones that run, so that a file mended or put back runs again.
+  std::map<std::string, std::vector<FilterSpec>, std::less<>> unloadedFilters_;
   Swapchain swapchain_;
   Overlay overlay_;
   Screenshots screenshots_;

@@ -136,7 +136,10 @@ void Gallery::showMenu() {
     const rig::LinkReading now = link->look();
     state.link = LinkControls{link->enabled(), now.bpm, now.playing};
   }
+  filterChoice_ = {};
+  state.filters = [this] { drawFilters(); };
   const MenuChoice choice = drawMenu(state);
+  applyFilterChoice(filterChoice_);
   if (link && choice.link) {  // what the user changed, the gallery leads
     if (choice.link->joined != state.link->joined) link->setEnabled(choice.link->joined);
     if (choice.link->tempo != state.link->tempo) link->setTempo(choice.link->tempo);
@@ -297,6 +300,7 @@ void Gallery::rememberValues() {
       if (theirs.contains(kv.first)) values.push_back(std::move(kv));
   }
   settings_.remember(scene, std::move(values), Clock::now());
+  rememberFilters();
 }
 
 }  // namespace vitrine::host

@@ -34,12 +34,14 @@ std::string Gallery::startScene(SceneRenderer& renderer, const SceneInfo& info) 
     std::fprintf(stderr, "vitrine: settings for %.*s: dropped %s (%s); the other saved values are kept\n",
                  int(info.name.size()), info.name.data(), fmt::format("{}", fmt::join(fitted.dropped, ", ")).c_str(),
                  fitted.why.c_str());
+  startFilters(renderer, info);
   return {};
 }
 
 void Gallery::switchScene(const SceneInfo& info) {
   if (hasScene_ && remembers()) rememberValues();  // switching back restores them
   crossfade_.cancel();  // a number key during a fade: that scene, no fade
+  switchFade_.reset();
   const SceneInfo* chosen = &info;
   // The old scene is retired behind the frames still using it. In kiosk mode a scene that cannot
   // start is skipped for the next one; when none starts, the kiosk starts over (runGallery).
@@ -58,6 +60,7 @@ void Gallery::switchScene(const SceneInfo& info) {
   timedFrames_ = 0;
   costlyEdit_.reset();
   panel_.forget();
+  filterPanel_.forget();
   panelError_.clear();
   if (!kiosk_) settings_.showing(chosen->name, Clock::now());  // the kiosk's cycle is not the gallery's choice
   input_.frame = 0;
@@ -105,6 +108,9 @@ void Gallery::kioskStep(double elapsed, bool touched) {
     }
     startEntryPreset(crossfade_.incoming(), *plan.begin);
     crossfade_.began(input_);
+    if (transition_)  // which scene came in when, for an installation's log
+      std::fprintf(stderr, "vitrine: kiosk: %.*s comes in through %s\n", int(info.name.size()), info.name.data(),
+                   transition_->file().filename().c_str());
   }
   if (plan.finish) finishFade();
   crossfade_.setWeight(plan.fade.value_or(0.0f));
@@ -150,6 +156,7 @@ void Gallery::finishFade() {
   passes_.clear();
   timedFrames_ = 0;
   panel_.forget();
+  filterPanel_.forget();
   panelError_.clear();
   missingAssets_ = assets_.missing();
   window_.setTitle(fmt::format("Vitrine — {}", renderer_->info().title));

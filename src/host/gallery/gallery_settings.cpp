@@ -114,6 +114,27 @@ void GallerySettings::setWarp(std::string_view output, nlohmann::ordered_json wa
   saver_.markDirty(now);
 }
 
+const nlohmann::ordered_json* GallerySettings::filtersFor(std::string_view scene) const {
+  const auto it = settings_.filters.find(std::string(scene));
+  return it == settings_.filters.end() ? nullptr : &it->second;
+}
+
+void GallerySettings::setFilters(std::string_view scene, nlohmann::ordered_json chain, Clock::time_point now) {
+  const nlohmann::ordered_json* had = filtersFor(scene);
+  if (had ? *had == chain : chain.empty()) return;
+  if (chain.empty()) settings_.filters.erase(std::string(scene));
+  else settings_.filters[std::string(scene)] = std::move(chain);
+  changes_.filters.insert(std::string(scene));
+  saver_.markDirty(now);
+}
+
+void GallerySettings::setTransition(nlohmann::ordered_json transition, Clock::time_point now) {
+  if (settings_.transition == transition) return;
+  settings_.transition = std::move(transition);
+  changes_.transition = true;
+  saver_.markDirty(now);
+}
+
 void GallerySettings::tick(Clock::time_point now) {
   if (saver_.due(now)) save();
 }

@@ -44,6 +44,13 @@ class GallerySettings {
   // it; an empty (identity) warp removes the entry.
   const nlohmann::ordered_json* warpFor(std::string_view output) const;
   void setWarp(std::string_view output, nlohmann::ordered_json warp, Clock::time_point now);
+  // ISF filters: each scene's chain as the file keeps it (an array of {"file", "values"}; null when it has
+  // none), checked by whoever applies it; an empty array removes the entry.
+  const nlohmann::ordered_json* filtersFor(std::string_view scene) const;
+  void setFilters(std::string_view scene, nlohmann::ordered_json chain, Clock::time_point now);
+  // The transition of scene switches ({"file", "values"}; null: none), checked by whoever applies it.
+  const nlohmann::ordered_json& transition() const { return settings_.transition; }
+  void setTransition(nlohmann::ordered_json transition, Clock::time_point now);
   void tick(Clock::time_point now);  // writes when a burst of changes has settled
   void flush();                      // writes now if anything is unsaved
 

@@ -27,7 +27,7 @@ void KioskCrossfade::step() {
 Crossfade KioskCrossfade::record(VkCommandBuffer cmd, uint32_t slot, VkExtent2D frame) {
   if (!fading()) return {};
   incoming_->recordTarget(cmd, slot, shown_, frame);
-  return {&incoming_->target(), weight_};
+  return {&incoming_->target(), weight_, transition_};
 }
 
 bool KioskCrossfade::finish(std::unique_ptr<SceneRenderer>& showing, FrameInput& input, FrameInput& shown) {

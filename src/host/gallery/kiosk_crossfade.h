@@ -2,8 +2,8 @@
 // Kiosk mode's cross-fade: the scene coming in runs in a second renderer, on its own clock and untouched
 // by input, and its frame is mixed into the output by the fade's weight (the present pass's Crossfade)
 // until the fade is over, when the renderers swap places. The timetable (host/gallery/kiosk_timetable.h) says
-// when a fade begins and how far it is; this owns what it draws. A transition of another kind (a
-// filter between the two frames) replaces the mix here.
+// when a fade begins and how far it is; this owns what it draws. An ISF transition (--transition),
+// when set, draws the two frames together instead of the mix, at the fade's weight.
 #include "frame/frame_input.h"
 #include "host/scene_renderer.h"
 
@@ -25,6 +25,7 @@ class KioskCrossfade {
   void began(const FrameInput& run);
   bool fading() const { return incoming_ && incoming_->hasScene(); }
   float weight() const { return weight_; }
+  void setTransition(IsfTransition* transition) { transition_ = transition; }
   void setWeight(float weight) { weight_ = weight; }
   // One simulation step of the incoming scene, as the showing scene takes one.
   void step();
@@ -43,6 +44,7 @@ class KioskCrossfade {
   FrameInput input_;  // the incoming scene's next step
   FrameInput shown_;  // its last step: what its frame shows
   float weight_ = 0.0f;
+  IsfTransition* transition_ = nullptr;
 };
 
 }  // namespace vitrine::host

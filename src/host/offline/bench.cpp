@@ -25,6 +25,7 @@
 #include "gpu/memory_ledger.h"
 #include "host/user_presets.h"
 #include "host/modes.h"
+#include "host/filters/filter_options.h"
 #include "host/offline/offscreen.h"
 #include "host/present/readback_output.h"
 #include "params/settings_file.h"
@@ -109,6 +110,7 @@ Json benchScene(const gpu::Device& device, const Options& options, const std::st
   OffscreenConfig config{scene, options.size.value_or(VkExtent2D{1920, 1080}), options.time, options.seed,
                          options.reducedMotion, presetsFor(options, scene, true), benchParameters(options, scene, everyScene)};
   config.flashGuard = flashGuardOn(options);
+  config.filters = filterSpecs(options);
   config.presetFiles = presetFilesFor(options, scene);
   Offscreen offscreen(device, config);
   std::optional<ReadbackOutput> published;

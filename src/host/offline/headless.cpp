@@ -10,6 +10,7 @@
 #include "host/input_script.h"
 #include "host/live_link.h"
 #include "host/modes.h"
+#include "host/filters/filter_options.h"
 #include "host/offline/headless_stream.h"
 #include "host/offline/offscreen.h"
 #include "host/present/output_warp_file.h"
@@ -38,6 +39,7 @@ int runHeadless(const Options& options) {
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
   config.flashGuard = flashGuardOn(options);
+  config.filters = filterSpecs(options);
   config.presetFiles = presetFilesFor(options, options.scene);
   if (!options.input.empty()) config.input = loadInputScript(options.input);
   if (!options.outputWarp.empty()) {

@@ -44,6 +44,7 @@ Offscreen::Offscreen(const gpu::Device& device, const OffscreenConfig& config)
       throw Error(fmt::format("Scene {} rejects the preset file's '{}': {}", config.scene, preset.name, why));
   if (auto why = renderer_.applyParameters(config.parameters); !why.empty())
     throw Error(fmt::format("Scene {} rejects {}", config.scene, why));
+  for (const FilterSpec& filter : config.filters) renderer_.filters().add(filter);
   if (live_) live_->setScene(*info);
   input_.time = config.startTime;
   input_.dt = float(step_);

@@ -39,6 +39,7 @@ struct OffscreenConfig {
   bool flashGuard = false;           // --flash-guard (on with --reduced-motion): frames shown through it
   std::vector<params::Preset> presetFiles;  // --preset-file: presets read from files, after the named ones
   std::filesystem::path shaderSources;      // what reloadShaders polls; empty: the source tree's shaders/
+  std::vector<FilterSpec> filters;          // --filter: ISF filters after the scene, in order, with their values
 };
 
 struct FrameTimes {

@@ -118,6 +118,10 @@ int runRecord(const Options& options) {
                             params::snapshot(offscreen.parameters(), false)};
     std::sort(manifest.values.begin(), manifest.values.end());
     manifest.flashGuard = config.flashGuard;
+    if (offscreen.renderer().hasFilters()) {
+      manifest.filters = offscreen.renderer().filters().fingerprints();
+      manifest.filterValues = offscreen.renderer().filters().snapshot();
+    }
     claimFolder(folder, manifest, holdsFrames(folder));
     // What is there already, judged once: frames kept are not rendered again (--checkpoints-only keeps all).
     std::vector<Found> found(end - first, Found::Whole);

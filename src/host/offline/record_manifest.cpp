@@ -41,6 +41,8 @@ std::string fingerprint(std::string_view bytes) {
 std::string manifestText(const RecordManifest& manifest) {
   json values = json::object();
   for (const auto& [key, value] : manifest.values) values[key] = value;
+  json filterValues = json::object();
+  for (const auto& [key, value] : manifest.filterValues) filterValues[key] = value;
   const json document = {
       {"vitrine_record", kManifestVersion},
       {"scene", manifest.scene},
@@ -55,6 +57,8 @@ std::string manifestText(const RecordManifest& manifest) {
       {"format", manifest.format},
       {"input", manifest.input},
       {"values", values},
+      {"filters", manifest.filters},
+      {"filter_values", filterValues},
   };
   return document.dump(2) + "\n";
 }
@@ -92,6 +96,10 @@ RecordManifest parseManifest(std::string_view text, std::string_view name) {
     manifest.flashGuard = document.value("flash_guard", false);
     manifest.format = document.at("format").get<std::string>();
     manifest.input = document.at("input").get<std::string>();
+    if (document.contains("filters")) manifest.filters = document.at("filters").get<std::vector<std::string>>();
+    if (document.contains("filter_values"))
+      for (const auto& [key, value] : document.at("filter_values").items())
+        manifest.filterValues.emplace_back(key, value.get<std::string>());
     for (const auto& [key, value] : document.at("values").items())
       manifest.values.emplace_back(key, value.get<std::string>());
     std::sort(manifest.values.begin(), manifest.values.end());
@@ -116,6 +124,12 @@ std::vector<std::string> manifestDifferences(const RecordManifest& folder, const
   differ("flash guard", folder.flashGuard ? "on" : "off", run.flashGuard ? "on" : "off");
   differ("format", folder.format, run.format);
   differ("input script", folder.input.empty() ? "none" : folder.input, run.input.empty() ? "none" : run.input);
+  const auto chain = [](const std::vector<std::string>& filters) {
+    std::string text;
+    for (const std::string& filter : filters) text += (text.empty() ? "" : ", ") + filter;
+    return text.empty() ? std::string("none") : text;
+  };
+  differ("filters", chain(folder.filters), chain(run.filters));
   if (folder.scene != run.scene) return out;  // other parameters altogether: the scene says it
   auto valueOf = [](const params::KeyValues& values, const std::string& key) -> std::string {
     for (const auto& [k, v] : values)
@@ -128,6 +142,13 @@ std::vector<std::string> manifestDifferences(const RecordManifest& folder, const
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   for (const std::string& key : keys) differ(key, valueOf(folder.values, key), valueOf(run.values, key));
+  if (folder.filters != run.filters) return out;  // other filters: the chain says it
+  keys.clear();
+  for (const auto& [key, value] : folder.filterValues) keys.push_back(key);
+  for (const auto& [key, value] : run.filterValues) keys.push_back(key);
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for (const std::string& key : keys) differ(key, valueOf(folder.filterValues, key), valueOf(run.filterValues, key));
   return out;
 }
 

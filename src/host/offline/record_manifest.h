@@ -1,7 +1,8 @@
 #pragma once
 // What a recording's frames were made with, kept beside them as FOLDER/record.json: the scene, size,
-// frames a second, samples a frame, seed, start time, format, scripted input and every parameter's
-// value. A run into a folder that already holds a film must agree with it, or two films would be
+// frames a second, samples a frame, seed, start time, format, scripted input, every parameter's
+// value, and the ISF filters after the scene (each file's name and fingerprint, their inputs' values
+// as filter.NAME.KEY). A run into a folder that already holds a film must agree with it, or two films would be
 // mixed in one numbered sequence (neon frames 0-14, then kifs frames 15-29); `record` refuses it,
 // naming what differs.
 #include <cstdint>
@@ -25,6 +26,8 @@ struct RecordManifest {
   std::string input;         // the --input script's fingerprint (FNV-1a of its bytes), empty without one
   params::KeyValues values;  // every parameter of the scene with its canonical text, sorted by key
   bool flashGuard = false;   // frames through the flash guard (a manifest from before it: off)
+  std::vector<std::string> filters;  // each --filter in order: "NAME FINGERPRINT" of its file's bytes
+  params::KeyValues filterValues;    // their inputs: filter.NAME.KEY with its exact text
   bool operator==(const RecordManifest&) const = default;
 };
 

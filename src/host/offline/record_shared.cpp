@@ -1,3 +1,4 @@
+#include "host/filters/filter_options.h"
 #include "host/offline/record_shared.h"
 #include "host/user_presets.h"
 
@@ -21,6 +22,7 @@ OffscreenConfig recordConfig(const Options& options) {
                          options.reducedMotion, presetsFor(options, options.scene, true),
                          parametersFor(options, options.scene, true)};
   config.flashGuard = flashGuardOn(options);
+  config.filters = filterSpecs(options);
   config.presetFiles = presetFilesFor(options, options.scene);
   config.step = 1.0 / (options.fps * double(options.spp));
   return config;

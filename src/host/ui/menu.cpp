@@ -301,6 +301,7 @@ MenuChoice drawMenu(const MenuState& state) {
       if (state.panel) choice.edit = state.panel->draw(state.scene.parameters(), state.tierInUse, state.userPresets);
       state.scene.drawPanel();
     }
+    if (state.filters && ImGui::CollapsingHeader("filters and transition###filters")) state.filters();
     if (state.livePanel && section("live input###live", layout.live)) choice.live = state.livePanel->draw(state.live);
     layout.passRows = std::max(layout.passRows, int(state.passes.size()));
     if (section("timings###timings", layout.timings)) drawPassTable(state, layout.passRows);

@@ -8,6 +8,7 @@
 #include "rig/rig_report.h"
 #include "scenes/scene.h"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -69,6 +70,7 @@ struct MenuState {
   UserPresets userPresets;                     // the user's presets of the scene, for the panel's list
   std::span<const rig::RigLine> rig;           // the clocks followed and the outputs published; none: no section
   std::optional<LinkControls> link;            // with --link
+  std::function<void()> filters;               // draws the filters section (its choices kept by the caller)
 };
 
 struct MenuChoice {
