@@ -6,6 +6,7 @@
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "host/scene_renderer.h"
+#include "lights/lights.h"
 #include "live/audio_capture.h"
 #include "live/audio_clip.h"
 #include "live/audio_file_input.h"
@@ -127,7 +128,17 @@ void LiveLink::remap() {
       const bool taken = std::any_of(mappings.begin(), mappings.end(), [&](const live::Mapping& m) { return m.target == mapping->target; });
       if (!taken && live::checkMapping(*mapping, *scene_).empty()) mappings.push_back(std::move(*mapping));
     }
+  if (dmx_) {
+    std::vector<std::string> sources;
+    for (const live::Mapping& mapping : mappings) sources.push_back(mapping.source);
+    dmx_->listen(lights::universesRead(sources));
+  }
   modulator_.setMappings(*scene_, std::move(mappings));
+}
+
+void LiveLink::setDmxInput(lights::Lights* lights) {
+  dmx_ = lights;
+  if (scene_) remap();
 }
 
 void LiveLink::readInputs(double time) {
@@ -163,10 +174,18 @@ void LiveLink::readInputs(double time) {
     linkReading_ = now;
     for (const std::string& line : linkClock_->takeNews()) std::fprintf(stderr, "vitrine: link: %s\n", line.c_str());
   }
+  // DMX in: what the lights thread received since the last step, as it stands now.
+  if (dmx_)
+    for (const lights::Lights::Input& in : dmx_->takeInput()) {
+      dmxSources_.apply(in.universe, in.channels, sources_);
+      dmxTaken_.push_back({in.universe, in.arrived, lights::Lights::clockSeconds()});
+    }
   clocks_.write(sources_, live::MidiInput::clockSeconds());
-  // MIDI learn watches the controls a person moves: MIDI and gamepads (a clock moves by itself).
+  // MIDI learn watches the controls a person moves: MIDI, a desk's DMX faders and gamepads (a clock
+  // moves by itself; a 16-bit pair moves with its channels, which learn maps instead).
   for (const auto& [name, value] : sources_.values()) {
-    if ((!name.starts_with("midi.") && !name.starts_with("pad.")) || name.starts_with("midi.clock.")) continue;
+    const bool control = name.starts_with("midi.") || name.starts_with("pad.") || name.starts_with("dmx.");
+    if (!control || name.starts_with("midi.clock.")) continue;
     const auto seen = controlsSeen_.find(name);
     const float was = seen == controlsSeen_.end() ? (name.find(".axis.") != std::string::npos ? 0.5f : 0.0f) : seen->second;
     const float by = std::abs(value - was);
@@ -202,8 +221,14 @@ void LiveLink::readFileLtc(double fileTime) {
 }
 
 void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* events) {
+  dmxTaken_.clear();
   readInputs(input.time);
   if (!scene_ || &renderer.info() != scene_) return;  // the scene showing has not been given yet
+  // When a desk's frame arrived and when this step took it, on the steady clock: how late DMX in plays.
+  if (events)
+    for (const DmxTaken& taken : dmxTaken_)
+      events->emit(input.time, scene_->name,
+                   {"dmx", {{"universe", double(taken.universe)}, {"arrived", taken.arrived}, {"taken", taken.taken}}});
   if (!vetted_) vet(renderer);
   live::Modulated out = modulator_.step(sources_, renderer.parameters(), input.dt);
   if (!out.values.empty()) {
