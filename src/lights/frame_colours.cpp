@@ -81,14 +81,22 @@ std::vector<glm::vec3> regionMeans(const SmallFrame& frame, int across, int down
 std::vector<ColourCluster> dominantColours(const SmallFrame& frame, size_t k, int iterations) {
   const std::vector<glm::vec3>& pixels = frame.pixels;
   if (pixels.empty() || k == 0) return {};
-  // Seeds: the pixels at k evenly spaced ranks of luminance, so dark, middle and bright parts each get one.
-  std::vector<std::pair<float, size_t>> byLuma(pixels.size());
-  for (size_t i = 0; i < pixels.size(); ++i) byLuma[i] = {glm::dot(pixels[i], glm::vec3(0.2126f, 0.7152f, 0.0722f)), i};
-  std::sort(byLuma.begin(), byLuma.end());
-  std::vector<glm::vec3> centres;
-  for (size_t c = 0; c < k; ++c) {
-    const glm::vec3 seed = pixels[byLuma[(2 * c + 1) * pixels.size() / (2 * k)].second];
-    if (std::none_of(centres.begin(), centres.end(), [&](glm::vec3 other) { return other == seed; })) centres.push_back(seed);
+  // Seeds by farthest points: the pixel farthest from the frame's mean, then each time the pixel farthest
+  // from every seed so far, so well-separated colours each get one (deterministic, unlike k-means++).
+  const auto distance2 = [](glm::vec3 a, glm::vec3 b) { return glm::dot(a - b, a - b); };
+  glm::vec3 mean(0.0f);
+  for (const glm::vec3& p : pixels) mean += p;
+  mean /= float(pixels.size());
+  const auto farthest = [&](const std::vector<float>& d) { return size_t(std::max_element(d.begin(), d.end()) - d.begin()); };
+  std::vector<float> nearest(pixels.size());
+  for (size_t i = 0; i < pixels.size(); ++i) nearest[i] = distance2(pixels[i], mean);
+  std::vector<glm::vec3> centres{pixels[farthest(nearest)]};
+  for (size_t i = 0; i < pixels.size(); ++i) nearest[i] = distance2(pixels[i], centres[0]);
+  while (centres.size() < k) {
+    const size_t next = farthest(nearest);
+    if (!(nearest[next] > 0.0f)) break;  // every pixel is a seed's colour already
+    centres.push_back(pixels[next]);
+    for (size_t i = 0; i < pixels.size(); ++i) nearest[i] = std::min(nearest[i], distance2(pixels[i], pixels[next]));
   }
   std::vector<size_t> members(centres.size());
   std::vector<glm::vec3> sums(centres.size());
@@ -97,20 +105,18 @@ std::vector<ColourCluster> dominantColours(const SmallFrame& frame, size_t k, in
     std::fill(sums.begin(), sums.end(), glm::vec3(0.0f));
     for (const glm::vec3& p : pixels) {
       size_t best = 0;
-      float nearest = std::numeric_limits<float>::max();
-      for (size_t c = 0; c < centres.size(); ++c) {
-        const glm::vec3 d = p - centres[c];
-        if (const float dd = glm::dot(d, d); dd < nearest) nearest = dd, best = c;
-      }
+      float closest = std::numeric_limits<float>::max();
+      for (size_t c = 0; c < centres.size(); ++c)
+        if (const float d = distance2(p, centres[c]); d < closest) closest = d, best = c;
       sums[best] += p;
       ++members[best];
     }
     bool moved = false;
     for (size_t c = 0; c < centres.size(); ++c) {
       if (members[c] == 0) continue;
-      const glm::vec3 mean = sums[c] / float(members[c]);
-      moved = moved || mean != centres[c];
-      centres[c] = mean;
+      const glm::vec3 centre = sums[c] / float(members[c]);
+      moved = moved || centre != centres[c];
+      centres[c] = centre;
     }
     if (!moved) break;
   }

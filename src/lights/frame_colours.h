@@ -34,9 +34,9 @@ struct ColourCluster {
   glm::vec3 colour{0.0f};
   float share = 0.0f;  // of the frame's pixels
 };
-// The `k` dominant colours, most of the frame first: k-means in linear RGB from k colours spread over
-// the frame's luminance (deterministic: the same frame gives the same colours), at most `iterations`
-// rounds. Fewer than k when the frame has fewer distinct colours.
+// The `k` dominant colours, most of the frame first: k-means in linear RGB seeded by farthest points
+// (deterministic: the same frame gives the same colours), at most `iterations` rounds. Fewer than k
+// when the frame has fewer distinct colours.
 std::vector<ColourCluster> dominantColours(const SmallFrame& frame, size_t k, int iterations = 8);
 
 }  // namespace vitrine::lights

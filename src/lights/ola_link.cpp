@@ -41,9 +41,9 @@ struct OlaLink::Impl {
 };
 
 OlaLink::OlaLink(uint16_t port, Received received) : impl_(std::make_unique<Impl>()) {
-  // OLA logs to stderr at its own levels; only its warnings are worth a line of Vitrine's console.
+  // OLA warns on stderr at every refused connection: a line every retry. Vitrine says the state itself.
   static std::once_flag logging;
-  std::call_once(logging, [] { ola::InitLogging(ola::OLA_LOG_WARN, ola::OLA_LOG_STDERR); });
+  std::call_once(logging, [] { ola::InitLogging(ola::OLA_LOG_FATAL, ola::OLA_LOG_STDERR); });
   impl_->port = port;
   impl_->received = std::move(received);
 }

@@ -13,7 +13,7 @@ set -u
 vitrine=$1; probe=$2; out=$3
 rm -rf "$out"; mkdir -p "$out"
 command -v olad >/dev/null || { echo "SKIP: olad is not installed (Debian's ola)"; exit 77; }
-olad_pid=; watch_pid=; run_pid=
+olad_pid=; watch_pid=; run_pid=; app=; xvfb=
 trap 'kill $olad_pid $watch_pid $run_pid 2>/dev/null; wait 2>/dev/null' EXIT
 fail() {
   echo "FAIL: $*"
@@ -145,6 +145,30 @@ frames_in=$(sed -nE 's/.* ([0-9]+) in.*/\1/p' "$out/flood_run.log" | tail -n 1)
 python3 -c "import sys; s = $end - $start; print(f'flood: {int(open(\"$out/flood.txt\").read())} frames sent by the flooder, {$frames_in} taken by the run, 120 frames in {s:.2f} s'); sys.exit(s > 6)" ||
   fail "the flood slowed the run"
 [ "${frames_in:-0}" -gt 100 ] || fail "the flood did not reach the run"
+
+# The gallery: the lights follow its frames (the guarded frame read back at 64x36, never waited for),
+# and L blacks them out and back.
+. "$(dirname "$0")/virtual_display.sh"
+start_display 320x180
+trap 'kill $olad_pid $watch_pid $run_pid $app $xvfb 2>/dev/null; wait 2>/dev/null' EXIT
+DISPLAY=$display XDG_CONFIG_HOME=$out/gallery "$vitrine" --scene bloom --size 320x180 --validate --set tier=low \
+  --lights "$out/patch.json" >"$out/gallery.log" 2>&1 &
+app=$!
+watch 1
+wait_for_showing "$out/gallery.log"
+lit() { for _ in $(seq 300); do [ "$(channels "$1")" = "$2" ] && return 0; sleep 0.05; done; return 1; }
+lit 1-3 219,227,237 || fail "the gallery's crystal fixture shows $(channels 1-3)"
+strip=$(channels 11-34)
+[ "$(tr -d ',0' <<<"$strip")" != "" ] || fail "the gallery's wall strip is dark: the readback gave nothing"
+python3 "$(dirname "$0")/xtest.py" "$display" focus:160,90 key:l || fail "xtest"
+lit 1-34 "$(printf '0%.0s,' $(seq 33))0" || fail "blackout left $(channels 1-34)"
+python3 "$(dirname "$0")/xtest.py" "$display" key:l || fail "xtest"
+lit 1-3 219,227,237 || fail "after the blackout the crystal shows $(channels 1-3)"
+kill -TERM $app
+wait $app || fail "the gallery: exit $?"
+app=
+grep -q "validation messages" "$out/gallery.log" && fail "validation messages"
+echo "gallery: the crystal and the wall strip ($strip) lit, blacked out and back; $(sed -n 's/^vitrine: lights: [0-9]* fixtures/&/p' "$out/gallery.log" | tail -n 1)"
 
 # Hostile patches: refused at start, naming the file and line.
 refuse() {  # refuse NAME TEXT REGEX

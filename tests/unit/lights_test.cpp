@@ -216,7 +216,7 @@ TEST(LightsGuard, ALightFlashesAtMostThreeTimesASecond) {
   ASSERT_GT(shownAt.size(), 30u);  // it still changes, about 6 times a second
   for (size_t i = host::flash::kMaxTransitions; i < shownAt.size(); ++i)
     EXPECT_GT(shownAt[i] - shownAt[i - host::flash::kMaxTransitions], 1.0f) << "transition " << i;
-  EXPECT_GT(guard.held(), 300u);
+  EXPECT_GT(guard.held(), 150u);  // of the 440 changes asked for, at most 6 a second shown
   // A saturated red against dark red counts as a red flash though its luminance hardly changes.
   LightGuard red;
   int redShown = 0;
