@@ -131,6 +131,8 @@ void LiveLink::remap() {
   if (dmx_) {
     std::vector<std::string> sources;
     for (const live::Mapping& mapping : mappings) sources.push_back(mapping.source);
+    sources.push_back(dmx_->patch().masterSource);
+    sources.push_back(dmx_->patch().blackoutSource);
     dmx_->listen(lights::universesRead(sources));
   }
   modulator_.setMappings(*scene_, std::move(mappings));
@@ -180,6 +182,7 @@ void LiveLink::readInputs(double time) {
       dmxSources_.apply(in.universe, in.channels, sources_);
       dmxTaken_.push_back({in.universe, in.arrived, lights::Lights::clockSeconds()});
     }
+  if (dmx_) playLights();
   clocks_.write(sources_, live::MidiInput::clockSeconds());
   // MIDI learn watches the controls a person moves: MIDI, a desk's DMX faders and gamepads (a clock
   // moves by itself; a 16-bit pair moves with its channels, which learn maps instead).
@@ -296,6 +299,18 @@ void LiveLink::vet(SceneRenderer& renderer) {
                  live::formatMapping(mapping).c_str(), std::string(scene_->name).c_str(), why.c_str());
   }
   if (setAside) modulator_.setMappings(*scene_, std::move(kept));
+}
+
+// The patch's master and blackout sources, when they move (so the L key's blackout holds until the
+// blackout source itself changes).
+void LiveLink::playLights() {
+  const auto moved = [&](const std::string& name, std::optional<float>& last) -> std::optional<float> {
+    const auto value = sources_.values().find(name);
+    if (name.empty() || value == sources_.values().end() || last == value->second) return std::nullopt;
+    return last = value->second;
+  };
+  if (const auto master = moved(dmx_->patch().masterSource, lightsMaster_)) dmx_->setMaster(*master);
+  if (const auto blackout = moved(dmx_->patch().blackoutSource, lightsBlackout_)) dmx_->setBlackout(*blackout >= 0.5f);
 }
 
 std::vector<std::string> LiveLink::mappingLines() const {

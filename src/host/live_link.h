@@ -130,6 +130,8 @@ class LiveLink {
     double arrived, taken;  // steady clock seconds
   };
   std::vector<DmxTaken> dmxTaken_;  // this step's DMX frames, for --events
+  void playLights();
+  std::optional<float> lightsMaster_, lightsBlackout_;  // the master and blackout sources as last applied
   std::optional<rig::LinkReading> linkReading_;
   LiveClocks clocks_;
   uint64_t ltcFed_ = 0;  // samples of the --audio-in file given to the LTC reader

@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "isf/isf_json_place.h"
 #include "lights/signals.h"
+#include "live/mapping.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -130,7 +131,7 @@ Patch parsePatch(std::string_view text, const std::string& name) {
   }
   const Reader reader(text, name);
   if (!json.is_object()) reader.fail({}, "a patch is an object {\"fixtures\": [...], ...}");
-  reader.onlyKeys(json, {}, {"grid", "master", "input", "olad", "fixtures"});
+  reader.onlyKeys(json, {}, {"grid", "master", "master_source", "blackout_source", "input", "olad", "fixtures"});
   Patch patch;
   if (json.contains("grid")) {
     const Json& grid = json["grid"];
@@ -143,6 +144,13 @@ Patch parsePatch(std::string_view text, const std::string& name) {
     if (!master.is_number() || !(master.get<double>() >= 0.0 && master.get<double>() <= 1.0))
       reader.fail({std::string("master")}, "\"master\" is the master dimmer, a number from 0 to 1");
     patch.master = master.get<float>();
+  }
+  for (auto [key, field] : {std::pair{"master_source", &patch.masterSource}, std::pair{"blackout_source", &patch.blackoutSource}}) {
+    if (!json.contains(key)) continue;
+    const Json& source = json[key];
+    const std::string why = source.is_string() ? live::checkSourceName(source.get<std::string>()) : "a live source's name";
+    if (!why.empty()) reader.fail({std::string(key)}, fmt::format("\"{}\" is a live source (docs/LIVE.md): {}", key, why));
+    *field = source.get<std::string>();
   }
   if (json.contains("olad"))
     patch.oladPort = uint16_t(reader.whole(json["olad"], {std::string("olad")}, "olad's RPC port", 1, 65535));

@@ -3,7 +3,8 @@
 // fixtures on which DMX universes and addresses, the region grid the frame is measured over, the
 // universes a lighting desk's faders come in on, and olad's port. docs/LIGHTS.md has the format.
 //
-//   {"grid": [8, 1], "master": 1, "input": [1], "olad": 9010,
+//   {"grid": [8, 1], "master": 1, "master_source": "dmx.1.512", "blackout_source": "osc.blackout",
+//    "input": [1], "olad": 9010,
 //    "fixtures": [{"name": "wall", "type": "pixels", "count": 8, "universe": 0, "address": 1, "signal": "regions"},
 //                 {"name": "crystal", "type": "rgb", "universe": 0, "address": 25, "signal": "bloom.phase"}]}
 #include <cstdint>
@@ -43,6 +44,8 @@ inline int lights(const Fixture& fixture) { return fixture.type == FixtureType::
 struct Patch {
   int gridWidth = 8, gridHeight = 1;  // the regions the frame is measured over
   float master = 1.0f;                // the master dimmer's value at start, 0..1
+  std::string masterSource;           // a live source that moves the master (dmx.1.512, midi.cc.1.7, osc.master)
+  std::string blackoutSource;         // a live source that blacks out above one half (osc.blackout)
   std::vector<uint32_t> input;        // universes whose channels are the dmx.* sources
   uint16_t oladPort = 9010;           // olad's RPC port on this machine
   std::vector<Fixture> fixtures;

@@ -91,13 +91,15 @@ PY
 done
 
 # DMX in: a fader on universe 2 channel 1 plays kifs' fold (soft takeover: from 0 to full it passes the
-# value, so it takes over); the step that takes the frame is the one whose parameter moves.
-"$vitrine" --headless --scene kifs --size 64x36 --frames 150 --validate --lights "$out/patch.json" \
+# value, so it takes over); the step that takes the frame is the one whose parameter moves. Channel 9 is
+# the patch's blackout source: the run's last lights are dark.
+sed 's/"grid": \[8, 1\],/"grid": [8, 1], "blackout_source": "dmx.2.9",/' "$out/patch.json" >"$out/patch_in.json"
+"$vitrine" --headless --scene kifs --size 64x36 --frames 150 --validate --lights "$out/patch_in.json" \
   --map 'dmx.2.1=kifs.fold:0.9:1.2' --events "$out/dmx_in.jsonl" --out "$out/dmx_in.exr" >"$out/dmx_in.log" 2>&1 &
 run_pid=$!
 for _ in $(seq 500); do grep -q "olad connected" "$out/dmx_in.log" && break; sleep 0.01; done
 sleep 1  # past the first frames (pipelines built), at the run's steady 60 steps a second
-sent=$("$probe" "$port" set 2 255) || fail "ola_probe set"
+sent=$("$probe" "$port" set 2 255,0,0,0,0,0,0,0,255) || fail "ola_probe set"
 wait $run_pid || fail "dmx in: exit $?"
 run_pid=
 python3 - "$out/dmx_in.jsonl" "$sent" <<'PY' || fail "dmx in"
@@ -114,6 +116,8 @@ to_step = dmx[0]["taken"] - sent
 assert to_step < 2 / 60, f"injected to taken {to_step * 1000:.1f} ms: more than two steps"
 print(f"dmx in: injected -> arrived {to_olad * 1000:.2f} ms, -> taken by the step {to_step * 1000:.2f} ms; fold 1.2 at t={mapped[0]['t']:.3f}")
 PY
+for _ in $(seq 100); do [ "$(channels 1-34 | tr -d ',0')" = "" ] && break; sleep 0.02; done
+[ "$(channels 1-34 | tr -d ',0')" = "" ] || fail "the blackout source left $(channels 1-34)"
 
 # olad killed and back mid-run: one line each way, the run ends normally and its last frame lights.
 "$vitrine" --headless --scene bloom --size 64x36 --frames 200 --set fill=0.35 --set decay_venting=0 --validate --lights "$out/patch.json" \

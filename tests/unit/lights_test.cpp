@@ -34,6 +34,7 @@ std::string refusal(const std::string& text) {
 TEST(LightsPatch, ReadsEveryPart) {
   const Patch patch = parsePatch(R"({
   "grid": [8, 2], "master": 0.5, "input": [1, 2, 1], "olad": 9100,
+  "master_source": "dmx.1.512", "blackout_source": "osc.blackout",
   "fixtures": [
     {"name": "wall", "type": "pixels", "count": 16, "universe": 0, "address": 1, "signal": "regions"},
     {"type": "rgbw", "universe": 0, "address": 49, "signal": "dominant", "index": 1},
@@ -44,12 +45,14 @@ TEST(LightsPatch, ReadsEveryPart) {
   EXPECT_FLOAT_EQ(patch.master, 0.5f);
   EXPECT_EQ(patch.input, (std::vector<uint32_t>{1, 2}));
   EXPECT_EQ(patch.oladPort, 9100);
+  EXPECT_EQ(patch.masterSource, "dmx.1.512");
+  EXPECT_EQ(patch.blackoutSource, "osc.blackout");
   ASSERT_EQ(patch.fixtures.size(), 3u);
   EXPECT_EQ(patch.fixtures[0].name, "wall");
   EXPECT_EQ(channels(patch.fixtures[0]), 48);
   EXPECT_EQ(patch.fixtures[1].name, "fixture 2");
   EXPECT_EQ(patch.fixtures[1].index, 1);
-  EXPECT_EQ(patch.fixtures[1].line, 5);
+  EXPECT_EQ(patch.fixtures[1].line, 6);
   EXPECT_EQ(channels(patch.fixtures[2]), 1);
 }
 
@@ -68,8 +71,13 @@ TEST(LightsPatch, RefusesHostilePatchesNamingTheLine) {
             "room.json:3: b (channels 8..11 of universe 4) overlaps a (channels 10..12, line 2)");
   EXPECT_EQ(refusal("{\"fixtures\": [{\"type\": \"rgb\", \"universe\": 0, \"address\": 1, \"signal\": \"sun\"}]}"),
             "room.json:1: unknown signal \"sun\" (known: regions, dominant, bloom.phase, bloom.chamber, bloom.climax, neon.tubes, neon.glow)");
-  EXPECT_EQ(refusal("{\"grid\": [8, 1],\n \"fixturs\": []}"), "room.json:2: unknown key 'fixturs' (known: grid, master, input, olad, fixtures)");
-  EXPECT_EQ(refusal("{\"universe\": -1}"), "room.json:1: unknown key 'universe' (known: grid, master, input, olad, fixtures)");
+  EXPECT_EQ(refusal("{\"grid\": [8, 1],\n \"fixturs\": []}"), "room.json:2: unknown key 'fixturs' (known: grid, master, master_source, blackout_source, input, olad, fixtures)");
+  EXPECT_EQ(refusal("{\"universe\": -1}"),
+            "room.json:1: unknown key 'universe' (known: grid, master, master_source, blackout_source, input, olad, fixtures)");
+  EXPECT_EQ(refusal("{\"master_source\": \"dmx.1.600\"}"),
+            "room.json:1: \"master_source\" is a live source (docs/LIVE.md): 'dmx.1.600' is not a source: DMX sources are "
+            "dmx.UNIVERSE.CHANNEL (channel 1..512) and dmx16.UNIVERSE.CHANNEL (the 16-bit pair of CHANNEL and the next, "
+            "1..511), universe 0..65535");
   EXPECT_EQ(refusal("{\"input\": [70000]}"), "room.json:1: universe 70000 is outside 0..65535");
   EXPECT_EQ(refusal("{\"grid\": [1000, 1]}"), "room.json:1: the grid's width 1000 is outside 1..64");
   EXPECT_EQ(refusal("[1, 2]"), "room.json:1: a patch is an object {\"fixtures\": [...], ...}");

@@ -137,8 +137,9 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     settings_.remember(info.name, std::move(values), Clock::now());
   }
   live_ = std::make_unique<GalleryLive>(options, settings_, audio_, firstScene.name);
-  if (!options.lights.empty()) {
-    lights_ = std::make_unique<GalleryLights>(device_, options.lights, [this] {
+  // --lights, else the settings file's patch.
+  if (const std::string patch = options.lights.empty() ? settings_.lightsPatch() : options.lights; !patch.empty()) {
+    lights_ = std::make_unique<GalleryLights>(device_, patch, [this] {
       lights::Signals signals;
       if (hasScene_) renderer_->scene().lightSignals(signals);
       return signals;
