@@ -90,6 +90,25 @@ PY
   echo "$1: crystal $(channels 1-3), chamber $(channels 4), climax $(channels 5)"
 done
 
+# Neon: its tubes along a 32-pixel strip, each cell in a tube's own colour (pink, cyan or amber) where
+# the autopilot's tubes are over it, the rest dark.
+cat >"$out/neon.json" <<JSON
+{"olad": $port, "fixtures": [{"name": "strip", "type": "pixels", "count": 32, "universe": 1, "address": 1, "signal": "neon.tubes"},
+                             {"name": "glow", "type": "rgb", "universe": 1, "address": 97, "signal": "neon.glow"}]}
+JSON
+"$vitrine" --headless --scene neon --size 64x36 --frames 120 --validate --lights "$out/neon.json" --out "$out/neon.exr" \
+  >"$out/neon.log" 2>&1 || fail "neon: exit $?"
+for _ in $(seq 100); do [ "$(channels 100-102)" = "0,0,0" ] && break; sleep 0.02; done  # our patch's last frame
+python3 - "$(channels 1-99)" <<'PY' || fail "neon: the tubes' strip"
+import sys
+v = [int(x) for x in sys.argv[1].split(",")]
+cells = [tuple(v[i:i + 3]) for i in range(0, 96, 3)]
+lit = [c for c in cells if any(c)]
+assert 0 < len(lit) < 32, ("lit cells", cells)
+assert any(v[96:99]), ("glow", v[96:99])
+print(f"neon: {len(lit)} of 32 strip cells lit by tubes, glow {tuple(v[96:99])}")
+PY
+
 # DMX in: a fader on universe 2 channel 1 plays kifs' fold (soft takeover: from 0 to full it passes the
 # value, so it takes over); the step that takes the frame is the one whose parameter moves. Channel 9 is
 # the patch's blackout source: the run's last lights are dark.

@@ -1,7 +1,7 @@
 // ola_probe PORT COMMAND ...: OLA's own client library against an olad on 127.0.0.1:PORT (OLA's command
 // line tools know only the default port 9010, and the tests start olad on a free one).
 //   get UNIVERSE                      prints the universe's 512 values, comma-separated
-//   set UNIVERSE V1,V2,...            sends one frame and prints the time it was handed over (steady clock s)
+//   set UNIVERSE V1,V2,...            sends one frame and prints the time it was sent (steady clock s)
 //   flood UNIVERSE SECONDS            sends frames as fast as the connection takes them; prints how many
 //   watch UNIVERSE SECONDS            prints every frame that comes for the universe, a line each
 //                                     ("TIME V1,V2,...,V512", steady clock seconds), for SECONDS
@@ -70,9 +70,10 @@ int main(int argc, char** argv) {
   } else if (command == "set" && argc >= 5) {
     ola::DmxBuffer buffer;
     buffer.SetFromString(argv[4]);
+    const double sent = now();  // before the frame leaves: the latency measured from here includes the send
     client.SendDMX(universe, buffer, ola::client::SendDMXArgs(ola::NewSingleCallback(
                                          +[](ola::io::SelectServer* ss, const ola::client::Result&) { ss->Terminate(); }, &server)));
-    std::printf("%.6f\n", now());
+    std::printf("%.6f\n", sent);
     std::fflush(stdout);
     server.Run();  // until olad took it
   } else if (command == "flood" && argc >= 5) {
