@@ -13,11 +13,11 @@ namespace vitrine::lights {
 
 namespace {
 
-template <class Pixel> SmallFrame reduce(uint32_t width, uint32_t height, Pixel pixel) {
+template <class Pixel> SmallFrame reduce(uint32_t width, uint32_t height, uint32_t maxWidth, uint32_t maxHeight, Pixel pixel) {
   SmallFrame small;
   if (width == 0 || height == 0) return small;
-  small.width = std::min(width, kSmallWidth);
-  small.height = std::min(height, kSmallHeight);
+  small.width = std::min(width, maxWidth);
+  small.height = std::min(height, maxHeight);
   small.pixels.assign(size_t(small.width) * small.height, glm::vec3(0.0f));
   std::vector<uint32_t> counts(small.pixels.size(), 0);
   for (uint32_t y = 0; y < height; ++y) {
@@ -36,7 +36,7 @@ template <class Pixel> SmallFrame reduce(uint32_t width, uint32_t height, Pixel 
 }  // namespace
 
 SmallFrame reduceImage(const ImageRgba& image) {
-  return reduce(image.width, image.height, [&](uint32_t x, uint32_t y) {
+  return reduce(image.width, image.height, kRegionWidth, kRegionHeight, [&](uint32_t x, uint32_t y) {
     const float* p = image.at(x, y);
     return glm::vec3(std::isfinite(p[0]) ? p[0] : 0.0f, std::isfinite(p[1]) ? p[1] : 0.0f, std::isfinite(p[2]) ? p[2] : 0.0f);
   });
@@ -45,10 +45,16 @@ SmallFrame reduceImage(const ImageRgba& image) {
 SmallFrame reduceSrgb8(const uint8_t* bytes, uint32_t width, uint32_t height, uint32_t stride) {
   std::array<float, 256> linear;
   for (size_t i = 0; i < linear.size(); ++i) linear[i] = srgbToLinear(float(i) / 255.0f);
-  return reduce(width, height, [&](uint32_t x, uint32_t y) {
+  return reduce(width, height, kRegionWidth, kRegionHeight, [&](uint32_t x, uint32_t y) {
     const uint8_t* p = bytes + size_t(y) * stride + size_t(x) * 4;
     return glm::vec3(linear[p[0]], linear[p[1]], linear[p[2]]);
   });
+}
+
+SmallFrame shrink(const SmallFrame& frame, uint32_t width, uint32_t height) {
+  if (frame.width <= width && frame.height <= height) return frame;
+  return reduce(frame.width, frame.height, width, height,
+                [&](uint32_t x, uint32_t y) { return frame.pixels[size_t(y) * frame.width + x]; });
 }
 
 std::vector<glm::vec3> regionMeans(const SmallFrame& frame, int across, int down) {

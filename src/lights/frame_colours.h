@@ -19,12 +19,16 @@ struct SmallFrame {
   std::vector<glm::vec3> pixels;
 };
 
-// The frame reduced to at most kSmallWidth x kSmallHeight, each pixel the mean of the frame's pixels
-// whose centres fall in it (colours clamped to 0..1 first, as a display shows them).
+// The frame reduced to at most kRegionWidth x kRegionHeight, each pixel the mean of the frame's pixels
+// whose centres fall in it (colours clamped to 0..1 first, as a display shows them): what the regions
+// are measured over. The dominant colours are found over a further reduction to kSmallWidth x kSmallHeight.
+inline constexpr uint32_t kRegionWidth = 256, kRegionHeight = 144;
 inline constexpr uint32_t kSmallWidth = 64, kSmallHeight = 36;
 SmallFrame reduceImage(const ImageRgba& image);
 // The same from 8-bit sRGB RGBA rows (a readback of the shown frame), `stride` bytes apart.
 SmallFrame reduceSrgb8(const uint8_t* bytes, uint32_t width, uint32_t height, uint32_t stride);
+// A small frame reduced further, to at most width x height.
+SmallFrame shrink(const SmallFrame& frame, uint32_t width, uint32_t height);
 
 // The mean colour of each of `across` x `down` regions, row after row (a region's pixels are those whose
 // centres fall in it; a grid finer than the frame repeats the nearest pixel).

@@ -36,6 +36,17 @@ void Lights::publish(SmallFrame frame, Signals sceneSignals) {
   {
     std::lock_guard lock(mutex_);
     published_.emplace(std::move(frame), std::move(sceneSignals));
+    raw_.reset();
+    ++publishedSerial_;
+  }
+  wake_.notify_all();
+}
+
+void Lights::publishSrgb8(std::vector<uint8_t> rgba, uint32_t width, uint32_t height, Signals sceneSignals) {
+  {
+    std::lock_guard lock(mutex_);
+    raw_.emplace(RawFrame{std::move(rgba), width, height}, std::move(sceneSignals));
+    published_.reset();
     ++publishedSerial_;
   }
   wake_.notify_all();
@@ -99,7 +110,8 @@ Signals Lights::signalsOf(const SmallFrame& frame, const Signals& scene) const {
   if (frame.width > 0) {
     signals.set("regions", regionMeans(frame, patch_.gridWidth, patch_.gridHeight));
     std::vector<glm::vec3> dominant;
-    for (const ColourCluster& cluster : dominantColours(frame, kDominantColours)) dominant.push_back(cluster.colour);
+    for (const ColourCluster& cluster : dominantColours(shrink(frame, kSmallWidth, kSmallHeight), kDominantColours))
+      dominant.push_back(cluster.colour);
     signals.set("dominant", std::move(dominant));
   }
   return signals;
@@ -165,6 +177,7 @@ void Lights::run() {
     std::vector<uint32_t> universes;
     bool relisten = false;
     std::optional<std::pair<SmallFrame, Signals>> taken;
+    std::optional<std::pair<RawFrame, Signals>> takenRaw;
     uint64_t serial = 0;
     {
       std::lock_guard lock(mutex_);
@@ -174,9 +187,13 @@ void Lights::run() {
       for (uint32_t u : extraListen_)
         if (std::find(universes.begin(), universes.end(), u) == universes.end()) universes.push_back(u);
       if (published_) taken = std::move(published_), published_.reset();
+      if (raw_) takenRaw = std::move(raw_), raw_.reset();
       serial = publishedSerial_;
     }
     if (relisten) link.listen(universes);
+    if (takenRaw)  // decoded here rather than on the frame thread
+      taken.emplace(reduceSrgb8(takenRaw->first.rgba.data(), takenRaw->first.width, takenRaw->first.height, takenRaw->first.width * 4),
+                    std::move(takenRaw->second));
     if (taken) signals_ = signalsOf(taken->first, taken->second), lit = true;
     now = seconds();
     if (lit && now >= nextFrame) {  // nothing before the first frame: a fixture keeps what it had

@@ -40,6 +40,9 @@ class Lights {
 
   // The frame thread: the frame reduced to a small image, and the scene's own signals. The newest wins.
   void publish(SmallFrame frame, Signals sceneSignals);
+  // The same from a read-back of the shown frame, 8-bit sRGB RGBA rows tightly packed: reduced on the
+  // lights thread.
+  void publishSrgb8(std::vector<uint8_t> rgba, uint32_t width, uint32_t height, Signals sceneSignals);
   void setMaster(float master);
   float master() const { return master_.load(); }
   void setBlackout(bool on);
@@ -84,6 +87,11 @@ class Lights {
   std::condition_variable wake_;
   bool stop_ = false;
   std::optional<std::pair<SmallFrame, Signals>> published_;
+  struct RawFrame {
+    std::vector<uint8_t> rgba;
+    uint32_t width = 0, height = 0;
+  };
+  std::optional<std::pair<RawFrame, Signals>> raw_;
   uint64_t publishedSerial_ = 0, sentSerial_ = 0, tries_ = 0;
   std::vector<uint32_t> extraListen_;
   bool listenChanged_ = true;

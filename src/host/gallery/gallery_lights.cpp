@@ -2,7 +2,9 @@
 
 #include "host/scene_renderer.h"
 
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 namespace vitrine::host {
 namespace {
@@ -13,8 +15,12 @@ class LightsSink final : public FrameSink {
       : lights_(lights), sceneSignals_(std::move(sceneSignals)) {}
   void frame(const PublishedFrame& frame) override {
     ++frames_;
-    lights_.publish(lights::reduceSrgb8(reinterpret_cast<const uint8_t*>(frame.bytes.data()), frame.width, frame.height, frame.stride),
-                    sceneSignals_());
+    // A copy of the rows (147 KiB) and nothing more on the frame thread: the lights thread decodes them.
+    std::vector<uint8_t> rgba(size_t(frame.width) * frame.height * 4);
+    const auto* bytes = reinterpret_cast<const uint8_t*>(frame.bytes.data());
+    for (uint32_t y = 0; y < frame.height; ++y)
+      std::copy_n(bytes + size_t(y) * frame.stride, size_t(frame.width) * 4, rgba.data() + size_t(y) * frame.width * 4);
+    lights_.publishSrgb8(std::move(rgba), frame.width, frame.height, sceneSignals_());
   }
   Output::Health health() const override {
     const lights::Lights::Counts counts = lights_.counts();
@@ -31,7 +37,7 @@ class LightsSink final : public FrameSink {
 
 GalleryLights::GalleryLights(const gpu::Device& device, const std::string& patchFile, SceneSignals sceneSignals)
     : lights_(std::make_unique<lights::Lights>(lights::loadPatch(patchFile))) {
-  output_ = std::make_unique<ReadbackOutput>(device, "lights", maths::OutputWarp{}, VkExtent2D{lights::kSmallWidth, lights::kSmallHeight},
+  output_ = std::make_unique<ReadbackOutput>(device, "lights", maths::OutputWarp{}, VkExtent2D{lights::kRegionWidth, lights::kRegionHeight},
                                              std::make_unique<LightsSink>(*lights_, std::move(sceneSignals)));
 }
 

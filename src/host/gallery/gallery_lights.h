@@ -1,8 +1,8 @@
 #pragma once
 // The room's lights in the gallery (docs/LIGHTS.md): the lights thread (lights/lights.h) and the small
 // readback that feeds it. Each frame, after the flash guard, the shown frame is drawn at
-// lights::kSmallWidth x kSmallHeight (one bilinear tap a texel: 2,304 taps) into an image of its own
-// and copied back without waiting (a ReadbackOutput); the newest copy that has finished, with the
+// lights::kRegionWidth x kRegionHeight (256x144, one bilinear tap a texel) into an image of its own and
+// copied back without waiting (a ReadbackOutput, 144 KiB); the newest copy that has finished, with the
 // scene's own signals, goes to the lights thread, which measures regions and dominant colours there.
 #include "host/present/readback_output.h"
 #include "lights/lights.h"
