@@ -338,6 +338,7 @@ std::vector<std::string> LiveLink::status() const {
   else lines.push_back("audio in: off");
   if (midiFile_) lines.push_back("MIDI in: " + config_.midiFile);
   if (midiPorts_) lines.push_back(midiPorts_->status());
+  if (dmx_) lines.push_back(dmx_->status());
   for (const rig::ClockStatus& clock : clockStatuses()) {
     const rig::RigLine line = rig::describeClock(clock);
     lines.push_back(line.name + ": " + line.text);

@@ -193,6 +193,15 @@ app=
 grep -q "validation messages" "$out/gallery.log" && fail "validation messages"
 echo "gallery: the crystal and the wall strip ($strip) lit, blacked out and back; $(sed -n 's/^vitrine: lights: [0-9]* fixtures/&/p' "$out/gallery.log" | tail -n 1)"
 
+# No olad at all: one line, the run goes on and ends normally, its lights counted as not sent.
+nobody=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+printf '{"olad": %s, "fixtures": [{"type": "rgb", "universe": 1, "address": 1, "signal": "regions"}]}' "$nobody" >"$out/absent.json"
+"$vitrine" --headless --scene kifs --size 64x36 --frames 200 --validate --lights "$out/absent.json" --out "$out/absent.exr" \
+  >"$out/absent.log" 2>&1 || fail "without olad: exit $?"
+[ "$(grep -c 'vitrine: lights' "$out/absent.log")" = 1 ] || fail "without olad, not one line: $(grep 'lights' "$out/absent.log")"
+grep -q "not connected; 0 frames sent.*were not sent" "$out/absent.log" || fail "without olad: $(tail -n 3 "$out/absent.log")"
+echo "no olad: $(grep 'vitrine: lights' "$out/absent.log") (a 200-frame run, 3.3 s)"
+
 # Hostile patches: refused at start, naming the file and line.
 refuse() {  # refuse NAME TEXT REGEX
   printf '%s' "$2" >"$out/$1.json"
