@@ -135,6 +135,11 @@ constexpr Flag kFlags[] = {
      .help = "Turns, mirrors, crops, corner-pins and edge-blends the output for a projector "
              "(docs/INSTALLATIONS.md).",
      .store = text<&Options::outputWarp>},
+    {.name = "--lights", .modes = kGallery | kHeadless, .metavar = "FILE.json", .value = Value::File,
+     .help = "Lights the room through olad (the Open Lighting Architecture): the patch maps the scenes' light "
+             "signals to DMX fixtures and names the universes whose channels are the dmx.* sources "
+             "(docs/LIGHTS.md). Headless, the last frame's lights are sent.",
+     .store = text<&Options::lights>},
 
     {.name = "--stream", .modes = kGallery | kHeadless, .metavar = "URL", .value = Value::Text,
      .help = "Streams the picture and its sound live, h264 and AAC at 60 frames a second: srt://HOST:PORT and "

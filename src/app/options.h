@@ -99,6 +99,7 @@ struct Options {
   bool remoteSaves = false;          // --remote-saves: remote changes are written to the settings file too
   // Live input (docs/LIVE.md).
   std::vector<std::string> maps;     // --map FILE or --map SOURCE=[SCENE.]KEY[:LO:HI] ..., in order
+  std::string lights;                // --lights FILE.json: the lights' patch (docs/LIGHTS.md)
   std::string audioIn;               // --audio-in FILE: a sound file drives the audio sources
   std::string audioInDevice;         // --audio-in-device NAME|INDEX|default (gallery): capture from it
   std::string midiIn;                // --midi-in FILE.mid (headless, record): MIDI events on simulation time

@@ -6,6 +6,7 @@
 #include "core/bounded_file.h"
 #include "core/error.h"
 #include "host/scene_renderer.h"
+#include "lights/lights.h"
 #include "live/audio_capture.h"
 #include "live/audio_clip.h"
 #include "live/audio_file_input.h"
@@ -127,7 +128,19 @@ void LiveLink::remap() {
       const bool taken = std::any_of(mappings.begin(), mappings.end(), [&](const live::Mapping& m) { return m.target == mapping->target; });
       if (!taken && live::checkMapping(*mapping, *scene_).empty()) mappings.push_back(std::move(*mapping));
     }
+  if (dmx_) {
+    std::vector<std::string> sources;
+    for (const live::Mapping& mapping : mappings) sources.push_back(mapping.source);
+    sources.push_back(dmx_->patch().masterSource);
+    sources.push_back(dmx_->patch().blackoutSource);
+    dmx_->listen(lights::universesRead(sources));
+  }
   modulator_.setMappings(*scene_, std::move(mappings));
+}
+
+void LiveLink::setDmxInput(lights::Lights* lights) {
+  dmx_ = lights;
+  if (scene_) remap();
 }
 
 void LiveLink::readInputs(double time) {
@@ -174,10 +187,19 @@ void LiveLink::readInputs(double time) {
     linkReading_ = now;
     for (const std::string& line : linkClock_->takeNews()) std::fprintf(stderr, "vitrine: link: %s\n", line.c_str());
   }
+  // DMX in: what the lights thread received since the last step, as it stands now.
+  if (dmx_)
+    for (const lights::Lights::Input& in : dmx_->takeInput()) {
+      dmxSources_.apply(in.universe, in.channels, sources_);
+      dmxTaken_.push_back({in.universe, in.arrived, lights::Lights::clockSeconds()});
+    }
+  if (dmx_) playLights();
   clocks_.write(sources_, live::MidiInput::clockSeconds());
-  // MIDI learn watches the controls a person moves: MIDI and gamepads (a clock moves by itself).
+  // MIDI learn watches the controls a person moves: MIDI, a desk's DMX faders and gamepads (a clock
+  // moves by itself; a 16-bit pair moves with its channels, which learn maps instead).
   for (const auto& [name, value] : sources_.values()) {
-    if ((!name.starts_with("midi.") && !name.starts_with("pad.")) || name.starts_with("midi.clock.")) continue;
+    const bool control = name.starts_with("midi.") || name.starts_with("pad.") || name.starts_with("dmx.");
+    if (!control || name.starts_with("midi.clock.")) continue;
     const auto seen = controlsSeen_.find(name);
     const float was = seen == controlsSeen_.end() ? (name.find(".axis.") != std::string::npos ? 0.5f : 0.0f) : seen->second;
     const float by = std::abs(value - was);
@@ -213,10 +235,16 @@ void LiveLink::readFileLtc(double fileTime) {
 }
 
 void LiveLink::step(SceneRenderer& renderer, FrameInput& input, EventSink* events) {
+  dmxTaken_.clear();
   readInputs(input.time);
   input.soundWave = soundWave_;
   input.soundSpectrum = soundSpectrum_;
   if (!scene_ || &renderer.info() != scene_) return;  // the scene showing has not been given yet
+  // When a desk's frame arrived and when this step took it, on the steady clock: how late DMX in plays.
+  if (events)
+    for (const DmxTaken& taken : dmxTaken_)
+      events->emit(input.time, scene_->name,
+                   {"dmx", {{"universe", double(taken.universe)}, {"arrived", taken.arrived}, {"taken", taken.taken}}});
   if (!vetted_) vet(renderer);
   live::Modulated out = modulator_.step(sources_, renderer.parameters(), input.dt);
   if (!out.values.empty()) {
@@ -286,6 +314,18 @@ void LiveLink::vet(SceneRenderer& renderer) {
   if (setAside) modulator_.setMappings(*scene_, std::move(kept));
 }
 
+// The patch's master and blackout sources, when they move (so the L key's blackout holds until the
+// blackout source itself changes).
+void LiveLink::playLights() {
+  const auto moved = [&](const std::string& name, std::optional<float>& last) -> std::optional<float> {
+    const auto value = sources_.values().find(name);
+    if (name.empty() || value == sources_.values().end() || last == value->second) return std::nullopt;
+    return last = value->second;
+  };
+  if (const auto master = moved(dmx_->patch().masterSource, lightsMaster_)) dmx_->setMaster(*master);
+  if (const auto blackout = moved(dmx_->patch().blackoutSource, lightsBlackout_)) dmx_->setBlackout(*blackout >= 0.5f);
+}
+
 std::vector<std::string> LiveLink::mappingLines() const {
   std::vector<std::string> lines;
   for (const live::Mapping& mapping : modulator_.mappings()) lines.push_back(live::formatMapping(mapping));
@@ -311,6 +351,7 @@ std::vector<std::string> LiveLink::status() const {
   else lines.push_back("audio in: off");
   if (midiFile_) lines.push_back("MIDI in: " + config_.midiFile);
   if (midiPorts_) lines.push_back(midiPorts_->status());
+  if (dmx_) lines.push_back(dmx_->status());
   for (const rig::ClockStatus& clock : clockStatuses()) {
     const rig::RigLine line = rig::describeClock(clock);
     lines.push_back(line.name + ": " + line.text);

@@ -6,6 +6,7 @@
 // record runs; headless and record take only files, so a run is frame-exact and reproducible.
 #include "frame/frame_input.h"
 #include "host/live_clocks.h"
+#include "lights/dmx_sources.h"
 #include "live/modulator.h"
 #include "live/source_bank.h"
 #include "rig/clock_status.h"
@@ -32,6 +33,10 @@ class AudioCapture;
 class SmfPlayer;
 class MidiInput;
 }  // namespace vitrine::live
+
+namespace vitrine::lights {
+class Lights;
+}
 
 namespace vitrine::host {
 
@@ -83,7 +88,10 @@ class LiveLink {
   // The gallery's switch: capture from `device` (empty: the default monitor) or stop. A sound file
   // given with --audio-in stays what feeds the sources.
   void setAudioCapture(bool on, const std::string& device);
-  // MIDI learn: the MIDI control or gamepad input that moved most since the last call, if any moved.
+  // DMX in (--lights): the universes the patch and the mappings name are read from `lights` (it must
+  // outlive this; null: none) as the dmx.* sources.
+  void setDmxInput(lights::Lights* lights);
+  // MIDI learn: the MIDI control, DMX channel or gamepad input that moved most since the last call, if any moved.
   std::optional<std::string> takeMovedControl();
   std::vector<std::string> status() const;  // one line per input, for the panel
   // The show's clocks this run follows (Link, MIDI clock, timecode), each as it stands now.
@@ -116,6 +124,15 @@ class LiveLink {
   std::unique_ptr<live::SmfPlayer> midiFile_;
   std::unique_ptr<live::MidiInput> midiPorts_;
   std::unique_ptr<rig::LinkClock> linkClock_;
+  lights::Lights* dmx_ = nullptr;
+  lights::DmxSources dmxSources_;
+  struct DmxTaken {
+    uint32_t universe;
+    double arrived, taken;  // steady clock seconds
+  };
+  std::vector<DmxTaken> dmxTaken_;  // this step's DMX frames, for --events
+  void playLights();
+  std::optional<float> lightsMaster_, lightsBlackout_;  // the master and blackout sources as last applied
   std::optional<rig::LinkReading> linkReading_;
   LiveClocks clocks_;
   uint64_t ltcFed_ = 0;  // samples of the --audio-in file given to the LTC reader

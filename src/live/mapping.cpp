@@ -57,13 +57,16 @@ std::string sourceFamilies() {
   return "sources are audio.bass|mid|high|level|onset|beat|tempo, midi.cc.CHANNEL.NUMBER, "
          "midi.note.CHANNEL.NUMBER, midi.gate.CHANNEL.NUMBER, midi.clock.tempo|beat|phase|bar|running, "
          "mtc.seconds|minutes|locked, ltc.seconds|minutes|locked, pad.N.axis.K, pad.N.button.K, osc.NAME, "
-         "lfo.sine|triangle|saw|square.PERIOD and link.tempo|beat|phase|bar|playing|pulse";
+         "lfo.sine|triangle|saw|square.PERIOD, link.tempo|beat|phase|bar|playing|pulse, dmx.UNIVERSE.CHANNEL and "
+         "dmx16.UNIVERSE.CHANNEL";
 }
 
 }  // namespace
 
 Takeover Mapping::takeoverMode() const {
-  return takeover.value_or(source.starts_with("midi.cc.") ? Takeover::Soft : Takeover::Jump);
+  // A fader or knob on a desk: it may stand elsewhere than the parameter when the mapping begins.
+  const bool control = source.starts_with("midi.cc.") || source.starts_with("dmx.") || source.starts_with("dmx16.");
+  return takeover.value_or(control ? Takeover::Soft : Takeover::Jump);
 }
 
 std::string checkSourceName(std::string_view name) {
@@ -109,6 +112,12 @@ std::string checkSourceName(std::string_view name) {
   if (family == "link") {
     if (parts.size() == 2 && oneOf(parts[1], kLinkSources)) return {};
     return bad("Ableton Link sources are link.tempo, .beat, .phase, .bar, .playing and .pulse");
+  }
+  if (family == "dmx" || family == "dmx16") {
+    // Universes as olad numbers them; channels from 1, a 16-bit pair's coarse one below 512.
+    if (parts.size() == 3 && wholeNumber(parts[1], 0, 65535) && wholeNumber(parts[2], 1, family == "dmx" ? 512 : 511)) return {};
+    return bad("DMX sources are dmx.UNIVERSE.CHANNEL (channel 1..512) and dmx16.UNIVERSE.CHANNEL (the 16-bit pair of "
+               "CHANNEL and the next, 1..511), universe 0..65535");
   }
   return bad(sourceFamilies());
 }

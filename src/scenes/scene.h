@@ -19,6 +19,10 @@
 #include <string_view>
 #include <vector>
 
+namespace vitrine::lights {
+class Signals;
+}
+
 namespace vitrine {
 
 // The device, the program library and the scene's declared images (declare images there; the host owns
@@ -62,6 +66,9 @@ class Scene {
   // one that keeps nothing from one frame to the next says yes and walks nothing.
   virtual bool checkpoints() const { return false; }
   virtual void simulationState(StateArchive& /*state*/) {}
+  // The light signals of the scene's own story (lights/signals.h names them: bloom's phase colour,
+  // neon's tubes), from its CPU state after the last update; the frame's colours are the host's.
+  virtual void lightSignals(lights::Signals& /*out*/) {}
 };
 
 // How a scene is made. Each scene's NAME_scene.h declares NAME::create; the factory table, generated

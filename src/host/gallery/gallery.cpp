@@ -139,6 +139,15 @@ Gallery::Gallery(const Options& options, const SceneInfo* named, std::vector<Pla
     settings_.remember(info.name, std::move(values), Clock::now());
   }
   live_ = std::make_unique<GalleryLive>(options, settings_, audio_, firstScene.name);
+  // --lights, else the settings file's patch.
+  if (const std::string patch = options.lights.empty() ? settings_.lightsPatch() : options.lights; !patch.empty()) {
+    lights_ = std::make_unique<GalleryLights>(device_, patch, [this] {
+      lights::Signals signals;
+      if (hasScene_) renderer_->scene().lightSignals(signals);
+      return signals;
+    });
+    live_->link().setDmxInput(&lights_->lights());
+  }
   if (options.kiosk) {
     if (chasedByTimecode(playlist)) {
       std::vector<rig::Timecode> starts;
@@ -197,6 +206,7 @@ int Gallery::run() {
     if (health.kind != "window")
       std::fprintf(stderr, "vitrine: %s: %s; %llu frames handed over, %llu dropped\n", health.kind.c_str(),
                    health.line.c_str(), (unsigned long long)health.frames, (unsigned long long)health.dropped);
+  if (lights_) std::fprintf(stderr, "vitrine: %s\n", lights_->lights().status().c_str());
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     if (auto note = screenshots_.collect(slot)) std::printf("vitrine: %s\n", note->c_str());
   if (auto finished = capture_.takeFinished()) std::printf("vitrine: %s\n", finished->c_str());
@@ -259,12 +269,14 @@ void Gallery::frame() {
   }
   // The other outputs show the same frame, each through its own warp.
   const auto outputsDrawn = outputs_.record(cmd, slot, *renderer_, fade, vsync_, kAcquireStage, shown_);
+  if (lights_) lights_->record(cmd, slot, *renderer_, fade, kAcquireStage, shown_);
   slotSerial_[slot] = sceneSerial_;
   overlay_.record(cmd, *image, &renderer_->timer());
   current.submit(kAcquireStage, swapchain_.renderFinished(*image), outputsDrawn);
   cpuMs_ = secondsBetween(start, Clock::now()) * 1e3;
   swapchain_.present(*image);
   outputs_.present();
+  if (lights_) lights_->present();
   // One line once the window shows its first frame: what is showing where (and what the gallery's
   // checks wait for instead of guessing how long a start takes).
   if (frameCount_++ == 0) {

@@ -22,6 +22,7 @@
 #include "host/cursor_tracker.h"
 #include "host/gallery/fixed_step.h"
 #include "host/gallery/frame_slot.h"
+#include "host/gallery/gallery_lights.h"
 #include "host/gallery/gallery_live.h"
 #include "host/gallery/gallery_settings.h"
 #include "host/gallery/kiosk_crossfade.h"
@@ -193,6 +194,7 @@ class Gallery {
   std::string chaseSaid_;                // the chase's state as last said on the console
   RemoteSession remote_;  // --remote: the clients, and the values they set
   std::vector<rig::RigLine> rig_;  // this frame's rigLines(), for the menu and the remote page
+  std::unique_ptr<GalleryLights> lights_;  // --lights: DMX out, and in for live_ (which goes first)
   std::unique_ptr<GalleryLive> live_;  // audio, MIDI, gamepads and OSC through the mappings
 };
 

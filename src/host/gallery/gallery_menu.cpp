@@ -91,6 +91,9 @@ void Gallery::handleKeys() {
       case GLFW_KEY_F7:
         startSetup();
         break;
+      case GLFW_KEY_L:  // the lights' blackout (--lights)
+        if (lights_) note_ = lights_->toggleBlackout(), noted_ = Clock::now();
+        break;
       case GLFW_KEY_F5:  // the scene from its first frame, its parameters kept
         nextScene_ = &renderer_->info();
         break;

@@ -100,6 +100,13 @@ void GallerySettings::setAudioInput(bool on, std::string device, Clock::time_poi
   saver_.markDirty(now);
 }
 
+std::string GallerySettings::lightsPatch() const {
+  const auto lights = settings_.unknown.find("lights");
+  if (lights == settings_.unknown.end() || !lights->is_object()) return {};
+  const auto patch = lights->find("patch");
+  return patch != lights->end() && patch->is_string() ? patch->get<std::string>() : std::string();
+}
+
 const nlohmann::ordered_json* GallerySettings::warpFor(std::string_view output) const {
   const auto it = settings_.outputs.find(std::string(output));
   return it == settings_.outputs.end() ? nullptr : &it->second;

@@ -43,6 +43,8 @@ class GallerySettings {
   // Outputs: each one's warp as the file keeps it (null when it has none), checked by whoever applies
   // it; an empty (identity) warp removes the entry.
   const nlohmann::ordered_json* warpFor(std::string_view output) const;
+  // The lights' patch the settings file names ({"lights": {"patch": FILE}}, docs/LIGHTS.md); empty: none.
+  std::string lightsPatch() const;
   void setWarp(std::string_view output, nlohmann::ordered_json warp, Clock::time_point now);
   // ISF filters: each scene's chain as the file keeps it (an array of {"file", "values"}; null when it has
   // none), checked by whoever applies it; an empty array removes the entry.

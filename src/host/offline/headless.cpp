@@ -26,6 +26,7 @@
 #include <thread>
 
 #include "host/remote_link.h"
+#include "lights/lights.h"
 #include <fmt/format.h>
 
 namespace vitrine::host {
@@ -50,6 +51,11 @@ int runHeadless(const Options& options) {
   if (!options.events.empty()) config.events = &events.emplace(options.events);
   const std::unique_ptr<LiveLink> live = offlineLiveInput(options, options.scene);
   config.live = live.get();
+  // --lights: started before the first frame, so olad is found while the frames render.
+  std::unique_ptr<lights::Lights> lightsOut;
+  if (!options.lights.empty()) lightsOut = std::make_unique<lights::Lights>(lights::loadPatch(options.lights));
+  if (lightsOut && live) live->setDmxInput(lightsOut.get());
+  lights::Signals sceneLights;
   std::optional<audio::OfflineAudio> sound;  // outlives the offscreen run and its scene
   if (!options.audioOut.empty() || !options.stream.empty()) config.audio = &sound.emplace(options.time);
   ImageRgba image;
@@ -90,11 +96,13 @@ int runHeadless(const Options& options) {
         offscreen.addInput(std::move(applied.actions), remote->pointer(offscreen.size()));
         remote->publish(offscreen.renderer());
       }
-      if (remote || stream) std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
+      // Live input from outside (a phone, a stream's viewers, a lighting desk) plays at a window's pace.
+      if (remote || stream || lightsOut) std::this_thread::sleep_until(due += std::chrono::microseconds(16667));
       offscreen.renderFrame();
     }
     if (stream) stream->finish(rendered);
     image = offscreen.readback();
+    if (lightsOut) offscreen.renderer().scene().lightSignals(sceneLights);
     if (!options.savePreset.empty()) saveRunPreset(options, offscreen.parameters());  // the values it ended with
     const gpu::MemoryTally end = gpu::liveDeviceMemory();
     if (rendered > warmFrames)
@@ -107,6 +115,11 @@ int runHeadless(const Options& options) {
                    options.input.c_str(), options.time + (double(rendered) - 1.0) / 60.0);
   }
   writeImage(out, image);
+  if (lightsOut) {
+    lightsOut->publish(lights::reduceImage(image), std::move(sceneLights));
+    const bool sent = lightsOut->flush(3.0);
+    std::printf("%s%s\n", lightsOut->status().c_str(), sent ? "" : " (the last frame's lights were not sent)");
+  }
   if (events) events->close();
   if (sound && !options.audioOut.empty()) audio::writeWav(options.audioOut, sound->render(double(rendered) / 60.0));
   std::printf("wrote %s (%ux%u, scene %s, %u frames from t=%.3f s, seed %u) on %s\n", out.c_str(), image.width,

@@ -10,6 +10,7 @@
 #include "gpu/buffer_commands.h"
 #include "gpu/program_variants.h"
 #include "gpu/readback_ring.h"
+#include "lights/signals.h"
 #include "scenes/bloom/bloom_math.h"
 #include "scenes/bloom/settings.h"
 #include "shaders/bloom/chamber_push.h"
@@ -215,6 +216,13 @@ class BloomScene final : public Scene {
     return std::pow(double(v.lattice), 3.0) * (1.0 + double(v.samples) / 256.0);
   }
   double takeGivenUpSeconds() override { return std::exchange(givenUpSeconds_, 0.0); }
+  // The room follows the crystal: the chamber glow's colour (flipping with the phase, as the picture's),
+  // how full of vapour the chamber glows, and 1 through the climax.
+  void lightSignals(lights::Signals& out) override {
+    out.set("bloom.phase", std::vector<glm::vec3>{tint()});
+    out.set("bloom.chamber", std::min(float(stats_.peak), 1.0f));
+    out.set("bloom.climax", detector_.climax() ? 1.0f : 0.0f);
+  }
 
   std::string checkParameters() const override {
     if (std::string order = thresholdOrderError(thresholds()); !order.empty()) return order;

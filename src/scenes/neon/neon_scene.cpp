@@ -16,6 +16,7 @@
 #include "scenes/neon/particle_engine.h"
 #include "scenes/neon/settings.h"
 #include "scenes/neon/tube_light.h"
+#include "lights/signals.h"
 #include "maths/color.h"
 #include "maths/hash.h"
 #include "shaders/neon/facade_blocks.h"
@@ -25,6 +26,9 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <glm/common.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
@@ -158,6 +162,7 @@ class NeonScene final : public Scene {
     return double(v.chains) * double(v.particles);
   }
   void drawPanel() override;
+  void lightSignals(lights::Signals& out) override;
   bool checkpoints() const override { return true; }
   void simulationState(StateArchive& state) override;
 
@@ -492,6 +497,28 @@ void NeonScene::record(const FrameContext& frame) {
   clear_.push(frame.cmd, gpu::Bindings().storageImage("target", glow.view()));
   clear_.dispatchOver(frame.cmd, extent_);
   glowCleared_ = true;
+}
+
+// The tubes for a strip along the room: the facade's width in kStripCells cells, each lit by the tubes
+// whose heads are over it (a pen where it is; a free head where its launch has carried it, the flow's
+// swirl left out), in the tube's own colour at its brightness (the gas dims below kFadeLife); and the
+// light of all the tubes together.
+void NeonScene::lightSignals(lights::Signals& out) {
+  static constexpr int kStripCells = 32;
+  std::vector<glm::vec3> strip(kStripCells, glm::vec3(0.0f));
+  glm::vec3 glow(0.0f);
+  const glm::vec3 colours[3] = {settings_.colourA, settings_.colourB, settings_.colourC};
+  for (const HeadState& head : engine_->latest().heads) {
+    if (chainState(head) == ChainState::Inactive) continue;
+    const glm::vec3 light = colours[tubeColour(head.serial)] * std::clamp(head.life / kFadeLife, 0.0f, 1.0f);
+    const float age = float(head.steps) / 60.0f;
+    const float x = head.origin.x + ((head.flags & kHeadSteered) ? 0.0f : head.launch.x * age);
+    const int cell = int(std::floor((x + kFacadeHalfWidth) / (2.0f * kFacadeHalfWidth) * float(kStripCells)));
+    strip[size_t(std::clamp(cell, 0, kStripCells - 1))] += light;
+    glow += light;
+  }
+  out.set("neon.tubes", std::move(strip));
+  out.set("neon.glow", std::vector<glm::vec3>{glm::min(glow / 3.0f, glm::vec3(1.0f))});
 }
 
 void NeonScene::drawPanel() {
