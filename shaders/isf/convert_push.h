@@ -1,4 +1,4 @@
-// The push block of isf/convert.comp, one declaration for both sides: isf/gpu/isf_runner.cpp fills it.
+// The push block of shaders/isf/convert.comp, one declaration for both sides: isf/gpu/isf_runner.cpp fills it.
 #ifndef ISF_CONVERT_PUSH_H
 #define ISF_CONVERT_PUSH_H
 #include "../common/interop.h"

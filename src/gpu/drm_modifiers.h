@@ -10,7 +10,7 @@
 
 namespace vitrine::gpu::drm {
 
-// DRM's modifier values (drm_fourcc.h): a plain row-major layout, and "no explicit modifier".
+// DRM's modifier values (libdrm's fourcc header): a plain row-major layout, and "no explicit modifier".
 inline constexpr uint64_t kLinear = 0;
 inline constexpr uint64_t kInvalid = 0x00ffffffffffffffULL;
 

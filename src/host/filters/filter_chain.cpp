@@ -138,7 +138,9 @@ void FilterChain::record(VkCommandBuffer cmd, uint32_t slot, gpu::PassTimer* tim
                       .timeDelta = input.dt,
                       .frameIndex = input.frame,
                       .date = realtime ? isf::wallClockDate() : isf::simulatedDate(input.time),
-                      .sources = sources};
+                      .sources = sources,
+                      .wave = input.soundWave,
+                      .spectrum = input.soundSpectrum};
     filter->runner->record(context, run, frame);
   }
 }

@@ -17,7 +17,7 @@
 //     rgba8 as a GL host's buffers are, rgba32f when FLOAT; PERSISTENT ones as history pairs (the host
 //     clears a new pair and flips it each frame);
 //   - images stored bottom row first, as ISF (GL) expects: an input frame is flipped on its way in and
-//     the output on its way out (isf/convert.comp), so no shader needs a flip;
+//     the output on its way out (shaders/isf/convert.comp), so no shader needs a flip;
 //   - ISF computes on display values (sRGB-encoded, as a GL host shows them): the frames handed in are
 //     encoded on the way in, and the output decoded to linear light on the way out.
 //

@@ -30,7 +30,7 @@ void addPieceFactories(std::span<Piece* const> pieces);
 // their factories.
 void addStartupPieces(int argc, const char* const* argv);
 // The folders the settings file at `settings` names in its top-level "pieces" array ("pieces":
-// ["/home/me/isf"]); none when it has none or cannot be read.
+// ["~/isf"]); none when it has none or cannot be read.
 std::vector<std::filesystem::path> settingsPieceFolders(const std::filesystem::path& settings);
 
 // How often a running piece looks at its file's time (one stat call; never a wait on the frame).
