@@ -31,7 +31,7 @@ TEST(Help, ListsWhatExists) {
     EXPECT_FALSE(does.empty()) << key;
     keys.push_back(key);
   }
-  for (const char* key : {"Tab", "F1, ?", "P", ".", "[  ]", "\\", "F5", "V", "M", "F11", "F12", "Esc"})
+  for (const char* key : {"Tab", "F1, ?", "P", ".", "[  ]", "\\", "F5", "V", "M", "F11", "F12", "L", "Esc"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
 }
 

@@ -157,6 +157,7 @@ std::span<const std::pair<std::string_view, std::string_view>> galleryKeys() {
       {"F7", "projector setup: drag the corners, Enter keeps"},
       {"F9", "capture every frame to an EXR sequence, or stop"},
       {"F12", "screenshot (EXR and PNG)"},
+      {"L", "the lights' blackout, or back (--lights)"},
       {"Esc", "quit"},
   };
   return keys;
