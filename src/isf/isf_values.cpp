@@ -141,7 +141,10 @@ params::Schema makeSchema(const Document& document, const std::vector<std::strin
     params::Param param;
     switch (input.type) {
       case InputType::Float: {
-        const auto [lo, hi] = rangeOf(input, 0);
+        // Plain variables, not a structured binding: clang 14 (the sanitizer and fuzz builds) cannot
+        // capture a binding in a lambda.
+        const std::pair<float, float> range = rangeOf(input, 0);
+        const float lo = range.first, hi = range.second;
         param = inputParam(
             meta, params::Kind::Float, i, defaults,
             [lo, hi](std::string_view text, InputValue& v, std::string* e) { return params::parseFloatText(text, lo, hi, v.number[0], e); },
@@ -212,8 +215,8 @@ params::Schema makeSchema(const Document& document, const std::vector<std::strin
         continue;
       }
       case InputType::Point2D: {
-        const auto [xlo, xhi] = rangeOf(input, 0);
-        const auto [ylo, yhi] = rangeOf(input, 1);
+        const std::pair<float, float> xRange = rangeOf(input, 0), yRange = rangeOf(input, 1);
+        const float xlo = xRange.first, xhi = xRange.second, ylo = yRange.first, yhi = yRange.second;
         if (int(i) == drag) meta.flags |= params::kTransient;  // the drag's: a position, not a setting
         param = inputParam(
             meta, params::Kind::Custom, i, defaults,

@@ -156,12 +156,16 @@ for _ in $(seq 100); do [ "$(channels 1-3)" = "244,102,5" ] && break; sleep 0.02
 [ "$(channels 1-3)" = "244,102,5" ] || fail "after olad's restart the crystal shows $(channels 1-3)"
 echo "restart: $(grep -c 'vitrine: lights' "$out/restart.log") lines said; lit again after olad came back"
 
-# A flood on the input universe: the paced run of 120 frames (2 s) still takes about 2 s.
-"$probe" "$port" flood 2 4 >"$out/flood.txt" 2>"$out/flood.log" &
-flood_pid=$!
+# A flood on the input universe, from the moment the run has registered for it (a busy olad serves a
+# new client late): the paced run of 120 frames (2 s) still takes about 2 s.
 start=$(date +%s.%N)
 "$vitrine" --headless --scene kifs --size 64x36 --frames 120 --validate --lights "$out/patch.json" \
-  --map 'dmx.2.7=kifs.fold:0.9:1.2' --out "$out/flood.exr" >"$out/flood_run.log" 2>&1 || fail "flood: exit $?"
+  --map 'dmx.2.7=kifs.fold:0.9:1.2' --out "$out/flood.exr" >"$out/flood_run.log" 2>&1 &
+run_pid=$!
+for _ in $(seq 500); do grep -q "olad connected" "$out/flood_run.log" && break; sleep 0.01; done
+"$probe" "$port" flood 2 3 >"$out/flood.txt" 2>"$out/flood.log" &
+flood_pid=$!
+wait $run_pid || fail "flood: exit $?"
 end=$(date +%s.%N)
 wait $flood_pid
 frames_in=$(sed -nE 's/.* ([0-9]+) in.*/\1/p' "$out/flood_run.log" | tail -n 1)
