@@ -34,37 +34,12 @@ std::pair<float, float> rangeOf(const Input& input, int component) {
 params::Param inputParam(params::Meta meta, params::Kind kind, size_t index, const Values& defaults,
                          std::function<bool(std::string_view, InputValue&, std::string*)> parse,
                          std::function<std::string(const InputValue&)> format) {
-  params::Param param;
-  param.key = std::move(meta.key);
-  param.label = std::move(meta.label);
-  param.help = std::move(meta.help);
-  param.group = std::move(meta.group);
-  param.flags = meta.flags;
-  param.kind = kind;
-  param.owner = &typeid(Values);
-  param.defaultText = format(defaults.inputs.at(index));
-  param.parse = [index, parse](void* settings, std::string_view text, std::string* error) {
+  const auto at = [index](void* settings) -> InputValue* {
     auto& inputs = static_cast<Values*>(settings)->inputs;
-    if (index >= inputs.size()) return false;
-    InputValue value = inputs[index];
-    std::string why;
-    if (!parse(text, value, &why)) {
-      if (error) *error = why;
-      return false;
-    }
-    inputs[index] = std::move(value);
-    return true;
+    return index < inputs.size() ? &inputs[index] : nullptr;
   };
-  param.format = [index, format](const void* settings) {
-    const auto& inputs = static_cast<const Values*>(settings)->inputs;
-    return index < inputs.size() ? format(inputs[index]) : std::string();
-  };
-  param.copy = [index](void* to, const void* from) {
-    auto& target = static_cast<Values*>(to)->inputs;
-    const auto& source = static_cast<const Values*>(from)->inputs;
-    if (index < target.size() && index < source.size()) target[index] = source[index];
-  };
-  return param;
+  return params::detail::bindAt<InputValue>(std::move(meta), kind, typeid(Values), at, defaults.inputs.at(index),
+                                            std::move(parse), std::move(format));
 }
 
 std::function<double(const void*)> numberOf(size_t index, int component = 0) {

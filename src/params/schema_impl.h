@@ -1,10 +1,12 @@
 #pragma once
-// The builder templates of schema.h. Every builder goes through detail::bindField, so every kind gets
-// the same guarantees: a refused value never touches the field, the default text comes from S{}, and
-// the owner type is recorded for Schema::add to check.
+// The builder templates of schema.h. Every builder goes through detail::bindField (and a run-time
+// schema's through detail::bindAt, under it), so every kind gets the same guarantees: a refused value
+// never touches the field, the default text comes from the defaults, and the owner type is recorded for
+// Schema::add to check.
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -17,10 +19,14 @@ namespace vitrine::params {
 
 namespace detail {
 
-template <typename S, typename T>
-Param bindField(Meta meta, Kind kind, T S::*field, std::function<bool(std::string_view, T&, std::string*)> parseValue,
-                std::function<std::string(const T&)> formatValue) {
-  static_assert(std::is_default_constructible_v<S>, "a settings struct needs defaults: S{} gives them");
+// A parameter over the field `at` finds in a settings struct of type `owner` (null: the struct has no
+// such field, and nothing is parsed, formatted or copied), whose default is `defaultValue`. A member
+// field (bindField) and a field known only at run time (an ISF file's inputs, by index) share it. `at`
+// only finds the field: formatting and copying never write through it.
+template <typename T>
+Param bindAt(Meta meta, Kind kind, const std::type_info& owner, std::function<T*(void*)> at, const T& defaultValue,
+             std::function<bool(std::string_view, T&, std::string*)> parseValue,
+             std::function<std::string(const T&)> formatValue) {
   static_assert(std::is_copy_assignable_v<T>, "applyValues saves and restores fields by copy");
   Param param;
   param.key = std::move(meta.key);
@@ -29,26 +35,40 @@ Param bindField(Meta meta, Kind kind, T S::*field, std::function<bool(std::strin
   param.group = std::move(meta.group);
   param.flags = meta.flags;
   param.kind = kind;
-  param.owner = &typeid(S);
-  param.defaultText = formatValue(S{}.*field);
-  param.parse = [field, parseValue](void* settings, std::string_view text, std::string* error) {
+  param.owner = &owner;
+  param.defaultText = formatValue(defaultValue);
+  param.parse = [at, parseValue](void* settings, std::string_view text, std::string* error) {
+    T* field = at(settings);
+    if (!field) return false;
     // Parse into a copy: a parser that fails half-way must not leave a half-written field.
-    T value = static_cast<S*>(settings)->*field;
+    T value = *field;
     std::string why;
     if (!parseValue(text, value, &why)) {
       if (error) *error = why;
       return false;
     }
-    static_cast<S*>(settings)->*field = std::move(value);
+    *field = std::move(value);
     return true;
   };
-  param.format = [field, formatValue](const void* settings) {
-    return formatValue(static_cast<const S*>(settings)->*field);
+  param.format = [at, formatValue](const void* settings) {
+    const T* field = at(const_cast<void*>(settings));
+    return field ? formatValue(*field) : std::string();
   };
-  param.copy = [field](void* to, const void* from) {
-    static_cast<S*>(to)->*field = static_cast<const S*>(from)->*field;
+  param.copy = [at](void* to, const void* from) {
+    T* target = at(to);
+    const T* source = at(const_cast<void*>(from));
+    if (target && source) *target = *source;
   };
   return param;
+}
+
+template <typename S, typename T>
+Param bindField(Meta meta, Kind kind, T S::*field, std::function<bool(std::string_view, T&, std::string*)> parseValue,
+                std::function<std::string(const T&)> formatValue) {
+  static_assert(std::is_default_constructible_v<S>, "a settings struct needs defaults: S{} gives them");
+  return bindAt<T>(
+      std::move(meta), kind, typeid(S), [field](void* settings) { return &(static_cast<S*>(settings)->*field); },
+      S{}.*field, std::move(parseValue), std::move(formatValue));
 }
 
 template <typename S, typename T> std::function<double(const void*)> numberOf(T S::*field) {

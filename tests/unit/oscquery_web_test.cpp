@@ -2,7 +2,7 @@
 // namespace beside the page, the rule for clients without the token (OSC's network rule, and never a
 // browser's request), LISTEN and IGNORE with values streamed as binary OSC, and OSC sent over the socket.
 #include "remote/web_server.h"
-#include "remote_test_support.h"
+#include "remote_http_client.h"
 
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
@@ -14,7 +14,6 @@
 #include <sys/socket.h>
 
 #include <cstdlib>
-#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -33,20 +32,8 @@ using testing::limitReads;
 const std::string kQueryToken = "fedcba9876543210fedcba9876543210";
 
 
-http::response<http::string_body> queryGet(uint16_t port, const std::string& target,
-                                          const std::map<http::field, std::string>& headers = {}) {
-  net::io_context io;
-  tcp::socket socket(io);
-  socket.connect({net::ip::make_address("127.0.0.1"), port});
-  limitReads(socket);
-  http::request<http::empty_body> get{http::verb::get, target, 11};
-  get.set(http::field::host, "127.0.0.1:" + std::to_string(port));
-  for (const auto& [field, value] : headers) get.set(field, value);
-  http::write(socket, get);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(socket, buffer, response);
-  return response;
+http::response<http::string_body> queryGet(uint16_t port, const std::string& target, const testing::Headers& headers = {}) {
+  return testing::request(port, target, http::verb::get, headers);
 }
 
 // An OSCQuery client's socket: JSON commands out, binary OSC values in.
@@ -91,22 +78,8 @@ class OscQueryClient {
 };
 
 unsigned queryUpgradeStatus(uint16_t port, const std::string& target, bool withOrigin = false) {
-  net::io_context io;
-  tcp::socket socket(io);
-  socket.connect({net::ip::make_address("127.0.0.1"), port});
-  limitReads(socket);
-  http::request<http::empty_body> upgrade{http::verb::get, target, 11};
-  upgrade.set(http::field::host, "127.0.0.1");
-  upgrade.set(http::field::upgrade, "websocket");
-  upgrade.set(http::field::connection, "Upgrade");
-  upgrade.set(http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
-  upgrade.set(http::field::sec_websocket_version, "13");
-  if (withOrigin) upgrade.set(http::field::origin, "http://attacker.example");
-  http::write(socket, upgrade);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(socket, buffer, response);
-  return response.result_int();
+  return testing::upgradeStatus(port, target,
+                                withOrigin ? testing::Headers{{"Origin", "http://attacker.example"}} : testing::Headers{});
 }
 
 class OscQueryWeb : public ::testing::Test {
@@ -126,7 +99,7 @@ TEST_F(OscQueryWeb, TheNamespaceBesideThePage) {
   EXPECT_TRUE(nlohmann::json::parse(tokenless.body())["CONTENTS"]["vitrine"]["CONTENTS"].contains("kifs"));
   // The URL the gallery prints stays the page; JSON where a holder of the token asks for it.
   EXPECT_EQ(queryGet(server.port(), "/?token=" + kQueryToken)[http::field::content_type], "text/html; charset=utf-8");
-  EXPECT_EQ(queryGet(server.port(), "/?token=" + kQueryToken, {{http::field::accept, "application/json"}})[http::field::content_type],
+  EXPECT_EQ(queryGet(server.port(), "/?token=" + kQueryToken, {{"Accept", "application/json"}})[http::field::content_type],
             "application/json");
   const auto info = queryGet(server.port(), "/?HOST_INFO");
   EXPECT_EQ(nlohmann::json::parse(info.body())["OSC_PORT"], server.port());
@@ -153,9 +126,9 @@ TEST_F(OscQueryWeb, WithoutTheTokenOnlyWhoMaySendOscAndNeverABrowser) {
   EXPECT_EQ(queryGet(noTrust.port(), "/").result(), http::status::forbidden);
 
   WebServer server({"127.0.0.1", 0}, kQueryToken, catalogue, inbox, stats, {}, open);
-  EXPECT_EQ(queryGet(server.port(), "/", {{http::field::origin, "http://attacker.example"}}).result(),
+  EXPECT_EQ(queryGet(server.port(), "/", {{"Origin", "http://attacker.example"}}).result(),
             http::status::forbidden);
-  EXPECT_EQ(queryGet(server.port(), "/", {{http::field::host, "attacker.example"}}).result(), http::status::forbidden);
+  EXPECT_EQ(queryGet(server.port(), "/", {{"Host", "attacker.example"}}).result(), http::status::forbidden);
   EXPECT_EQ(queryUpgradeStatus(server.port(), "/", true), 403u);
   EXPECT_EQ(queryUpgradeStatus(server.port(), "/"), 101u);
   // The page, its catalogue and its socket need the token whoever asks.

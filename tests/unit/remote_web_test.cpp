@@ -3,7 +3,7 @@
 // counted, limits hold, and published state reaches every socket.
 #include "remote/remote_control.h"
 #include "remote/web_server.h"
-#include "remote_test_support.h"
+#include "remote_http_client.h"
 
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
@@ -29,29 +29,14 @@ namespace websocket = beast::websocket;
 using tcp = net::ip::tcp;
 using testing::eventually;
 using testing::limitReads;
+using testing::roundTrip;
+using testing::upgradeStatus;
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
 
-// One request on an open connection, and its response.
-template <typename Body>
-http::response<http::string_body> roundTrip(tcp::socket& socket, const http::request<Body>& request) {
-  http::write(socket, request);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(socket, buffer, response);
-  return response;
-}
-
-http::response<http::string_body> get(uint16_t port, std::string target, http::verb verb = http::verb::get,
-                                      std::string extraHeader = {}) {
-  net::io_context io;
-  tcp::socket socket(io);
-  socket.connect({net::ip::make_address("127.0.0.1"), port});
-  limitReads(socket);
-  http::request<http::string_body> request{verb, target, 11};
-  request.set(http::field::host, "127.0.0.1");
-  if (!extraHeader.empty()) request.set("X-Padding", extraHeader);
-  return roundTrip(socket, request);
+http::response<http::string_body> get(uint16_t port, const std::string& target, http::verb verb = http::verb::get,
+                                      const std::string& padding = {}) {
+  return testing::request(port, target, verb, padding.empty() ? testing::Headers{} : testing::Headers{{"X-Padding", padding}});
 }
 
 // A phone's socket, synchronous.
@@ -83,20 +68,6 @@ class SocketClient {
   websocket::stream<tcp::socket> socket_;
 };
 
-// The HTTP status an upgrade request gets: 101 when the socket would open, else why not.
-unsigned handshakeStatus(uint16_t port, const std::string& target) {
-  net::io_context io;
-  tcp::socket socket(io);
-  socket.connect({net::ip::make_address("127.0.0.1"), port});
-  limitReads(socket);
-  http::request<http::empty_body> request{http::verb::get, target, 11};
-  request.set(http::field::host, "127.0.0.1");
-  request.set(http::field::upgrade, "websocket");
-  request.set(http::field::connection, "Upgrade");
-  request.set(http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
-  request.set(http::field::sec_websocket_version, "13");
-  return roundTrip(socket, request).result_int();
-}
 
 class RemoteWeb : public ::testing::Test {
  protected:
@@ -114,12 +85,12 @@ TEST_F(RemoteWeb, RequestsWithoutTheTokenAreForbidden) {
   EXPECT_EQ(get(server.port(), "/catalogue.json?token=" + kToken.substr(1)).result(), http::status::forbidden);
   EXPECT_EQ(get(server.port(), "/catalogue.json").result(), http::status::forbidden);
   EXPECT_EQ(stats.snapshot().unauthorised, 5u);
-  EXPECT_EQ(handshakeStatus(server.port(), "/socket"), 403u);
-  EXPECT_EQ(handshakeStatus(server.port(), "/socket?token=nope"), 403u);
-  EXPECT_EQ(handshakeStatus(server.port(), "/elsewhere?token=" + kToken), 404u);
+  EXPECT_EQ(upgradeStatus(server.port(), "/socket"), 403u);
+  EXPECT_EQ(upgradeStatus(server.port(), "/socket?token=nope"), 403u);
+  EXPECT_EQ(upgradeStatus(server.port(), "/elsewhere?token=" + kToken), 404u);
   EXPECT_EQ(stats.snapshot().unauthorised, 7u);
   EXPECT_EQ(server.sockets(), 0u);
-  EXPECT_EQ(handshakeStatus(server.port(), socketTarget), 101u);
+  EXPECT_EQ(upgradeStatus(server.port(), socketTarget), 101u);
 }
 
 TEST_F(RemoteWeb, ServesThePageAndCatalogueWithTheToken) {
@@ -206,7 +177,7 @@ TEST_F(RemoteWeb, ClientCountIsLimited) {
   WebServer server({"127.0.0.1", 0}, kToken, catalogue, inbox, stats, {.maxSockets = 2});
   SocketClient first(server.port(), socketTarget), second(server.port(), socketTarget);
   ASSERT_TRUE(eventually([&] { return server.sockets() == 2; }));
-  EXPECT_EQ(handshakeStatus(server.port(), socketTarget), 503u);
+  EXPECT_EQ(upgradeStatus(server.port(), socketTarget), 503u);
   EXPECT_EQ(stats.snapshot().connectionsRefused, 1u);
 }
 
