@@ -1,6 +1,7 @@
 #include "isf/isf_translate.h"
 
 #include "core/printable.h"
+#include "isf/isf_loops.h"
 #include "isf/isf_names.h"
 #include "isf/isf_tokens.h"
 
@@ -50,7 +51,7 @@ struct Varying {
 class Rewriter {
  public:
   Rewriter(std::string_view body, Stage stage, int firstLine, std::string file)
-      : tokens_(tokenize(body)), stage_(stage), firstLine_(firstLine), file_(std::move(file)) {}
+      : tokens_(tokenize(body)), facts_(loopFacts(tokens_)), stage_(stage), firstLine_(firstLine), file_(std::move(file)) {}
 
   // With no locations given, only collects the varyings (vertex outputs, fragment inputs) and whether
   // the fragment stage declares its own outputs.
@@ -62,12 +63,22 @@ class Rewriter {
     fragmentOuts_ = 0;
     ownLayout_ = false;
     varyings_.clear();
+    closeAfter_.clear();
     for (size_t i = 0; i < tokens_.size(); ++i) {
       const Token& t = tokens_[i];
       if (t.kind == Token::Kind::Identifier && braces_ == 0 && parens_ == 0 && isStorage(t.text)) {
         i = declaration(i);
         continue;
       }
+      if (t.kind == Token::Kind::Identifier && t.text == "for")
+        if (const std::optional<BoundedLoop> loop = boundedLoop(tokens_, i, facts_, kLoopGuard)) {
+          // Charged once as it enters, so its count stays fixed for the compiler; the braces keep an
+          // `else` after it with the `if` it had.
+          out_ += fmt::format("{{ if (isf_enter({})) ", loop->trips);
+          closeAfter_.push_back(loop->bodyEnd);
+          emit(t);
+          continue;
+        }
       if (t.kind == Token::Kind::Identifier && (t.text == "while" || t.text == "for")) {
         i = guardedLoop(i);
         continue;
@@ -76,6 +87,10 @@ class Rewriter {
       if (braces_ == 0 && t.kind == Token::Kind::Identifier && t.text == "layout") ownLayout_ = true;
       if (braces_ == 0 && t.kind == Token::Kind::Punct && (t.text == ";" || t.text == "}")) ownLayout_ = false;
       emit(t);
+      if (const auto it = std::find(closeAfter_.begin(), closeAfter_.end(), i); it != closeAfter_.end()) {
+        out_ += " }";
+        closeAfter_.erase(it);
+      }
     }
     return out_;
   }
@@ -264,6 +279,7 @@ class Rewriter {
   }
 
   std::vector<Token> tokens_;
+  LoopFacts facts_;
   Stage stage_;
   int firstLine_;
   std::string file_;
@@ -272,6 +288,7 @@ class Rewriter {
   int line_ = 0, braces_ = 0, parens_ = 0, fragmentOuts_ = 0;
   bool ownLayout_ = false;
   std::vector<Varying> varyings_;
+  std::vector<size_t> closeAfter_;  // bounded loops' closing braces, each followed by the wrapper's
 };
 
 uint32_t alignUp(uint32_t x, uint32_t a) { return (x + a - 1) / a * a; }
@@ -286,9 +303,12 @@ std::string declarations(const Document& doc, const Translation& t, Stage stage,
   s += fmt::format("layout(std140, set = 0, binding = {}) uniform ISFFrame {{\n", kFrameBlockBinding);
   for (const BlockMember& m : t.frame.members) s += fmt::format("  layout(offset = {}) {} {};\n", m.offset, m.glslType, m.name);
   s += "};\n";
-  // Every loop condition calls isf_guard() (the rewrite adds it): a loop that would never end stops
-  // after kLoopGuard iterations of all loops together, so a runaway shader cannot hang the GPU.
-  s += fmt::format("int isf_guardCount = 0;\nbool isf_guard() {{ return ++isf_guardCount <= {}; }}\n", kLoopGuard);
+  // The invocation's loop budget (kLoopGuard), so a runaway shader cannot hang the GPU: a guarded loop's
+  // condition calls isf_guard() each iteration; a loop whose trip count its text fixes (isf_loops.h) is
+  // charged its whole count by isf_enter() as it starts, and runs whole or not at all.
+  s += fmt::format("int isf_guardCount = 0;\nbool isf_guard() {{ return ++isf_guardCount <= {0}; }}\n"
+                   "bool isf_enter(int trips) {{\n  if (isf_guardCount > {0}) return false;\n"
+                   "  isf_guardCount += trips;\n  return isf_guardCount <= {0};\n}}\n", kLoopGuard);
   s += fmt::format("layout(push_constant) uniform ISFPass {{\n  layout(offset = {}) vec2 RENDERSIZE;\n"
                    "  layout(offset = {}) int PASSINDEX;\n}};\n", kRenderSizeOffset, kPassIndexOffset);
   for (const SamplerBinding& b : t.samplers) s += fmt::format("layout(set = 0, binding = {}) uniform sampler2D {};\n", b.binding, b.name);

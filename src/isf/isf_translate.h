@@ -55,10 +55,10 @@ struct SamplerBinding {
 // Image, audio and audioFFT inputs in INPUTS order, then IMPORTED, then pass targets: bindings 1, 2, ...
 std::vector<SamplerBinding> samplerBindings(const Document& document);
 
-inline constexpr int kMaxVaryingLocations = 16;
+inline constexpr int kMaxVaryingLocations = 16;  // locations the two stages pass between them
 // Loop iterations one invocation (a pixel, a vertex) may run, all its loops together, before every
 // loop condition reads false: the bound on a runaway shader's work (docs/ISF.md, "Runaway shaders").
-inline constexpr int kLoopGuard = 1 << 16;  // locations the two stages pass between them
+inline constexpr int kLoopGuard = 1 << 16;
 
 struct VertexFile {
   std::string text;  // the .vs file's GLSL (no JSON)
@@ -73,7 +73,8 @@ struct Translation {
   std::vector<std::string> sourceNames;  // by #line source-string number: generated text, .fs, .vs
 };
 
-// Every loop's condition is rewritten to call isf_guard() (see kLoopGuard). Throws IsfError with the
+// Every loop is held to kLoopGuard: one whose trip count its text fixes is charged that count as it
+// starts (isf_enter), any other calls isf_guard() in its condition. Throws IsfError with the
 // author's file and line: a uniform declared in the code (ISF declares them
 // from INPUTS), an attribute (the quad has no vertex buffer), more varyings than kMaxVaryingLocations.
 Translation translate(const Document& document, const std::optional<VertexFile>& vertex = std::nullopt);

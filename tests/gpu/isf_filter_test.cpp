@@ -6,12 +6,15 @@
 #include "host/offline/offscreen.h"
 #include "host/scene_renderer.h"
 #include "image/image.h"
+#include "isf_twins.h"
 #include "scenes/pieces/piece_catalogue.h"
 #include "scenes/pieces/piece_scene.h"
 #include "support/gpu_test.h"
 #include "unit/isf_test_files.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -218,6 +221,59 @@ TEST_F(IsfFilters, ATransitionAtZeroHalfAndOneIsTheStartTheMixAndTheEnd) {
   EXPECT_LT(e1, 0.01);
   EXPECT_LT(eHalf, 0.01);
   device().waitIdle();
+}
+
+// A filter's passes cost no more than the same fragment work written natively: filter_invert.fs after
+// the speed field and its native twin (InvertTwin, one pass where the runner has three) draw the same
+// picture. With VITRINE_ISF_SPEED=WxH (the GPU machine, 1920x1080) each one's GPU time is printed,
+// medians of 240 frames after 60, for docs/PERFORMANCE.md.
+TEST_F(IsfFilters, AnInversionDrawsWhatItsNativeTwinDraws) {
+  const TwinRun run = twinRun();
+  ASSERT_TRUE(run.valid) << std::getenv("VITRINE_ISF_SPEED");
+  const VkExtent2D size = run.size;
+  const int frames = run.frames, warmup = run.warmup;
+  SpeedTwin* field = nullptr;
+  InvertTwin* twin = nullptr;
+  const TestSceneEntry& fieldEntry = testScene(field);
+  const TestSceneEntry& twinEntry = testScene(twin);
+  host::OffscreenConfig isfConfig;
+  isfConfig.scene = "calibrate";
+  isfConfig.size = size;
+  isfConfig.filters = {filter("filter_invert.fs")};
+  host::Offscreen isf(device(), isfConfig);
+  isf.renderer().setScene(fieldEntry.info, fieldEntry.create);
+  host::OffscreenConfig nativeConfig;
+  nativeConfig.scene = "calibrate";
+  nativeConfig.size = size;
+  host::Offscreen native(device(), nativeConfig);
+  native.renderer().setScene(twinEntry.info, twinEntry.create);
+  std::vector<double> sourceMs, passMs, outputMs, nativeMs;
+  for (int frame = 0; frame < frames; ++frame) {
+    const host::FrameTimes a = isf.renderFrame(), b = native.renderFrame();
+    if (frame < warmup) continue;
+    double source = 0.0, pass = 0.0, output = 0.0, twinMs = 0.0;
+    for (const gpu::PassTime& p : a.passes) {
+      if (p.name == "isf source") source += p.ms;
+      if (p.name.rfind("isf pass ", 0) == 0) pass += p.ms;
+      if (p.name == "isf output") output += p.ms;
+    }
+    for (const gpu::PassTime& p : b.passes)
+      if (p.name == "native filter twin") twinMs += p.ms;
+    sourceMs.push_back(source), passMs.push_back(pass), outputMs.push_back(output), nativeMs.push_back(twinMs);
+  }
+  ASSERT_NE(field, nullptr);
+  ASSERT_NE(twin, nullptr);
+  std::printf("filter speed %ux%u on %s: isf source %.4f ms + isf pass %.4f ms + isf output %.4f ms; native filter "
+              "twin %.4f ms\n",
+              size.width, size.height, device().properties().deviceName, median(sourceMs), median(passMs),
+              median(outputMs), median(nativeMs));
+  EXPECT_GT(median(passMs), 0.0) << "the filter ran";
+  const ImageRgba a = isf.readback(), b = native.readback();
+  ASSERT_GT(spread(a), 0.3);
+  const TwinDifference d = displayDifference(a, b);
+  std::printf("filter against its native twin: %.3f (mean) and %.3f (worst) of an 8-bit step\n", d.mean, d.worst);
+  EXPECT_LE(d.worst, 1.0);
+  EXPECT_LT(d.mean, 0.5);
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include "host/live_link.h"
 #include "host/offline/offscreen.h"
 #include "image/image.h"
+#include "isf_twins.h"
 #include "scenes/pieces/piece_scene.h"
-#include "shaders/test/speed_twin_push.h"
 #include "support/gpu_test.h"
 #include "support/test_scene.h"
 #include <unistd.h>
@@ -166,6 +166,17 @@ TEST_F(IsfPiece, TheLoopGuardEndsAnEndlessLoop) {
   std::printf("the loop guard's frame: %.2f s for 16x9 pixels of 65536 iterations each\n", seconds);
 }
 
+// Loops whose counts are fixed are charged as they start: of a 1000 by 1000 nest the outer loop and 64
+// inner ones fit the budget, the 65th inner one and the endless loop after it do not run.
+TEST_F(IsfPiece, TheLoopBudgetChargesAFixedNestAsItEnters) {
+  host::Offscreen run(device(), config(kIsfDir / "nested_loops.fs", {16, 9}));
+  run.renderFrame();
+  const ImageRgba image = run.readback();
+  EXPECT_NEAR(image.at(0, 0)[0], 1.0f, 1e-3f);
+  EXPECT_NEAR(image.at(15, 8)[0], 1.0f, 1e-3f);
+  EXPECT_NEAR(image.at(7, 4)[1], 0.0f, 1e-3f);
+}
+
 // audio.fs draws the wave as a line and the spectrum as 32 bars: fed by an --audio-in file, frame-exact.
 // A 1500 Hz tone is bin 32 of the analysis' 1024 at 48 kHz: the third bar, and no bar far from it.
 TEST_F(IsfPiece, AudioInputsDrawTheSoundFile) {
@@ -256,53 +267,15 @@ TEST_F(IsfPiece, AnEditIsTakenUpAndABrokenOneKeepsTheOldVersion) {
   EXPECT_EQ(flat.versions.size(), 3u);  // the header read at start, the first showing, the mended edit
 }
 
-// The native twin of speed_field.fs (shaders/test/speed_twin.*): the same fragment maths, drawn straight
-// into the frame's target as a native scene draws.
-class SpeedTwin final : public TestScene {
- public:
-  explicit SpeedTwin(const SceneContext& context) : program_(context.programs, state()) {}
-  void update(const FrameInput& input) override { time_ = float(input.time); }
-  void record(const FrameContext& frame) override {
-    const auto pass = frame.pass("native twin");
-    const auto rendering = frame.rendering({{{&frame.target, std::nullopt}}, std::nullopt});
-    const VkExtent2D size = frame.target.extent2d();
-    program_.bind(frame.cmd);
-    program_.constants(frame.cmd, shader::TestSpeedTwinPush{.renderSize = glm::vec2(size.width, size.height),
-                                                            .time = time_,
-                                                            .zoom = 3.0f});
-    vkCmdDraw(frame.cmd, 4, 1, 0, 0);
-  }
-
- private:
-  static gpu::GraphicsState state() {
-    gpu::GraphicsState s;
-    s.vertex = "test/speed_twin.vert";
-    s.fragment = "test/speed_twin.frag";
-    s.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
-    s.depthWrite = false;
-    s.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-    return s;
-  }
-  gpu::GraphicsProgram program_;
-  float time_ = 0.0f;
-};
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[values.size() / 2];
-}
-
 // An ISF pass costs no more than the same fragment work written natively: speed_field.fs and its native
 // twin draw the same picture (within the runner's 8-bit buffers). With VITRINE_ISF_SPEED=WxH (the GPU
 // machine, 1920x1080) each one's GPU time is printed, medians of 240 frames after 60, for
 // docs/PERFORMANCE.md.
 TEST_F(IsfPiece, ASpeedFieldDrawsWhatItsNativeTwinDraws) {
-  VkExtent2D size{96, 54};
-  int frames = 2, warmup = 1;
-  if (const char* speed = std::getenv("VITRINE_ISF_SPEED")) {
-    ASSERT_EQ(std::sscanf(speed, "%ux%u", &size.width, &size.height), 2) << speed;
-    frames = 300, warmup = 60;
-  }
+  const TwinRun run = twinRun();
+  ASSERT_TRUE(run.valid) << std::getenv("VITRINE_ISF_SPEED");
+  const VkExtent2D size = run.size;
+  const int frames = run.frames, warmup = run.warmup;
   SpeedTwin* twin = nullptr;
   const TestSceneEntry& entry = testScene(twin);
   host::Offscreen isf(device(), config(kIsfDir / "speed_field.fs", size));
@@ -325,17 +298,10 @@ TEST_F(IsfPiece, ASpeedFieldDrawsWhatItsNativeTwinDraws) {
   std::printf("isf speed %ux%u on %s: isf pass %.4f ms + isf output %.4f ms; native twin %.4f ms\n", size.width,
               size.height, device().properties().deviceName, median(passMs), median(outputMs), median(nativeMs));
   const ImageRgba a = isf.readback(), b = native.readback();
-  double worst = 0.0, sum = 0.0;
-  for (uint32_t y = 0; y < size.height; ++y)
-    for (uint32_t x = 0; x < size.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const double d = std::abs(linearToSrgb(a.at(x, y)[c]) - linearToSrgb(b.at(x, y)[c])) * 255.0;
-        worst = std::max(worst, d), sum += d;
-      }
-  const double mean = sum / (3.0 * size.width * size.height);
-  std::printf("isf against its native twin: %.3f (mean) and %.3f (worst) of an 8-bit step\n", mean, worst);
-  EXPECT_LE(worst, 1.0);  // the runner's rgba8 buffer rounds to the nearest 8-bit step
-  EXPECT_LT(mean, 0.5);
+  const TwinDifference d = displayDifference(a, b);
+  std::printf("isf against its native twin: %.3f (mean) and %.3f (worst) of an 8-bit step\n", d.mean, d.worst);
+  EXPECT_LE(d.worst, 1.0);  // the runner's rgba8 buffer rounds to the nearest 8-bit step
+  EXPECT_LT(d.mean, 0.5);
 }
 
 }  // namespace

@@ -103,8 +103,9 @@ TEST(IsfTranslate, KeepsEveryLineOfTheBodyWhereItWas) {
   }
 }
 
-// Every loop's condition is guarded, whatever its form, and the code around keeps its text and lines.
-TEST(IsfTranslate, GuardsEveryLoopCondition) {
+// Every loop whose trip count its text does not fix has its condition guarded, whatever its form; one
+// whose count it fixes is charged as it enters; the code around keeps its text and lines.
+TEST(IsfTranslate, GuardsEveryLoop) {
   const std::string body =
       "void main() {\n"
       "  float s = 0.0;\n"
@@ -123,14 +124,30 @@ TEST(IsfTranslate, GuardsEveryLoopCondition) {
   EXPECT_TRUE(has(t.fragment, "for (;isf_guard();) { break; }"));
   EXPECT_TRUE(has(t.fragment, "while ((s > 0.0) && isf_guard()) s -= 1.0;"));
   EXPECT_TRUE(has(t.fragment, "while ((s < 3.0 /* ) */) && isf_guard());"));
-  EXPECT_TRUE(has(t.fragment, "for (int j = 0;(\n       j < 2) && isf_guard();\n       ++j) {}"));
+  EXPECT_TRUE(has(t.fragment, "{ if (isf_enter(2)) for (int j = 0;\n       j < 2;\n       ++j) {} }")) << t.fragment;
   EXPECT_TRUE(has(t.fragment, "bool isf_guard() { return ++isf_guardCount <= 65536; }"));
+  EXPECT_TRUE(has(t.fragment, "bool isf_enter(int trips) {"));
   // Lines kept: "gl_FragColor" is still on the body's 10th line, the file's 12th.
   const size_t start = t.fragment.find("#line 1 1\n");
   ASSERT_NE(start, std::string::npos);
   const std::string after = t.fragment.substr(start + std::string("#line 1 1\n").size());
   const size_t colour = after.find("isf_FragColor = vec4(s);");
   EXPECT_EQ(std::count(after.begin(), after.begin() + std::ptrdiff_t(colour), '\n'), 11);
+  EXPECT_NO_THROW(compileIsf(doc));
+}
+
+// A charged loop is wrapped in braces, so an `else` after it keeps the `if` it had, and nested ones
+// close in their order.
+TEST(IsfTranslate, AChargedLoopKeepsTheStatementsAroundIt) {
+  const Document doc = parseDocument(
+      "/*{}*/\nvoid main() {\n  float s = 0.0;\n"
+      "  if (isf_FragNormCoord.x > 0.5) for (int i = 0; i < 3; i++) { for (int j = 0; j < 4; j++) { s += 1.0; } }\n"
+      "  else s = -1.0;\n  gl_FragColor = vec4(s);\n}\n",
+      "charged.fs");
+  const Translation t = translate(doc);
+  EXPECT_TRUE(has(t.fragment, "if (isf_FragNormCoord.x > 0.5) { if (isf_enter(3)) for (int i = 0; i < 3; i++) "
+                              "{ { if (isf_enter(4)) for (int j = 0; j < 4; j++) { s += 1.0; } } } }\n  else s = -1.0;"))
+      << t.fragment;
   EXPECT_NO_THROW(compileIsf(doc));
 }
 

@@ -1,0 +1,256 @@
+#include "isf/isf_loops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace vitrine::isf {
+namespace {
+
+bool skipped(const Token& t) {
+  return t.kind == Token::Kind::Blank || t.kind == Token::Kind::Newline || t.kind == Token::Kind::Comment;
+}
+
+// The next token at or after i that is not a blank, newline or comment; tokens.size() when none.
+size_t next(const std::vector<Token>& tokens, size_t i) {
+  while (i < tokens.size() && skipped(tokens[i])) ++i;
+  return i;
+}
+
+// The token before i that is not a blank, newline or comment; nothing when none.
+const Token* previous(const std::vector<Token>& tokens, size_t i) {
+  while (i-- > 0)
+    if (!skipped(tokens[i])) return &tokens[i];
+  return nullptr;
+}
+
+bool is(const std::vector<Token>& tokens, size_t i, std::string_view text) {
+  return i < tokens.size() && tokens[i].text == text;
+}
+
+// A decimal or hexadecimal literal with GLSL's suffixes; an octal one ("017") is left out.
+std::optional<double> literal(std::string_view text) {
+  while (!text.empty() && (text.back() == 'u' || text.back() == 'U' || text.back() == 'f' || text.back() == 'F' ||
+                           ((text.back() == 'l' || text.back() == 'L') && text.size() > 2 && text[1] != 'x')))
+    text.remove_suffix(1);
+  if (text.size() > 1 && text[0] == '0' && text.find_first_of(".eExX") == std::string_view::npos) return std::nullopt;
+  const std::string s(text);
+  char* end = nullptr;
+  const double value = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// [-] NUMBER, or a name the facts fix, at tokens[i] on; i moves past it.
+std::optional<double> constant(const std::vector<Token>& tokens, size_t& i, const LoopFacts& facts) {
+  i = next(tokens, i);
+  double sign = 1.0;
+  if (is(tokens, i, "-")) sign = -1.0, i = next(tokens, i + 1);
+  if (i >= tokens.size()) return std::nullopt;
+  std::optional<double> value;
+  if (tokens[i].kind == Token::Kind::Number) value = literal(tokens[i].text);
+  if (tokens[i].kind == Token::Kind::Identifier)
+    if (const auto it = facts.constants.find(tokens[i].text); it != facts.constants.end()) value = it->second;
+  if (!value) return std::nullopt;
+  ++i;
+  return sign * *value;
+}
+
+// Whether a macro's replacement assigns or steps something: "=" alone, an operator-assignment, ++ or --.
+bool writes(std::string_view replacement) {
+  for (size_t k = 0; k < replacement.size(); ++k) {
+    const char c = replacement[k];
+    if ((c == '+' || c == '-') && k + 1 < replacement.size() && replacement[k + 1] == c) return true;
+    if (c != '=') continue;
+    if (k + 1 < replacement.size() && replacement[k + 1] == '=') {
+      ++k;  // "==": a comparison
+      continue;
+    }
+    if (k > 0 && (replacement[k - 1] == '!' || replacement[k - 1] == '=')) continue;
+    if (k > 0 && (replacement[k - 1] == '<' || replacement[k - 1] == '>') &&
+        !(k > 1 && replacement[k - 2] == replacement[k - 1]))
+      continue;  // "<=" and ">=", but "<<=" and ">>=" assign
+    return true;
+  }
+  return false;
+}
+
+// Whether the body's use of the counter at tokens[k] may change it: an assignment, an
+// operator-assignment, ++ or -- before or after.
+bool writtenAt(const std::vector<Token>& tokens, size_t k) {
+  const auto adjacent = [&](size_t at, std::string_view text) { return is(tokens, at, text); };
+  const size_t after = next(tokens, k + 1);
+  if (after < tokens.size()) {
+    const std::string_view op = tokens[after].text;
+    if (op == "=" && !adjacent(after + 1, "=")) return true;
+    if ((op == "+" || op == "-") && adjacent(after + 1, op)) return true;
+    if ((op == "+" || op == "-" || op == "*" || op == "/" || op == "%" || op == "&" || op == "|" || op == "^") &&
+        adjacent(after + 1, "="))
+      return true;
+    if ((op == "<" || op == ">") && adjacent(after + 1, op) && adjacent(after + 2, "=")) return true;
+  }
+  size_t before = k;
+  while (before > 0 && skipped(tokens[before - 1])) --before;
+  return before >= 2 && (tokens[before - 1].text == "+" || tokens[before - 1].text == "-") &&
+         tokens[before - 2].text == tokens[before - 1].text;
+}
+
+}  // namespace
+
+LoopFacts loopFacts(const std::vector<Token>& tokens) {
+  LoopFacts facts;
+  int braces = 0, parens = 0;
+  std::string function;  // the name before the '(' of a declaration at file scope
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    if (t.kind == Token::Kind::Directive) {
+      // #define NAME [-]NUMBER, or a macro whose replacement writes (a loop that uses one is guarded).
+      const std::vector<Token> words = tokenize(t.text.substr(1));
+      size_t k = next(words, 0);
+      if (!is(words, k, "define")) continue;
+      k = next(words, k + 1);
+      if (k >= words.size() || words[k].kind != Token::Kind::Identifier) continue;
+      const std::string name(words[k].text);
+      const std::string_view replacement = t.text.substr(static_cast<size_t>(words[k].text.data() - t.text.data()) +
+                                                         words[k].text.size());
+      if (writes(replacement)) facts.writingMacros.insert(name);
+      size_t v = k + 1;
+      if (const auto value = constant(words, v, facts); value && next(words, v) == words.size())
+        facts.constants[name] = *value;
+      continue;
+    }
+    if (t.kind != Token::Kind::Identifier && t.kind != Token::Kind::Punct) continue;
+    if (t.text == "{") ++braces;
+    if (t.text == "}") --braces;
+    if (t.text == "(" && braces == 0 && parens++ == 0) {
+      const Token* name = previous(tokens, i);
+      function = name && name->kind == Token::Kind::Identifier ? std::string(name->text) : std::string();
+    }
+    if (t.text == ")" && braces == 0 && parens > 0) --parens;
+    if (braces == 0 && parens > 0 && (t.text == "out" || t.text == "inout") && !function.empty())
+      facts.writingFunctions.insert(function);
+    // const TYPE [precision] NAME = [-]NUMBER ;
+    if (t.text == "const") {
+      size_t k = next(tokens, i + 1);
+      if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
+      k = next(tokens, k + 1);
+      if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
+      const std::string name(tokens[k].text);
+      k = next(tokens, k + 1);
+      if (!is(tokens, k, "=")) continue;
+      ++k;
+      if (const auto value = constant(tokens, k, facts); value && is(tokens, next(tokens, k), ";"))
+        facts.constants[name] = *value;
+    }
+  }
+  return facts;
+}
+
+std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t forIndex, const LoopFacts& facts,
+                                       int maxTrips) {
+  size_t i = next(tokens, forIndex + 1);
+  if (!is(tokens, i, "(")) return std::nullopt;
+  // The start: TYPE NAME = CONSTANT ;
+  i = next(tokens, i + 1);
+  if (is(tokens, i, "highp") || is(tokens, i, "mediump") || is(tokens, i, "lowp")) i = next(tokens, i + 1);
+  const bool integer = is(tokens, i, "int");  // not uint: a count down past 0 wraps and never ends
+  if (!integer && !is(tokens, i, "float")) return std::nullopt;
+  i = next(tokens, i + 1);
+  if (i >= tokens.size() || tokens[i].kind != Token::Kind::Identifier) return std::nullopt;
+  const std::string_view counter = tokens[i].text;
+  i = next(tokens, i + 1);
+  if (!is(tokens, i, "=")) return std::nullopt;
+  ++i;
+  const std::optional<double> start = constant(tokens, i, facts);
+  i = next(tokens, i);
+  if (!start || !is(tokens, i, ";")) return std::nullopt;
+  // The test: COUNTER (< | <= | > | >= | !=) CONSTANT ;
+  i = next(tokens, i + 1);
+  if (!is(tokens, i, counter)) return std::nullopt;
+  i = next(tokens, i + 1);
+  if (i >= tokens.size()) return std::nullopt;
+  std::string op(tokens[i].text);
+  if (op != "<" && op != ">" && op != "!") return std::nullopt;
+  if (is(tokens, i + 1, "=")) op += "=", ++i;
+  if (op == "!") return std::nullopt;
+  ++i;
+  const std::optional<double> bound = constant(tokens, i, facts);
+  i = next(tokens, i);
+  if (!bound || !is(tokens, i, ";")) return std::nullopt;
+  // The step: ++C, --C, C++, C--, C += CONSTANT, C -= CONSTANT.
+  i = next(tokens, i + 1);
+  double step = 0.0;
+  if ((is(tokens, i, "+") || is(tokens, i, "-")) && is(tokens, i + 1, tokens[i].text)) {
+    step = tokens[i].text == "+" ? 1.0 : -1.0;
+    i = next(tokens, i + 2);
+    if (!is(tokens, i, counter)) return std::nullopt;
+    i = next(tokens, i + 1);
+  } else if (is(tokens, i, counter)) {
+    i = next(tokens, i + 1);
+    if (i + 1 >= tokens.size() || (tokens[i].text != "+" && tokens[i].text != "-")) return std::nullopt;
+    const double sign = tokens[i].text == "+" ? 1.0 : -1.0;
+    if (is(tokens, i + 1, tokens[i].text)) {
+      step = sign;
+      i = next(tokens, i + 2);
+    } else if (is(tokens, i + 1, "=")) {
+      i += 2;
+      const std::optional<double> by = constant(tokens, i, facts);
+      if (!by || *by <= 0.0) return std::nullopt;
+      step = sign * *by;
+      i = next(tokens, i);
+    } else {
+      return std::nullopt;
+    }
+  } else {
+    return std::nullopt;
+  }
+  if (!is(tokens, i, ")")) return std::nullopt;
+  i = next(tokens, i + 1);
+  if (!is(tokens, i, "{")) return std::nullopt;
+
+  // The body: to its closing brace, writing neither the counter nor through anything that may.
+  int depth = 0;
+  size_t end = i;
+  for (; end < tokens.size(); ++end) {
+    const Token& t = tokens[end];
+    if (t.kind == Token::Kind::Directive) return std::nullopt;
+    if (t.kind == Token::Kind::Punct && t.text == "{") ++depth;
+    if (t.kind == Token::Kind::Punct && t.text == "}" && --depth == 0) break;
+    if (t.kind != Token::Kind::Identifier) continue;
+    if (facts.writingFunctions.count(t.text) || facts.writingMacros.count(t.text)) return std::nullopt;
+    if (t.text != counter) continue;
+    const Token* before = previous(tokens, end);
+    if (before && before->text == ".") continue;  // a member of that name
+    if (writtenAt(tokens, end)) return std::nullopt;
+  }
+  if (end >= tokens.size()) return std::nullopt;
+
+  // Iterations: from start towards the bound by step; none when the step leads away from it.
+  const double a = *start, b = *bound;
+  double trips = 0.0;
+  if (op == "<" || op == "<=") {
+    if (step <= 0.0) return std::nullopt;
+    trips = op == "<" ? std::ceil((b - a) / step) : std::floor((b - a) / step) + 1.0;
+  } else if (op == ">" || op == ">=") {
+    if (step >= 0.0) return std::nullopt;
+    trips = op == ">" ? std::ceil((a - b) / -step) : std::floor((a - b) / -step) + 1.0;
+  } else {  // "!=": only an integer counter that lands on the bound
+    const double steps = (b - a) / step;
+    if (!integer || steps < 0.0 || steps != std::floor(steps)) return std::nullopt;
+    trips = steps;
+  }
+  trips = std::max(trips, 0.0);
+  if (!integer) {
+    // A float counter's sums round. With a step of at least 4 of the float's ulps at the largest value
+    // the counter sees, each sum moves it by at least 7/8 of the step: a few more trips, never endless.
+    const float largest = static_cast<float>(std::max(std::abs(a), std::abs(b)));
+    const double ulp = double(std::nextafter(largest, std::numeric_limits<float>::infinity())) - double(largest);
+    if (std::abs(step) < 4.0 * ulp) return std::nullopt;
+    trips = std::ceil(trips * 8.0 / 7.0) + 1.0;
+  }
+  if (trips > maxTrips) return std::nullopt;
+  return BoundedLoop{static_cast<int>(trips), end};
+}
+
+}  // namespace vitrine::isf
