@@ -208,6 +208,7 @@ std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t 
   if (!is(tokens, i, ")")) return std::nullopt;
   i = next(tokens, i + 1);
   if (!is(tokens, i, "{")) return std::nullopt;
+  const size_t bodyStart = i;
 
   // The body: to its closing brace, writing neither the counter nor through anything that may.
   int depth = 0;
@@ -250,7 +251,113 @@ std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t 
     trips = std::ceil(trips * 8.0 / 7.0) + 1.0;
   }
   if (trips > maxTrips) return std::nullopt;
-  return BoundedLoop{static_cast<int>(trips), end};
+  return BoundedLoop{static_cast<int>(trips), bodyStart, end};
+}
+
+namespace {
+
+// The index of the bracket that closes the one at `open` ('(' or '{'); tokens.size() when none.
+size_t closing(const std::vector<Token>& tokens, size_t open) {
+  const std::string_view in = tokens[open].text, out = in == "(" ? ")" : "}";
+  int depth = 0;
+  for (size_t k = open; k < tokens.size(); ++k) {
+    if (tokens[k].kind != Token::Kind::Punct) continue;
+    if (tokens[k].text == in) ++depth;
+    if (tokens[k].text == out && --depth == 0) return k;
+  }
+  return tokens.size();
+}
+
+class Worst {
+ public:
+  Worst(const std::vector<Token>& tokens, const LoopFacts& facts, long long cap)
+      : tokens_(tokens), facts_(facts), cap_(cap) {
+    // Function definitions at file scope: NAME ( ... ) { ... }, each overload's body.
+    int braces = 0;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+      const Token& t = tokens[i];
+      if (t.kind == Token::Kind::Punct && t.text == "{") ++braces;
+      if (t.kind == Token::Kind::Punct && t.text == "}") --braces;
+      if (braces != 0 || t.kind != Token::Kind::Identifier) continue;
+      const size_t open = next(tokens, i + 1);
+      if (!is(tokens, open, "(")) continue;
+      const size_t close = closing(tokens, open);
+      const size_t body = close < tokens.size() ? next(tokens, close + 1) : tokens.size();
+      if (!is(tokens, body, "{")) continue;
+      const size_t end = closing(tokens, body);
+      if (end >= tokens.size()) continue;
+      bodies_[std::string(t.text)].push_back({body + 1, end});
+      i = end;
+    }
+  }
+
+  bool known(std::string_view name) const { return bodies_.count(std::string(name)) > 0; }
+
+  std::optional<long long> ofFunction(const std::string& name) {
+    if (const auto it = done_.find(name); it != done_.end()) return it->second;
+    if (!open_.insert(name).second) return std::nullopt;  // a cycle: not GLSL, and not followed
+    long long most = 0;
+    for (const auto& [from, to] : bodies_.at(name)) {
+      const std::optional<long long> cost = ofRange(from, to);
+      if (!cost) return std::nullopt;
+      most = std::max(most, *cost);
+    }
+    open_.erase(name);
+    return done_[name] = most;
+  }
+
+ private:
+  long long add(long long a, long long b) const { return std::min(cap_, a + b); }
+  long long times(long long a, long long b) const { return b != 0 && a > cap_ / b ? cap_ : std::min(cap_, a * b); }
+
+  // Tokens [from, to): every loop there and every call of a function the text defines.
+  std::optional<long long> ofRange(size_t from, size_t to) {
+    long long cost = 0;
+    for (size_t k = from; k < to; ++k) {
+      const Token& t = tokens_[k];
+      if (t.kind != Token::Kind::Identifier) continue;
+      if (t.text == "while" || t.text == "do") return std::nullopt;
+      if (t.text == "for") {
+        const std::optional<BoundedLoop> loop = boundedLoop(tokens_, k, facts_, int(std::min<long long>(cap_, 1 << 30)));
+        if (!loop) return std::nullopt;
+        const std::optional<long long> body = ofRange(loop->bodyStart + 1, loop->bodyEnd);
+        if (!body) return std::nullopt;
+        cost = add(cost, times(loop->trips, 1 + *body));
+        k = loop->bodyEnd;
+        continue;
+      }
+      if (known(t.text) && is(tokens_, next(tokens_, k + 1), "(")) {
+        const std::optional<long long> call = ofFunction(std::string(t.text));
+        if (!call) return std::nullopt;
+        cost = add(cost, *call);
+      }
+    }
+    return cost;
+  }
+
+  const std::vector<Token>& tokens_;
+  const LoopFacts& facts_;
+  long long cap_;
+  std::map<std::string, std::vector<std::pair<size_t, size_t>>> bodies_;
+  std::map<std::string, long long> done_;
+  std::set<std::string> open_;
+};
+
+}  // namespace
+
+std::optional<long long> worstIterations(const std::vector<Token>& tokens, const LoopFacts& facts,
+                                         std::string_view entry, long long cap) {
+  Worst worst(tokens, facts, cap);
+  if (!worst.known(entry)) return std::nullopt;
+  // A macro that holds a loop or names a function hides work from the count.
+  for (const Token& t : tokens) {
+    if (t.kind != Token::Kind::Directive) continue;
+    for (const Token& word : tokenize(t.text.substr(1)))
+      if (word.kind == Token::Kind::Identifier &&
+          (word.text == "for" || word.text == "while" || word.text == "do" || worst.known(word.text)))
+        return std::nullopt;
+  }
+  return worst.ofFunction(std::string(entry));
 }
 
 }  // namespace vitrine::isf

@@ -25,13 +25,20 @@ struct LoopFacts {
 LoopFacts loopFacts(const std::vector<Token>& tokens);
 
 struct BoundedLoop {
-  int trips = 0;        // iterations at most, counted from the constants
-  size_t bodyEnd = 0;   // index of the body's closing '}'
+  int trips = 0;         // iterations at most, counted from the constants
+  size_t bodyStart = 0;  // index of the body's opening '{'
+  size_t bodyEnd = 0;    // index of its closing '}'
 };
 
 // tokens[forIndex] is the word `for`. A loop in the form above whose body is a block and whose trip
 // count is at most maxTrips; nothing for every other loop (which the translation guards per iteration).
 std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t forIndex, const LoopFacts& facts,
                                        int maxTrips);
+
+// The most loop iterations one call of the function `entry` can run, all loops together, nested ones
+// multiplied and calls followed, when every loop of the text has a fixed count (and no macro holds a
+// loop or names a function); nothing otherwise. Counts past `cap` read as cap.
+std::optional<long long> worstIterations(const std::vector<Token>& tokens, const LoopFacts& facts,
+                                         std::string_view entry, long long cap);
 
 }  // namespace vitrine::isf

@@ -51,7 +51,10 @@ struct Varying {
 class Rewriter {
  public:
   Rewriter(std::string_view body, Stage stage, int firstLine, std::string file)
-      : tokens_(tokenize(body)), facts_(loopFacts(tokens_)), stage_(stage), firstLine_(firstLine), file_(std::move(file)) {}
+      : tokens_(tokenize(body)), facts_(loopFacts(tokens_)), stage_(stage), firstLine_(firstLine), file_(std::move(file)) {
+    const std::optional<long long> worst = worstIterations(tokens_, facts_, "main", kLoopGuard + 1LL);
+    withinBudget_ = worst && *worst <= kLoopGuard;
+  }
 
   // With no locations given, only collects the varyings (vertex outputs, fragment inputs) and whether
   // the fragment stage declares its own outputs.
@@ -72,6 +75,10 @@ class Rewriter {
       }
       if (t.kind == Token::Kind::Identifier && t.text == "for")
         if (const std::optional<BoundedLoop> loop = boundedLoop(tokens_, i, facts_, kLoopGuard)) {
+          if (withinBudget_) {  // every loop fixed, and all of them together within the budget
+            emit(t);
+            continue;
+          }
           // Charged once as it enters, so its count stays fixed for the compiler; the braces keep an
           // `else` after it with the `if` it had.
           out_ += fmt::format("{{ if (isf_enter({})) ", loop->trips);
@@ -280,6 +287,7 @@ class Rewriter {
 
   std::vector<Token> tokens_;
   LoopFacts facts_;
+  bool withinBudget_ = false;  // worstIterations() of main() is at most kLoopGuard: no loop needs a charge
   Stage stage_;
   int firstLine_;
   std::string file_;

@@ -72,5 +72,33 @@ TEST(IsfLoops, LeavesEveryOtherLoopToTheGuard) {
   EXPECT_EQ(trips("for (float x = 16777216.0; x < 16777220.0; x += 1.0) { }"), -1);
 }
 
+// The worst case of main(): loops multiplied by what their bodies run, calls followed.
+long long worst(const std::string& glsl) {
+  const std::vector<Token> tokens = tokenize(glsl);
+  return worstIterations(tokens, loopFacts(tokens), "main", 1 << 20).value_or(-1);
+}
+
+TEST(IsfLoops, TheWorstCaseFollowsNestsAndCalls) {
+  const std::string fbm = "float fbm(vec2 p) { float s = 0.0; for (int i = 0; i < 6; ++i) { s += p.x; } return s; }\n";
+  EXPECT_EQ(worst(fbm + "void main() { float a = fbm(vec2(0.0)) + fbm(vec2(1.0)); }"), 12);
+  EXPECT_EQ(worst(fbm + "void main() { for (int k = 0; k < 4; k++) { fbm(vec2(0.0)); } }"), 4 * (1 + 6));
+  EXPECT_EQ(worst("void main() { for (int i = 0; i < 3; i++) { for (int j = 0; j < 5; j++) { } } }"), 3 * (1 + 5));
+  EXPECT_EQ(worst("void main() { gl_FragColor = vec4(1.0); }"), 0);
+  // Overloads: the costlier.
+  EXPECT_EQ(worst("float f(float x) { for (int i = 0; i < 2; ++i) { } return x; }\n"
+                  "float f(vec2 x) { for (int i = 0; i < 9; ++i) { } return x.x; }\nvoid main() { f(1.0); }"),
+            9);
+  // Past the cap: the cap.
+  EXPECT_EQ(worst("void main() { for (int i = 0; i < 4096; i++) { for (int j = 0; j < 4096; j++) { } } }"), 1 << 20);
+}
+
+TEST(IsfLoops, NoWorstCaseWhereALoopIsNotFixedOrIsHidden) {
+  EXPECT_EQ(worst("void main() { while (true) { } }"), -1);
+  EXPECT_EQ(worst("void g() { for (int i = 0; i < n; ++i) { } }\nvoid main() { g(); }"), -1);
+  EXPECT_EQ(worst("#define LOOP for (int i = 0; i < 9; ++i) { }\nvoid main() { LOOP }"), -1);
+  EXPECT_EQ(worst("float g() { for (int i = 0; i < 9; ++i) { } return 1.0; }\n#define G g()\nvoid main() { G; }"), -1);
+  EXPECT_EQ(worst("void other() { }"), -1);  // no main
+}
+
 }  // namespace
 }  // namespace vitrine::isf

@@ -136,13 +136,26 @@ TEST(IsfTranslate, GuardsEveryLoop) {
   EXPECT_NO_THROW(compileIsf(doc));
 }
 
-// A charged loop is wrapped in braces, so an `else` after it keeps the `if` it had, and nested ones
-// close in their order.
+// Where every loop is fixed and all of them together fit the budget, none is charged or guarded: the
+// code is the author's, as a native shader would have it.
+TEST(IsfTranslate, FixedLoopsWithinTheBudgetAreLeftAsWritten) {
+  const std::string body =
+      "float fbm(vec2 p) {\n  float s = 0.0;\n  for (int i = 0; i < 6; ++i) { s += sin(p.x); p *= 2.0; }\n"
+      "  return s;\n}\n"
+      "void main() {\n  float s = fbm(isf_FragNormCoord) + fbm(isf_FragNormCoord.yx);\n  gl_FragColor = vec4(s);\n}\n";
+  const Translation t = translate(parseDocument("/*{}*/\n" + body, "fixed.fs"));
+  EXPECT_TRUE(has(t.fragment, "  for (int i = 0; i < 6; ++i) { s += sin(p.x); p *= 2.0; }\n")) << t.fragment;
+  EXPECT_FALSE(has(t.fragment, "isf_enter(6)"));
+  EXPECT_FALSE(has(t.fragment, "&& isf_guard()"));
+}
+
+// A charged loop (here, as the file has a loop that is not fixed) is wrapped in braces, so an `else`
+// after it keeps the `if` it had, and nested ones close in their order.
 TEST(IsfTranslate, AChargedLoopKeepsTheStatementsAroundIt) {
   const Document doc = parseDocument(
       "/*{}*/\nvoid main() {\n  float s = 0.0;\n"
       "  if (isf_FragNormCoord.x > 0.5) for (int i = 0; i < 3; i++) { for (int j = 0; j < 4; j++) { s += 1.0; } }\n"
-      "  else s = -1.0;\n  gl_FragColor = vec4(s);\n}\n",
+      "  else s = -1.0;\n  while (s > 100.0) s -= 1.0;\n  gl_FragColor = vec4(s);\n}\n",
       "charged.fs");
   const Translation t = translate(doc);
   EXPECT_TRUE(has(t.fragment, "if (isf_FragNormCoord.x > 0.5) { if (isf_enter(3)) for (int i = 0; i < 3; i++) "
