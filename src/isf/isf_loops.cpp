@@ -102,6 +102,7 @@ LoopFacts loopFacts(const std::vector<Token>& tokens) {
   LoopFacts facts;
   int braces = 0, parens = 0;
   std::string function;  // the name before the '(' of a declaration at file scope
+  std::map<std::string, size_t, std::less<>> definedAt;  // each const's name, where its declaration names it
   for (size_t i = 0; i < tokens.size(); ++i) {
     const Token& t = tokens[i];
     if (t.kind == Token::Kind::Directive) {
@@ -130,19 +131,34 @@ LoopFacts loopFacts(const std::vector<Token>& tokens) {
     if (t.text == ")" && braces == 0 && parens > 0) --parens;
     if (braces == 0 && parens > 0 && (t.text == "out" || t.text == "inout") && !function.empty())
       facts.writingFunctions.insert(function);
-    // const TYPE [precision] NAME = [-]NUMBER ;
+    // const TYPE NAME = [-]NUMBER ;
     if (t.text == "const") {
       size_t k = next(tokens, i + 1);
       if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
       k = next(tokens, k + 1);
       if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
       const std::string name(tokens[k].text);
+      const size_t at = k;
       k = next(tokens, k + 1);
       if (!is(tokens, k, "=")) continue;
       ++k;
-      if (const auto value = constant(tokens, k, facts); value && is(tokens, next(tokens, k), ";"))
+      if (const auto value = constant(tokens, k, facts); value && is(tokens, next(tokens, k), ";")) {
         facts.constants[name] = *value;
+        definedAt[name] = at;
+      }
     }
+  }
+  // A name is a constant only where nothing else declares it (a parameter, a local of that name) or
+  // writes it: a loop tested against one of those has no fixed count.
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i].kind != Token::Kind::Identifier) continue;
+    const auto it = facts.constants.find(tokens[i].text);
+    if (it == facts.constants.end()) continue;
+    if (const auto defined = definedAt.find(it->first); defined != definedAt.end() && defined->second == i) continue;
+    const Token* before = previous(tokens, i);
+    const bool declared = before && before->kind == Token::Kind::Identifier && before->text != "return" &&
+                          before->text != "case";
+    if (declared || writtenAt(tokens, i)) facts.constants.erase(it);
   }
   return facts;
 }

@@ -68,6 +68,11 @@ TEST(IsfLoops, LeavesEveryOtherLoopToTheGuard) {
   EXPECT_EQ(trips("for (int i = 0; i < 6; i *= 2) { }"), -1);
   EXPECT_EQ(trips("for (int i = 0; j < 6; ++i) { }"), -1);
   EXPECT_EQ(trips("for (int i = 010; i < 16; ++i) { }"), -1);            // octal: not read
+  // A constant's name declared again (a parameter, a local) or written is no constant.
+  EXPECT_EQ(trips("const int N = 4;\nvoid f(int N) { for (int i = 0; i < N; ++i) { } }"), -1);
+  EXPECT_EQ(trips("const int N = 4;\nvoid f() { int N = 9; for (int i = 0; i < N; ++i) { N++; } }"), -1);
+  EXPECT_EQ(trips("#define N 4\nint k = 0;\nvoid f() { for (int i = 0; i < N; ++i) { } }"), 4);
+  EXPECT_EQ(trips("const int N = 4;\nint g() { return N; }\nvoid f() { for (int i = 0; i < N; ++i) { } }"), 4);
   // x + 1.0 == x at 2^24: as written it never ends.
   EXPECT_EQ(trips("for (float x = 16777216.0; x < 16777220.0; x += 1.0) { }"), -1);
 }
