@@ -8,21 +8,23 @@
 namespace vitrine::isf {
 namespace {
 
-bool skipped(const Token& t) {
-  return t.kind == Token::Kind::Blank || t.kind == Token::Kind::Newline || t.kind == Token::Kind::Comment;
-}
-
-// The next token at or after i that is not a blank, newline or comment; tokens.size() when none.
-size_t next(const std::vector<Token>& tokens, size_t i) {
-  while (i < tokens.size() && skipped(tokens[i])) ++i;
-  return i;
-}
-
 // The token before i that is not a blank, newline or comment; nothing when none.
 const Token* previous(const std::vector<Token>& tokens, size_t i) {
   while (i-- > 0)
-    if (!skipped(tokens[i])) return &tokens[i];
+    if (!spacing(tokens[i])) return &tokens[i];
   return nullptr;
+}
+
+// The index of the bracket that closes the one at `open` ('(' or '{'); tokens.size() when none.
+size_t closing(const std::vector<Token>& tokens, size_t open) {
+  const std::string_view in = tokens[open].text, out = in == "(" ? ")" : "}";
+  int depth = 0;
+  for (size_t k = open; k < tokens.size(); ++k) {
+    if (tokens[k].kind != Token::Kind::Punct) continue;
+    if (tokens[k].text == in) ++depth;
+    if (tokens[k].text == out && --depth == 0) return k;
+  }
+  return tokens.size();
 }
 
 bool is(const std::vector<Token>& tokens, size_t i, std::string_view text) {
@@ -44,9 +46,9 @@ std::optional<double> literal(std::string_view text) {
 
 // [-] NUMBER, or a name the facts fix, at tokens[i] on; i moves past it.
 std::optional<double> constant(const std::vector<Token>& tokens, size_t& i, const LoopFacts& facts) {
-  i = next(tokens, i);
+  i = nextWord(tokens, i);
   double sign = 1.0;
-  if (is(tokens, i, "-")) sign = -1.0, i = next(tokens, i + 1);
+  if (is(tokens, i, "-")) sign = -1.0, i = nextWord(tokens, i + 1);
   if (i >= tokens.size()) return std::nullopt;
   std::optional<double> value;
   if (tokens[i].kind == Token::Kind::Number) value = literal(tokens[i].text);
@@ -80,7 +82,7 @@ bool writes(std::string_view replacement) {
 // operator-assignment, ++ or -- before or after.
 bool writtenAt(const std::vector<Token>& tokens, size_t k) {
   const auto adjacent = [&](size_t at, std::string_view text) { return is(tokens, at, text); };
-  const size_t after = next(tokens, k + 1);
+  const size_t after = nextWord(tokens, k + 1);
   if (after < tokens.size()) {
     const std::string_view op = tokens[after].text;
     if (op == "=" && !adjacent(after + 1, "=")) return true;
@@ -91,7 +93,7 @@ bool writtenAt(const std::vector<Token>& tokens, size_t k) {
     if ((op == "<" || op == ">") && adjacent(after + 1, op) && adjacent(after + 2, "=")) return true;
   }
   size_t before = k;
-  while (before > 0 && skipped(tokens[before - 1])) --before;
+  while (before > 0 && spacing(tokens[before - 1])) --before;
   return before >= 2 && (tokens[before - 1].text == "+" || tokens[before - 1].text == "-") &&
          tokens[before - 2].text == tokens[before - 1].text;
 }
@@ -108,16 +110,16 @@ LoopFacts loopFacts(const std::vector<Token>& tokens) {
     if (t.kind == Token::Kind::Directive) {
       // #define NAME [-]NUMBER, or a macro whose replacement writes (a loop that uses one is guarded).
       const std::vector<Token> words = tokenize(t.text.substr(1));
-      size_t k = next(words, 0);
+      size_t k = nextWord(words, 0);
       if (!is(words, k, "define")) continue;
-      k = next(words, k + 1);
+      k = nextWord(words, k + 1);
       if (k >= words.size() || words[k].kind != Token::Kind::Identifier) continue;
       const std::string name(words[k].text);
       const std::string_view replacement = t.text.substr(static_cast<size_t>(words[k].text.data() - t.text.data()) +
                                                          words[k].text.size());
       if (writes(replacement)) facts.writingMacros.insert(name);
       size_t v = k + 1;
-      if (const auto value = constant(words, v, facts); value && next(words, v) == words.size())
+      if (const auto value = constant(words, v, facts); value && nextWord(words, v) == words.size())
         facts.constants[name] = *value;
       continue;
     }
@@ -133,16 +135,16 @@ LoopFacts loopFacts(const std::vector<Token>& tokens) {
       facts.writingFunctions.insert(function);
     // const TYPE NAME = [-]NUMBER ;
     if (t.text == "const") {
-      size_t k = next(tokens, i + 1);
+      size_t k = nextWord(tokens, i + 1);
       if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
-      k = next(tokens, k + 1);
+      k = nextWord(tokens, k + 1);
       if (k >= tokens.size() || tokens[k].kind != Token::Kind::Identifier) continue;
       const std::string name(tokens[k].text);
       const size_t at = k;
-      k = next(tokens, k + 1);
+      k = nextWord(tokens, k + 1);
       if (!is(tokens, k, "=")) continue;
       ++k;
-      if (const auto value = constant(tokens, k, facts); value && is(tokens, next(tokens, k), ";")) {
+      if (const auto value = constant(tokens, k, facts); value && is(tokens, nextWord(tokens, k), ";")) {
         facts.constants[name] = *value;
         definedAt[name] = at;
       }
@@ -165,26 +167,26 @@ LoopFacts loopFacts(const std::vector<Token>& tokens) {
 
 std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t forIndex, const LoopFacts& facts,
                                        int maxTrips) {
-  size_t i = next(tokens, forIndex + 1);
+  size_t i = nextWord(tokens, forIndex + 1);
   if (!is(tokens, i, "(")) return std::nullopt;
   // The start: TYPE NAME = CONSTANT ;
-  i = next(tokens, i + 1);
-  if (is(tokens, i, "highp") || is(tokens, i, "mediump") || is(tokens, i, "lowp")) i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
+  if (is(tokens, i, "highp") || is(tokens, i, "mediump") || is(tokens, i, "lowp")) i = nextWord(tokens, i + 1);
   const bool integer = is(tokens, i, "int");  // not uint: a count down past 0 wraps and never ends
   if (!integer && !is(tokens, i, "float")) return std::nullopt;
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   if (i >= tokens.size() || tokens[i].kind != Token::Kind::Identifier) return std::nullopt;
   const std::string_view counter = tokens[i].text;
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   if (!is(tokens, i, "=")) return std::nullopt;
   ++i;
   const std::optional<double> start = constant(tokens, i, facts);
-  i = next(tokens, i);
+  i = nextWord(tokens, i);
   if (!start || !is(tokens, i, ";")) return std::nullopt;
   // The test: COUNTER (< | <= | > | >= | !=) CONSTANT ;
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   if (!is(tokens, i, counter)) return std::nullopt;
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   if (i >= tokens.size()) return std::nullopt;
   std::string op(tokens[i].text);
   if (op != "<" && op != ">" && op != "!") return std::nullopt;
@@ -192,29 +194,29 @@ std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t 
   if (op == "!") return std::nullopt;
   ++i;
   const std::optional<double> bound = constant(tokens, i, facts);
-  i = next(tokens, i);
+  i = nextWord(tokens, i);
   if (!bound || !is(tokens, i, ";")) return std::nullopt;
   // The step: ++C, --C, C++, C--, C += CONSTANT, C -= CONSTANT.
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   double step = 0.0;
   if ((is(tokens, i, "+") || is(tokens, i, "-")) && is(tokens, i + 1, tokens[i].text)) {
     step = tokens[i].text == "+" ? 1.0 : -1.0;
-    i = next(tokens, i + 2);
+    i = nextWord(tokens, i + 2);
     if (!is(tokens, i, counter)) return std::nullopt;
-    i = next(tokens, i + 1);
+    i = nextWord(tokens, i + 1);
   } else if (is(tokens, i, counter)) {
-    i = next(tokens, i + 1);
+    i = nextWord(tokens, i + 1);
     if (i + 1 >= tokens.size() || (tokens[i].text != "+" && tokens[i].text != "-")) return std::nullopt;
     const double sign = tokens[i].text == "+" ? 1.0 : -1.0;
     if (is(tokens, i + 1, tokens[i].text)) {
       step = sign;
-      i = next(tokens, i + 2);
+      i = nextWord(tokens, i + 2);
     } else if (is(tokens, i + 1, "=")) {
       i += 2;
       const std::optional<double> by = constant(tokens, i, facts);
       if (!by || *by <= 0.0) return std::nullopt;
       step = sign * *by;
-      i = next(tokens, i);
+      i = nextWord(tokens, i);
     } else {
       return std::nullopt;
     }
@@ -222,26 +224,23 @@ std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t 
     return std::nullopt;
   }
   if (!is(tokens, i, ")")) return std::nullopt;
-  i = next(tokens, i + 1);
+  i = nextWord(tokens, i + 1);
   if (!is(tokens, i, "{")) return std::nullopt;
   const size_t bodyStart = i;
 
-  // The body: to its closing brace, writing neither the counter nor through anything that may.
-  int depth = 0;
-  size_t end = i;
-  for (; end < tokens.size(); ++end) {
-    const Token& t = tokens[end];
+  // The body, to its closing brace: writing neither the counter nor through anything that may.
+  const size_t end = closing(tokens, bodyStart);
+  if (end >= tokens.size()) return std::nullopt;
+  for (size_t k = bodyStart; k < end; ++k) {
+    const Token& t = tokens[k];
     if (t.kind == Token::Kind::Directive) return std::nullopt;
-    if (t.kind == Token::Kind::Punct && t.text == "{") ++depth;
-    if (t.kind == Token::Kind::Punct && t.text == "}" && --depth == 0) break;
     if (t.kind != Token::Kind::Identifier) continue;
     if (facts.writingFunctions.count(t.text) || facts.writingMacros.count(t.text)) return std::nullopt;
     if (t.text != counter) continue;
-    const Token* before = previous(tokens, end);
+    const Token* before = previous(tokens, k);
     if (before && before->text == ".") continue;  // a member of that name
-    if (writtenAt(tokens, end)) return std::nullopt;
+    if (writtenAt(tokens, k)) return std::nullopt;
   }
-  if (end >= tokens.size()) return std::nullopt;
 
   // Iterations: from start towards the bound by step; none when the step leads away from it.
   const double a = *start, b = *bound;
@@ -272,17 +271,6 @@ std::optional<BoundedLoop> boundedLoop(const std::vector<Token>& tokens, size_t 
 
 namespace {
 
-// The index of the bracket that closes the one at `open` ('(' or '{'); tokens.size() when none.
-size_t closing(const std::vector<Token>& tokens, size_t open) {
-  const std::string_view in = tokens[open].text, out = in == "(" ? ")" : "}";
-  int depth = 0;
-  for (size_t k = open; k < tokens.size(); ++k) {
-    if (tokens[k].kind != Token::Kind::Punct) continue;
-    if (tokens[k].text == in) ++depth;
-    if (tokens[k].text == out && --depth == 0) return k;
-  }
-  return tokens.size();
-}
 
 class Worst {
  public:
@@ -295,10 +283,10 @@ class Worst {
       if (t.kind == Token::Kind::Punct && t.text == "{") ++braces;
       if (t.kind == Token::Kind::Punct && t.text == "}") --braces;
       if (braces != 0 || t.kind != Token::Kind::Identifier) continue;
-      const size_t open = next(tokens, i + 1);
+      const size_t open = nextWord(tokens, i + 1);
       if (!is(tokens, open, "(")) continue;
       const size_t close = closing(tokens, open);
-      const size_t body = close < tokens.size() ? next(tokens, close + 1) : tokens.size();
+      const size_t body = close < tokens.size() ? nextWord(tokens, close + 1) : tokens.size();
       if (!is(tokens, body, "{")) continue;
       const size_t end = closing(tokens, body);
       if (end >= tokens.size()) continue;
@@ -342,7 +330,7 @@ class Worst {
         k = loop->bodyEnd;
         continue;
       }
-      if (known(t.text) && is(tokens_, next(tokens_, k + 1), "(")) {
+      if (known(t.text) && is(tokens_, nextWord(tokens_, k + 1), "(")) {
         const std::optional<long long> call = ofFunction(std::string(t.text));
         if (!call) return std::nullopt;
         cost = add(cost, *call);

@@ -17,4 +17,14 @@ struct Token {
 // first non-blank character is '#', up to its newline (a backslash-newline continues it).
 std::vector<Token> tokenize(std::string_view glsl);
 
+// Blanks, newlines and comments: what the rewrites step over.
+inline bool spacing(const Token& t) {
+  return t.kind == Token::Kind::Blank || t.kind == Token::Kind::Newline || t.kind == Token::Kind::Comment;
+}
+// The index of the first token at or after i that is not spacing; tokens.size() when none.
+inline size_t nextWord(const std::vector<Token>& tokens, size_t i) {
+  while (i < tokens.size() && spacing(tokens[i])) ++i;
+  return i;
+}
+
 }  // namespace vitrine::isf

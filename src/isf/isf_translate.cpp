@@ -75,14 +75,13 @@ class Rewriter {
       }
       if (t.kind == Token::Kind::Identifier && t.text == "for")
         if (const std::optional<BoundedLoop> loop = boundedLoop(tokens_, i, facts_, kLoopGuard)) {
-          if (withinBudget_) {  // every loop fixed, and all of them together within the budget
-            emit(t);
-            continue;
+          // Left as written where every loop is fixed and all of them together fit the budget; else
+          // charged once as it starts, so its count stays fixed for the compiler, in braces that keep
+          // an `else` after it with the `if` it had.
+          if (!withinBudget_) {
+            out_ += fmt::format("{{ if (isf_enter({})) ", loop->trips);
+            closeAfter_.push_back(loop->bodyEnd);
           }
-          // Charged once as it enters, so its count stays fixed for the compiler; the braces keep an
-          // `else` after it with the `if` it had.
-          out_ += fmt::format("{{ if (isf_enter({})) ", loop->trips);
-          closeAfter_.push_back(loop->bodyEnd);
           emit(t);
           continue;
         }
@@ -179,21 +178,14 @@ class Rewriter {
     }
     const size_t end = scanTo(from, isFor);
     if (end >= tokens_.size()) return i;
-    const bool empty = std::all_of(tokens_.begin() + std::ptrdiff_t(from), tokens_.begin() + std::ptrdiff_t(end), [](const Token& t) {
-      return t.kind == Token::Kind::Blank || t.kind == Token::Kind::Newline || t.kind == Token::Kind::Comment;
-    });
+    const bool empty = std::all_of(tokens_.begin() + std::ptrdiff_t(from), tokens_.begin() + std::ptrdiff_t(end), spacing);
     if (!empty) out_ += "(";
     for (size_t k = from; k < end; ++k) emit(tokens_[k]);
     out_ += empty ? "isf_guard()" : ") && isf_guard()";
     return end - 1;
   }
 
-  size_t nextWord(size_t i) const {
-    while (i < tokens_.size() && (tokens_[i].kind == Token::Kind::Blank || tokens_[i].kind == Token::Kind::Newline ||
-                                  tokens_[i].kind == Token::Kind::Comment))
-      ++i;
-    return i;
-  }
+  size_t nextWord(size_t i) const { return isf::nextWord(tokens_, i); }
 
   // A global declaration starting at the storage word tokens_[start]; returns the index of its last token.
   size_t declaration(size_t start) {

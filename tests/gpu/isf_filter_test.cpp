@@ -230,44 +230,24 @@ TEST_F(IsfFilters, ATransitionAtZeroHalfAndOneIsTheStartTheMixAndTheEnd) {
 TEST_F(IsfFilters, AnInversionDrawsWhatItsNativeTwinDraws) {
   const TwinRun run = twinRun();
   ASSERT_TRUE(run.valid) << std::getenv("VITRINE_ISF_SPEED");
-  const VkExtent2D size = run.size;
-  const int frames = run.frames, warmup = run.warmup;
   SpeedTwin* field = nullptr;
   InvertTwin* twin = nullptr;
   const TestSceneEntry& fieldEntry = testScene(field);
   const TestSceneEntry& twinEntry = testScene(twin);
-  host::OffscreenConfig isfConfig;
-  isfConfig.scene = "calibrate";
-  isfConfig.size = size;
+  host::OffscreenConfig isfConfig = twinConfig(run.size);
   isfConfig.filters = {filter("filter_invert.fs")};
   host::Offscreen isf(device(), isfConfig);
   isf.renderer().setScene(fieldEntry.info, fieldEntry.create);
-  host::OffscreenConfig nativeConfig;
-  nativeConfig.scene = "calibrate";
-  nativeConfig.size = size;
-  host::Offscreen native(device(), nativeConfig);
+  host::Offscreen native(device(), twinConfig(run.size));
   native.renderer().setScene(twinEntry.info, twinEntry.create);
-  std::vector<double> sourceMs, passMs, outputMs, nativeMs;
-  for (int frame = 0; frame < frames; ++frame) {
-    const host::FrameTimes a = isf.renderFrame(), b = native.renderFrame();
-    if (frame < warmup) continue;
-    double source = 0.0, pass = 0.0, output = 0.0, twinMs = 0.0;
-    for (const gpu::PassTime& p : a.passes) {
-      if (p.name == "isf source") source += p.ms;
-      if (p.name.rfind("isf pass ", 0) == 0) pass += p.ms;
-      if (p.name == "isf output") output += p.ms;
-    }
-    for (const gpu::PassTime& p : b.passes)
-      if (p.name == "native filter twin") twinMs += p.ms;
-    sourceMs.push_back(source), passMs.push_back(pass), outputMs.push_back(output), nativeMs.push_back(twinMs);
-  }
+  const TwinTimes times = timeTwins(isf, native, run, "native filter twin");
   ASSERT_NE(field, nullptr);
   ASSERT_NE(twin, nullptr);
   std::printf("filter speed %ux%u on %s: isf source %.4f ms + isf pass %.4f ms + isf output %.4f ms; native filter "
               "twin %.4f ms\n",
-              size.width, size.height, device().properties().deviceName, median(sourceMs), median(passMs),
-              median(outputMs), median(nativeMs));
-  EXPECT_GT(median(passMs), 0.0) << "the filter ran";
+              run.size.width, run.size.height, device().properties().deviceName, times.source, times.pass,
+              times.output, times.twin);
+  EXPECT_GT(times.pass, 0.0) << "the filter ran";
   const ImageRgba a = isf.readback(), b = native.readback();
   ASSERT_GT(spread(a), 0.3);
   const TwinDifference d = displayDifference(a, b);

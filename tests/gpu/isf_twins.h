@@ -4,6 +4,7 @@
 #include "gpu/device.h"
 #include "gpu/frame_resources.h"
 #include "gpu/program.h"
+#include "host/offline/offscreen.h"
 #include "image/image.h"
 #include "shaders/test/invert_twin_push.h"
 #include "shaders/test/speed_twin_push.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 #include <vector>
 
 namespace vitrine::test {
@@ -106,6 +108,44 @@ inline TwinRun twinRun() {
 inline double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+// The runner's parts and the twin's pass, each the median of its GPU time a frame.
+struct TwinTimes {
+  double source = 0.0;  // "isf source": the frame a filter takes, copied in
+  double pass = 0.0;    // "isf pass N ...": the file's passes
+  double output = 0.0;  // "isf output": the runner's picture, copied out
+  double twin = 0.0;    // the native twin's pass
+};
+
+// A native Offscreen of `size` drawing the test scene `entry` (the calibrate scene it starts with is
+// replaced before the first frame).
+inline host::OffscreenConfig twinConfig(VkExtent2D size) {
+  host::OffscreenConfig config;
+  config.scene = "calibrate";
+  config.size = size;
+  return config;
+}
+
+// run.frames frames of each, in turn; the medians of those after run.warmup: the ISF side's parts and
+// the native side's pass labelled `twinLabel`.
+inline TwinTimes timeTwins(host::Offscreen& isf, host::Offscreen& native, const TwinRun& run,
+                           std::string_view twinLabel) {
+  std::vector<double> source, pass, output, twin;
+  for (int frame = 0; frame < run.frames; ++frame) {
+    const host::FrameTimes a = isf.renderFrame(), b = native.renderFrame();
+    if (frame < run.warmup) continue;
+    TwinTimes t;
+    for (const gpu::PassTime& p : a.passes) {
+      if (p.name == "isf source") t.source += p.ms;
+      if (p.name.rfind("isf pass ", 0) == 0) t.pass += p.ms;
+      if (p.name == "isf output") t.output += p.ms;
+    }
+    for (const gpu::PassTime& p : b.passes)
+      if (p.name == twinLabel) t.twin += p.ms;
+    source.push_back(t.source), pass.push_back(t.pass), output.push_back(t.output), twin.push_back(t.twin);
+  }
+  return {median(source), median(pass), median(output), median(twin)};
 }
 
 // How far two frames' display values lie apart, in 8-bit steps, over every pixel and colour channel.
